@@ -1,0 +1,47 @@
+/*
+ * pgloss/status.h — status codes returned by every pgloss function that can fail.
+ *
+ * Convention: PGLOSS_OK is zero, warnings are positive (the result is usable but
+ * outside what the paper validated), errors are negative (the result was replaced
+ * by the documented fallback, usually zero). Every output of a failed call is
+ * still written with a finite, defined value, so a caller that ignores the status
+ * never reads uninitialised memory, NaN or Inf.
+ */
+#ifndef PGLOSS_STATUS_H
+#define PGLOSS_STATUS_H
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum pgloss_status {
+    PGLOSS_OK = 0,
+    /* Warnings (> 0): the value is computed, but outside the paper's trusted range. */
+    PGLOSS_WARN_ALPHA_UNTRUSTED = 1,   /* α > 0.2 (d < 0.8): Ward's lobe is not normalised there (paper §4) */
+
+    /* Errors (< 0): the outputs hold the documented fallback. */
+    PGLOSS_ERR_NULL = -1,              /* a required pointer argument is NULL */
+    PGLOSS_ERR_NONFINITE = -2,         /* an input is NaN or ±Inf */
+    PGLOSS_ERR_NEGATIVE = -3,          /* a reflectance (ρd, ρs, Y, c) is negative */
+    PGLOSS_ERR_ALPHA = -4,             /* α ≤ 0 (equivalently d ≥ 1) */
+    PGLOSS_ERR_ENERGY = -5,            /* ρd + ρs > 1 in some channel: the paint reflects more than it receives */
+    PGLOSS_ERR_ENVELOPE = -6,          /* c is beyond the envelope of gloss space at this lightness (Fig. 10) */
+    PGLOSS_ERR_LIGHTNESS = -7,         /* L* outside [0, 100] */
+    PGLOSS_ERR_GAMUT = -8,             /* the CIELAB colour has no non-negative linear Rec. 709 RGB */
+    PGLOSS_ERR_DIRECTION = -9,         /* a direction is zero-length or not finite */
+    PGLOSS_ERR_NORMALIZATION = -10,    /* unknown pgloss_normalization value */
+    PGLOSS_ERR_ARGUMENT = -11,         /* another argument is out of its domain (documented per function) */
+    PGLOSS_ERR_RANDOM = -12            /* a random number is NaN (finite values are clamped to [0, 1)) */
+} pgloss_status;
+
+/* A static, human-readable English sentence naming the reason; never NULL. */
+const char *pgloss_status_string(pgloss_status status);
+
+/* The enumerator's name, e.g. "PGLOSS_ERR_ENERGY"; "PGLOSS_UNKNOWN" for other values. */
+const char *pgloss_status_name(pgloss_status status);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* PGLOSS_STATUS_H */
