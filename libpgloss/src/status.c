@@ -3,7 +3,7 @@
 const char *pgloss_status_string(pgloss_status status)
 {
     switch (status) {
-    case PGLOSS_OK: return "ok";
+    case PGLOSS_OK: return "no error";
     case PGLOSS_WARN_ALPHA_UNTRUSTED:
         return "alpha > 0.2 (d < 0.8): outside the range the paper trusts; Ward's lobe is not normalised there";
     case PGLOSS_ERR_NULL: return "a required pointer argument is NULL";
