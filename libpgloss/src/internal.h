@@ -43,6 +43,11 @@ static inline double pgloss__luminance3(double r, double g, double b)
 void pgloss__eval_pdf_d(const pgloss_material *m, unsigned active, const double o[3],
                         const double i[3], double f[3], double *pdf);
 
+/* The checks every consumer of pgloss_physical shares, in the documented order: NONFINITE
+ * (|v| > limit counts as non-finite: DBL_MAX, or FLT_MAX for a float material), NEGATIVE,
+ * ALPHA. PGLOSS_OK if they pass. */
+pgloss_status pgloss__check_physical_values(const pgloss_physical *p, double limit);
+
 /* Specular-lobe probability for an active mask, in double. */
 double pgloss__specular_probability_d(const pgloss_material *m, unsigned active);
 

@@ -12,12 +12,6 @@ static void make_black(pgloss_material *m)
     m->lobes = PGLOSS_LOBE_NONE;
 }
 
-/* Finite, and still finite once rounded to float. */
-static int float_finite(double v)
-{
-    return isfinite(v) && fabs(v) <= (double)FLT_MAX;
-}
-
 pgloss_status pgloss_material_init(pgloss_material *m, const pgloss_physical *p)
 {
     if (!m)
@@ -26,15 +20,9 @@ pgloss_status pgloss_material_init(pgloss_material *m, const pgloss_physical *p)
     if (!p)
         return PGLOSS_ERR_NULL;
 
-    const double v[6] = {p->rho_d[0], p->rho_d[1], p->rho_d[2], p->rho_s, p->alpha_x, p->alpha_y};
-    for (int k = 0; k < 6; ++k)
-        if (!float_finite(v[k]))
-            return PGLOSS_ERR_NONFINITE;
-    for (int k = 0; k < 4; ++k)
-        if (v[k] < 0.0)
-            return PGLOSS_ERR_NEGATIVE;
-    if (!(p->alpha_x > 0.0) || !(p->alpha_y > 0.0))
-        return PGLOSS_ERR_ALPHA;
+    const pgloss_status basic = pgloss__check_physical_values(p, (double)FLT_MAX);
+    if (basic != PGLOSS_OK)
+        return basic;
     if (p->normalization != PGLOSS_NORM_WARD && p->normalization != PGLOSS_NORM_WARD_DUR &&
         p->normalization != PGLOSS_NORM_BOUNDED)
         return PGLOSS_ERR_NORMALIZATION;

@@ -8,19 +8,27 @@ static int valid_normalization(pgloss_normalization n)
     return n == PGLOSS_NORM_WARD || n == PGLOSS_NORM_WARD_DUR || n == PGLOSS_NORM_BOUNDED;
 }
 
-pgloss_status pgloss_check_physical(const pgloss_physical *p)
+pgloss_status pgloss__check_physical_values(const pgloss_physical *p, double limit)
 {
-    if (!p)
-        return PGLOSS_ERR_NULL;
     const double v[6] = {p->rho_d[0], p->rho_d[1], p->rho_d[2], p->rho_s, p->alpha_x, p->alpha_y};
     for (int k = 0; k < 6; ++k)
-        if (!isfinite(v[k]))
+        if (!isfinite(v[k]) || fabs(v[k]) > limit)
             return PGLOSS_ERR_NONFINITE;
     for (int k = 0; k < 4; ++k)
         if (v[k] < 0.0)
             return PGLOSS_ERR_NEGATIVE;
     if (!(p->alpha_x > 0.0) || !(p->alpha_y > 0.0))
         return PGLOSS_ERR_ALPHA;
+    return PGLOSS_OK;
+}
+
+pgloss_status pgloss_check_physical(const pgloss_physical *p)
+{
+    if (!p)
+        return PGLOSS_ERR_NULL;
+    const pgloss_status basic = pgloss__check_physical_values(p, DBL_MAX);
+    if (basic != PGLOSS_OK)
+        return basic;
     if (!valid_normalization(p->normalization))
         return PGLOSS_ERR_NORMALIZATION;
     const double dmax = fmax(p->rho_d[0], fmax(p->rho_d[1], p->rho_d[2]));
@@ -107,15 +115,9 @@ pgloss_status pgloss_perceptual_from_physical(const pgloss_physical *p, pgloss_p
     q->L = q->a = q->b = q->c = q->d = 0.0;
     if (!p)
         return PGLOSS_ERR_NULL;
-    const double v[6] = {p->rho_d[0], p->rho_d[1], p->rho_d[2], p->rho_s, p->alpha_x, p->alpha_y};
-    for (int k = 0; k < 6; ++k)
-        if (!isfinite(v[k]))
-            return PGLOSS_ERR_NONFINITE;
-    for (int k = 0; k < 4; ++k)
-        if (v[k] < 0.0)
-            return PGLOSS_ERR_NEGATIVE;
-    if (!(p->alpha_x > 0.0) || !(p->alpha_y > 0.0))
-        return PGLOSS_ERR_ALPHA;
+    const pgloss_status basic = pgloss__check_physical_values(p, DBL_MAX);
+    if (basic != PGLOSS_OK)
+        return basic;
     double lab[3], y, c;
     pgloss_status st = pgloss_lab_from_rgb(p->rho_d, lab);
     if (st != PGLOSS_OK)
