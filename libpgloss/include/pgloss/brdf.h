@@ -10,8 +10,10 @@
  *     a zero-length or non-finite direction is PGLOSS_ERR_DIRECTION and yields 0;
  *   - the BRDF is one-sided: if wo.z <= 0 or wi.z <= 0 (after normalisation) the
  *     value and the pdf are 0 and the status is PGLOSS_OK (this is not an error);
- *   - cosines in (0, PGLOSS_COS_MIN) are raised to PGLOSS_COS_MIN inside the
- *     specular normalisation factors, so no finite input overflows to Inf;
+ *   - cosines ci = wi.z and co = wo.z in (0, PGLOSS_COS_MIN) are raised to PGLOSS_COS_MIN
+ *     in the specular normalisation factors and in the specular pdf's denominator (where
+ *     h.z is replaced by max(ci, COS_MIN) + max(co, COS_MIN)); the exponent uses the true h.
+ *     Outputs are finally clamped to at most FLT_MAX. So no finite input overflows to Inf;
  *   - eval returns the BRDF f, without the cosine factor.
  *
  * Scalar functions evaluate in double internally and round once to float: they are
@@ -122,6 +124,8 @@ typedef struct pgloss_sample_record {
     pgloss_vec3 wi;       /* sampled direction, unit length */
     float pdf;            /* pgloss_pdf(m, wo, wi, lobes); 0 for a rejected sample */
     pgloss_rgb weight;    /* f(wo, wi) * wi.z / pdf; 0 for a rejected sample */
+    /* pdf and weight are evaluated at the float-rounded wi that is returned, so that they
+     * equal pgloss_pdf / pgloss_eval of (wo, s.wi) up to float rounding of the result. */
     unsigned lobe;        /* the lobe chosen (PGLOSS_LOBE_DIFFUSE or _SPECULAR); NONE if no lobe is active */
 } pgloss_sample_record;
 

@@ -1,0 +1,54 @@
+/* Internal helpers shared by the scalar (double) paths. Not installed. */
+#ifndef PGLOSS_INTERNAL_H
+#define PGLOSS_INTERNAL_H
+
+#include <float.h>
+#include <stddef.h>
+#include <math.h>
+#include "pgloss/brdf.h"
+#include "pgloss/color.h"
+
+#define PGLOSS_PI 3.14159265358979323846
+#define PGLOSS_INV_PI 0.31830988618379067154
+
+/* Normalises v into out (double). Scaling by the largest component first keeps
+ * lengths from 1e-45 to 3e38 exact-ish and overflow-free. Returns 0 for a zero or
+ * non-finite vector (out is then set to 0). */
+static inline int pgloss__normalize(pgloss_vec3 v, double out[3])
+{
+    double x = v.x, y = v.y, z = v.z;
+    double m = fmax(fabs(x), fmax(fabs(y), fabs(z)));
+    if (!(m > 0.0) || !isfinite(m)) {
+        out[0] = out[1] = out[2] = 0.0;
+        return 0;
+    }
+    x /= m; y /= m; z /= m;
+    double inv = 1.0 / sqrt(x * x + y * y + z * z);
+    out[0] = x * inv; out[1] = y * inv; out[2] = z * inv;
+    return 1;
+}
+
+/* Rounds a non-negative double to float without overflowing to Inf. */
+static inline float pgloss__to_float(double v)
+{
+    return v < (double)FLT_MAX ? (float)v : FLT_MAX;
+}
+
+static inline double pgloss__luminance3(double r, double g, double b)
+{
+    return PGLOSS_LUMA_R * r + PGLOSS_LUMA_G * g + PGLOSS_LUMA_B * b;
+}
+
+/* f and pdf of the active lobes at unit directions o, i (double). Either output may be NULL. */
+void pgloss__eval_pdf_d(const pgloss_material *m, unsigned active, const double o[3],
+                        const double i[3], double f[3], double *pdf);
+
+/* The checks every consumer of pgloss_physical shares, in the documented order: NONFINITE
+ * (|v| > limit counts as non-finite: DBL_MAX, or FLT_MAX for a float material), NEGATIVE,
+ * ALPHA. PGLOSS_OK if they pass. */
+pgloss_status pgloss__check_physical_values(const pgloss_physical *p, double limit);
+
+/* Specular-lobe probability for an active mask, in double. */
+double pgloss__specular_probability_d(const pgloss_material *m, unsigned active);
+
+#endif

@@ -1,0 +1,36 @@
+/* CIE 1976 lightness L* ↔ luminance factor Y (Yn = 1): the paper's f and f⁻¹ (§4, eq. 6),
+ * scaled to CIELAB's [0, 100]. The exact rational constants make the two branches meet
+ * continuously at Y = ε, L = κε = 8. */
+#include "internal.h"
+#include "pgloss/perceptual.h"
+
+pgloss_status pgloss_lightness_from_luminance(double Y, double *L)
+{
+    if (!L)
+        return PGLOSS_ERR_NULL;
+    *L = 0.0;
+    if (!isfinite(Y))
+        return PGLOSS_ERR_NONFINITE;
+    if (Y < 0.0)
+        return PGLOSS_ERR_NEGATIVE;
+    *L = (Y <= PGLOSS_CIE_EPSILON) ? PGLOSS_CIE_KAPPA * Y : 116.0 * cbrt(Y) - 16.0;
+    return PGLOSS_OK;
+}
+
+pgloss_status pgloss_luminance_from_lightness(double L, double *Y)
+{
+    if (!Y)
+        return PGLOSS_ERR_NULL;
+    *Y = 0.0;
+    if (!isfinite(L))
+        return PGLOSS_ERR_NONFINITE;
+    if (L < 0.0)
+        return PGLOSS_ERR_LIGHTNESS;
+    if (L <= PGLOSS_CIE_KAPPA * PGLOSS_CIE_EPSILON) {
+        *Y = L / PGLOSS_CIE_KAPPA;
+    } else {
+        const double t = (L + 16.0) / 116.0;
+        *Y = t * t * t;
+    }
+    return PGLOSS_OK;
+}

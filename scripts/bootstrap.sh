@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Installs what pgloss needs on Debian 12, and nothing twice: each package set is installed
+# only if one of its packages is missing, so a second run costs a dpkg query.
+#   bootstrap.sh core    C compiler, CMake, Ninja (all the core needs)
+#   bootstrap.sh test    + GoogleTest, nlohmann-json, Python venv with pinned mpmath
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+want=(build-essential cmake ninja-build)
+if [[ "${1:-core}" == test ]]; then
+  want+=(g++ libgtest-dev nlohmann-json3-dev python3 python3-venv)
+fi
+
+missing=()
+for p in "${want[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "bootstrap: installing ${missing[*]}"
+  sudo_cmd=()
+  [[ $(id -u) -ne 0 ]] && sudo_cmd=(sudo)
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo_cmd[@]}" apt-get update -qq
+  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+if [[ "${1:-core}" == test ]]; then
+  # The reference-vector generator runs in its own venv with a pinned mpmath, so that
+  # regenerated vectors are byte-identical on every machine.
+  venv=.venv-tools
+  if [[ ! -x $venv/bin/python ]] || ! $venv/bin/python -c "import mpmath; assert mpmath.__version__ == '1.3.0'" 2>/dev/null; then
+    echo "bootstrap: creating $venv (mpmath 1.3.0)"
+    rm -rf "$venv"
+    /usr/bin/python3 -m venv "$venv"
+    "$venv/bin/pip" install -q --disable-pip-version-check mpmath==1.3.0
+  fi
+fi
