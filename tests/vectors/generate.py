@@ -1638,6 +1638,7 @@ def brdf_materials() -> Dict[str, Tuple[Dict[str, Any], Material]]:
         nonlocal n
         p = {"rho_d": f32v(rd), "rho_s": f32(rs), "alpha_x": f32(ax), "alpha_y": f32(ay), "normalization": norm,
              "_note": note}
+        assert all(is_f32(x) for x in _phys_fields(p)), p   # float API: float-exact parameters
         st, m = material_init_ref(p)
         assert st == OK and m is not None
         out[f"m{n:02d}"] = (p, m)
