@@ -17,6 +17,10 @@
 static inline int pgloss__normalize(pgloss_vec3 v, double out[3])
 {
     double x = v.x, y = v.y, z = v.z;
+    if (!isfinite(x) || !isfinite(y) || !isfinite(z)) { /* fmax below would skip a NaN */
+        out[0] = out[1] = out[2] = 0.0;
+        return 0;
+    }
     double m = fmax(fabs(x), fmax(fabs(y), fabs(z)));
     if (!(m > 0.0) || !isfinite(m)) {
         out[0] = out[1] = out[2] = 0.0;
