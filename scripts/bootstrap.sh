@@ -3,13 +3,18 @@
 # only if one of its packages is missing, so a second run costs a dpkg query.
 #   bootstrap.sh core    C compiler, CMake, Ninja (all the core needs)
 #   bootstrap.sh test    + GoogleTest, nlohmann-json, Python venv with pinned mpmath
+#   bootstrap.sh apt P…  + the Debian packages P… (what a layer's own script needs)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 want=(build-essential cmake ninja-build)
-if [[ "${1:-core}" == test ]]; then
-  want+=(g++ libgtest-dev nlohmann-json3-dev python3 python3-venv)
-fi
+mode=${1:-core}
+case $mode in
+  core) ;;
+  test) want+=(g++ libgtest-dev nlohmann-json3-dev python3 python3-venv) ;;
+  apt) shift; want+=("$@") ;;
+  *) echo "bootstrap: unknown mode '$mode' (core | test | apt PACKAGE…)" >&2; exit 2 ;;
+esac
 
 missing=()
 for p in "${want[@]}"; do
@@ -24,7 +29,7 @@ if ((${#missing[@]})); then
   "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
-if [[ "${1:-core}" == test ]]; then
+if [[ $mode == test ]]; then
   # The reference-vector generator runs in its own venv with a pinned mpmath, so that
   # regenerated vectors are byte-identical on every machine.
   venv=.venv-tools
