@@ -1,0 +1,505 @@
+// core.cpp — pgloss._core: the C core's functions over flat numpy arrays.
+//
+// This is the low layer of the Python package. It takes flat, C-contiguous arrays that
+// pgloss/__init__.py has already broadcast and converted, loops in C++ over the core with
+// the GIL released, and returns the outputs together with the core's status per element
+// (perceptual functions) or the first failing element (BRDF functions). Turning statuses
+// into exceptions and warnings, broadcasting, dtypes and docstrings for users live in
+// pgloss/__init__.py.
+//
+// BRDF precision: float32 directions go through the vectorised batched entry points
+// (pgloss/batch.h), de-interleaved chunk by chunk from the (n, 3) layout into
+// structure-of-arrays buffers; float64 directions go through the scalar reference functions
+// (pgloss/brdf.h: double arithmetic inside, one rounding to float), after rounding the
+// inputs to float as the C API does.
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <array>
+#include <cfloat>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "pgloss/pgloss.h"
+#include "shim.h"
+
+namespace py = pybind11;
+
+namespace {
+
+using darr = py::array_t<double, py::array::c_style | py::array::forcecast>;
+using farr = py::array_t<float, py::array::c_style>;  // no forcecast: the caller prepares them
+using f64arr = py::array_t<double, py::array::c_style>;
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// Rows of the (n, 3) direction arrays processed per batched call: small enough that the
+// structure-of-arrays buffers stay in L1/L2, large enough to amortise the call.
+constexpr size_t kChunk = 1024;
+
+// ---------------------------------------------------------------------------------------
+// Element-wise map over double functions: NI flat inputs of equal length, NO outputs, and
+// the status of every element (int8). f(x, y) -> status; y is pre-filled with NaN so that
+// an output the core failed to write is visible (the core always writes them).
+template <size_t NI, size_t NO, class F>
+py::tuple vmap(const std::array<darr, NI> &in, F f) {
+    const py::ssize_t n = in[0].size();
+    std::array<const double *, NI> ip{};
+    for (size_t k = 0; k < NI; ++k) {
+        if (in[k].ndim() != 1 || in[k].size() != n)
+            throw std::invalid_argument("pgloss._core: inputs must be flat arrays of equal length");
+        ip[k] = in[k].data();
+    }
+    std::array<darr, NO> out;
+    std::array<double *, NO> op{};
+    for (size_t k = 0; k < NO; ++k) {
+        out[k] = darr(n);
+        op[k] = out[k].mutable_data();
+    }
+    py::array_t<std::int8_t> st(n);
+    std::int8_t *sp = st.mutable_data();
+    {
+        py::gil_scoped_release nogil;
+        for (py::ssize_t i = 0; i < n; ++i) {
+            std::array<double, NI> x;
+            std::array<double, NO> y;
+            for (size_t k = 0; k < NI; ++k) x[k] = ip[k][i];
+            y.fill(kNaN);
+            const int s = f(x.data(), y.data());
+            for (size_t k = 0; k < NO; ++k) op[k][i] = y[k];
+            sp[i] = static_cast<std::int8_t>(s);
+        }
+    }
+    py::tuple t(NO + 1);
+    for (size_t k = 0; k < NO; ++k) t[k] = out[k];
+    t[NO] = st;
+    return t;
+}
+
+// ---------------------------------------------------------------------------------------
+// Materials.
+
+struct Material {
+    pgloss_material m{};
+    std::array<double, 6> v{};  // the physical parameters it was built from
+    int normalization = 0;
+};
+
+// Builds a material; returns it with the core's status (on error it is the core's black material).
+std::pair<Material, int> material_init(const std::array<double, 6> &v, int normalization) {
+    Material M;
+    M.v = v;
+    M.normalization = normalization;
+    const int st = pgloss_py_material_init(&M.m, v.data(), normalization);
+    return {M, st};
+}
+
+py::tuple rgb_tuple(const float *c) { return py::make_tuple(c[0], c[1], c[2]); }
+
+// Float conversion of a double input as the C API receives it: values beyond float range
+// become ±Inf (the core then reports them); the C++ cast itself would be undefined.
+inline float to_float(double x) {
+    if (std::fabs(x) > static_cast<double>(FLT_MAX) && std::isfinite(x)) return x > 0 ? HUGE_VALF : -HUGE_VALF;
+    return static_cast<float>(x);
+}
+
+size_t rows_of(const py::array &a, const char *what) {
+    if (a.ndim() != 1 || a.size() % 3 != 0)
+        throw std::invalid_argument(std::string("pgloss._core: ") + what + " must be a flat array of n*3 values");
+    return static_cast<size_t>(a.size() / 3);
+}
+
+struct FirstError {
+    int status = PGLOSS_OK;
+    py::ssize_t index = -1;
+    void note(int st, py::ssize_t i) {
+        if (st < 0 && status == PGLOSS_OK) {
+            status = st;
+            index = i;
+        }
+    }
+};
+
+// ---------------------------------------------------------------------------------------
+// eval / pdf / eval_pdf.
+
+py::tuple eval_f32(const Material &M, unsigned lobes, const farr &wo, const farr &wi, bool want_f, bool want_pdf) {
+    const size_t n = rows_of(wo, "wo");
+    if (rows_of(wi, "wi") != n) throw std::invalid_argument("pgloss._core: wo and wi differ in length");
+    farr f(want_f ? std::vector<py::ssize_t>{static_cast<py::ssize_t>(n), 3} : std::vector<py::ssize_t>{0, 3});
+    farr pdf(want_pdf ? static_cast<py::ssize_t>(n) : 0);
+    const float *o = wo.data(), *i = wi.data();
+    float *fp = f.mutable_data(), *pp = pdf.mutable_data();
+    FirstError err;
+    {
+        py::gil_scoped_release nogil;
+        std::vector<float> buf(10 * kChunk);
+        float *ox = buf.data(), *oy = ox + kChunk, *oz = oy + kChunk, *ix = oz + kChunk, *iy = ix + kChunk,
+              *iz = iy + kChunk, *fr = iz + kChunk, *fg = fr + kChunk, *fb = fg + kChunk, *pd = fb + kChunk;
+        for (size_t base = 0; base < n; base += kChunk) {
+            const size_t m = n - base < kChunk ? n - base : kChunk;
+            const float *oc = o + 3 * base, *ic = i + 3 * base;
+            for (size_t j = 0; j < m; ++j) {
+                ox[j] = oc[3 * j];
+                oy[j] = oc[3 * j + 1];
+                oz[j] = oc[3 * j + 2];
+                ix[j] = ic[3 * j];
+                iy[j] = ic[3 * j + 1];
+                iz[j] = ic[3 * j + 2];
+            }
+            const pgloss_vec3_array a{ox, oy, oz}, b{ix, iy, iz};
+            const pgloss_rgb_out fo{fr, fg, fb};
+            pgloss_status st;
+            if (want_f && want_pdf)
+                st = pgloss_eval_pdf_batch(&M.m, lobes, m, a, b, fo, pd);
+            else if (want_f)
+                st = pgloss_eval_batch(&M.m, lobes, m, a, b, fo);
+            else
+                st = pgloss_pdf_batch(&M.m, lobes, m, a, b, pd);
+            if (want_f) {
+                float *fc = fp + 3 * base;
+                for (size_t j = 0; j < m; ++j) {
+                    fc[3 * j] = fr[j];
+                    fc[3 * j + 1] = fg[j];
+                    fc[3 * j + 2] = fb[j];
+                }
+            }
+            if (want_pdf)
+                for (size_t j = 0; j < m; ++j) pp[base + j] = pd[j];
+            if (st < 0 && err.status == PGLOSS_OK) {
+                // Which element? Ask the scalar function, element by element (error path only).
+                for (size_t j = 0; j < m; ++j) {
+                    float p;
+                    const int s = pgloss_pdf(&M.m, pgloss_vec3{ox[j], oy[j], oz[j]}, pgloss_vec3{ix[j], iy[j], iz[j]},
+                                             lobes, &p);
+                    if (s < 0) {
+                        err.note(s, static_cast<py::ssize_t>(base + j));
+                        break;
+                    }
+                }
+                err.note(st, static_cast<py::ssize_t>(base));  // not found: the chunk's start
+            }
+        }
+    }
+    return py::make_tuple(f, pdf, err.status, err.index);
+}
+
+py::tuple eval_f64(const Material &M, unsigned lobes, const f64arr &wo, const f64arr &wi, bool want_f, bool want_pdf) {
+    const size_t n = rows_of(wo, "wo");
+    if (rows_of(wi, "wi") != n) throw std::invalid_argument("pgloss._core: wo and wi differ in length");
+    f64arr f(want_f ? std::vector<py::ssize_t>{static_cast<py::ssize_t>(n), 3} : std::vector<py::ssize_t>{0, 3});
+    f64arr pdf(want_pdf ? static_cast<py::ssize_t>(n) : 0);
+    const double *o = wo.data(), *i = wi.data();
+    double *fp = f.mutable_data(), *pp = pdf.mutable_data();
+    FirstError err;
+    {
+        py::gil_scoped_release nogil;
+        for (size_t j = 0; j < n; ++j) {
+            const pgloss_vec3 a{to_float(o[3 * j]), to_float(o[3 * j + 1]), to_float(o[3 * j + 2])};
+            const pgloss_vec3 b{to_float(i[3 * j]), to_float(i[3 * j + 1]), to_float(i[3 * j + 2])};
+            pgloss_rgb c{0, 0, 0};
+            float p = 0;
+            pgloss_status st;
+            if (want_f && want_pdf)
+                st = pgloss_eval_pdf(&M.m, a, b, lobes, &c, &p);
+            else if (want_f)
+                st = pgloss_eval(&M.m, a, b, lobes, &c);
+            else
+                st = pgloss_pdf(&M.m, a, b, lobes, &p);
+            if (want_f) {
+                fp[3 * j] = c.r;
+                fp[3 * j + 1] = c.g;
+                fp[3 * j + 2] = c.b;
+            }
+            if (want_pdf) pp[j] = p;
+            err.note(st, static_cast<py::ssize_t>(j));
+        }
+    }
+    return py::make_tuple(f, pdf, err.status, err.index);
+}
+
+// ---------------------------------------------------------------------------------------
+// sample.
+
+py::tuple sample_f32(const Material &M, unsigned lobes, const farr &wo, const farr &u) {
+    const size_t n = rows_of(wo, "wo");
+    if (rows_of(u, "u") != n) throw std::invalid_argument("pgloss._core: wo and u differ in length");
+    const auto N = static_cast<py::ssize_t>(n);
+    farr wi(std::vector<py::ssize_t>{N, 3}), weight(std::vector<py::ssize_t>{N, 3}), pdf(N);
+    py::array_t<std::uint8_t> lobe(N);
+    const float *o = wo.data(), *uu = u.data();
+    float *wp = wi.mutable_data(), *gp = weight.mutable_data(), *pp = pdf.mutable_data();
+    std::uint8_t *lp = lobe.mutable_data();
+    FirstError err;
+    {
+        py::gil_scoped_release nogil;
+        std::vector<float> buf(13 * kChunk);
+        float *ox = buf.data(), *oy = ox + kChunk, *oz = oy + kChunk, *u0 = oz + kChunk, *u1 = u0 + kChunk,
+              *u2 = u1 + kChunk, *wx = u2 + kChunk, *wy = wx + kChunk, *wz = wy + kChunk, *pd = wz + kChunk,
+              *gr = pd + kChunk, *gg = gr + kChunk, *gb = gg + kChunk;
+        for (size_t base = 0; base < n; base += kChunk) {
+            const size_t m = n - base < kChunk ? n - base : kChunk;
+            const float *oc = o + 3 * base, *uc = uu + 3 * base;
+            for (size_t j = 0; j < m; ++j) {
+                ox[j] = oc[3 * j];
+                oy[j] = oc[3 * j + 1];
+                oz[j] = oc[3 * j + 2];
+                u0[j] = uc[3 * j];
+                u1[j] = uc[3 * j + 1];
+                u2[j] = uc[3 * j + 2];
+            }
+            const pgloss_status st = pgloss_sample_batch(&M.m, lobes, m, pgloss_vec3_array{ox, oy, oz}, u0, u1, u2,
+                                                         pgloss_vec3_out{wx, wy, wz}, pd, pgloss_rgb_out{gr, gg, gb},
+                                                         lp + base);
+            float *wc = wp + 3 * base, *gc = gp + 3 * base;
+            for (size_t j = 0; j < m; ++j) {
+                wc[3 * j] = wx[j];
+                wc[3 * j + 1] = wy[j];
+                wc[3 * j + 2] = wz[j];
+                gc[3 * j] = gr[j];
+                gc[3 * j + 1] = gg[j];
+                gc[3 * j + 2] = gb[j];
+                pp[base + j] = pd[j];
+            }
+            if (st < 0 && err.status == PGLOSS_OK) {
+                for (size_t j = 0; j < m; ++j) {
+                    pgloss_sample_record r;
+                    const float uj[3] = {u0[j], u1[j], u2[j]};
+                    const int s = pgloss_sample(&M.m, pgloss_vec3{ox[j], oy[j], oz[j]}, uj, lobes, &r);
+                    if (s < 0) {
+                        err.note(s, static_cast<py::ssize_t>(base + j));
+                        break;
+                    }
+                }
+                err.note(st, static_cast<py::ssize_t>(base));
+            }
+        }
+    }
+    return py::make_tuple(wi, pdf, weight, lobe, err.status, err.index);
+}
+
+py::tuple sample_f64(const Material &M, unsigned lobes, const f64arr &wo, const f64arr &u) {
+    const size_t n = rows_of(wo, "wo");
+    if (rows_of(u, "u") != n) throw std::invalid_argument("pgloss._core: wo and u differ in length");
+    const auto N = static_cast<py::ssize_t>(n);
+    f64arr wi(std::vector<py::ssize_t>{N, 3}), weight(std::vector<py::ssize_t>{N, 3}), pdf(N);
+    py::array_t<std::uint8_t> lobe(N);
+    const double *o = wo.data(), *uu = u.data();
+    double *wp = wi.mutable_data(), *gp = weight.mutable_data(), *pp = pdf.mutable_data();
+    std::uint8_t *lp = lobe.mutable_data();
+    FirstError err;
+    {
+        py::gil_scoped_release nogil;
+        for (size_t j = 0; j < n; ++j) {
+            const pgloss_vec3 a{to_float(o[3 * j]), to_float(o[3 * j + 1]), to_float(o[3 * j + 2])};
+            const float uj[3] = {to_float(uu[3 * j]), to_float(uu[3 * j + 1]), to_float(uu[3 * j + 2])};
+            pgloss_sample_record r{};
+            const int st = pgloss_sample(&M.m, a, uj, lobes, &r);
+            wp[3 * j] = r.wi.x;
+            wp[3 * j + 1] = r.wi.y;
+            wp[3 * j + 2] = r.wi.z;
+            gp[3 * j] = r.weight.r;
+            gp[3 * j + 1] = r.weight.g;
+            gp[3 * j + 2] = r.weight.b;
+            pp[j] = r.pdf;
+            lp[j] = static_cast<std::uint8_t>(r.lobe);
+            err.note(st, static_cast<py::ssize_t>(j));
+        }
+    }
+    return py::make_tuple(wi, pdf, weight, lobe, err.status, err.index);
+}
+
+// ---------------------------------------------------------------------------------------
+// Benchmark helper: the C batched path alone, on structure-of-arrays buffers that the
+// caller preallocated (no conversion, no Python in the timed region). Returns the
+// wall-clock seconds of each repetition.
+std::vector<double> time_eval_batch(const Material &M, unsigned lobes, const farr &wo_soa, const farr &wi_soa,
+                                    int repeats) {
+    if (wo_soa.ndim() != 2 || wo_soa.shape(0) != 3 || wi_soa.ndim() != 2 || wi_soa.shape(0) != 3 ||
+        wi_soa.shape(1) != wo_soa.shape(1))
+        throw std::invalid_argument("time_eval_batch: wo_soa and wi_soa must be (3, n) float32 arrays");
+    const size_t n = static_cast<size_t>(wo_soa.shape(1));
+    std::vector<float> out(3 * n);
+    const float *o = wo_soa.data(), *i = wi_soa.data();
+    std::vector<double> times;
+    {
+        py::gil_scoped_release nogil;
+        for (int r = 0; r < repeats; ++r) {
+            const auto t0 = std::chrono::steady_clock::now();
+            const pgloss_status st =
+                pgloss_eval_batch(&M.m, lobes, n, pgloss_vec3_array{o, o + n, o + 2 * n},
+                                  pgloss_vec3_array{i, i + n, i + 2 * n},
+                                  pgloss_rgb_out{out.data(), out.data() + n, out.data() + 2 * n});
+            const auto t1 = std::chrono::steady_clock::now();
+            (void)st;
+            times.push_back(std::chrono::duration<double>(t1 - t0).count());
+        }
+    }
+    return times;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_core, mod) {
+    mod.doc() = "pgloss._core: the C core over flat numpy arrays (use the pgloss package, not this module).";
+
+    mod.attr("VERSION") = PGLOSS_VERSION_STRING;
+    mod.attr("ALPHA_MIN") = static_cast<double>(PGLOSS_ALPHA_MIN);
+    mod.attr("COS_MIN") = static_cast<double>(PGLOSS_COS_MIN);
+    mod.attr("CIE_EPSILON") = PGLOSS_CIE_EPSILON;
+    mod.attr("CIE_KAPPA") = PGLOSS_CIE_KAPPA;
+    mod.attr("D_WEIGHT") = PGLOSS_D_WEIGHT;
+    mod.attr("ALPHA_TRUSTED_MAX") = PGLOSS_ALPHA_TRUSTED_MAX;
+    mod.attr("BOUNDARY_TOLERANCE") = PGLOSS_BOUNDARY_TOLERANCE;
+    mod.attr("LUMA") = py::make_tuple(PGLOSS_LUMA_R, PGLOSS_LUMA_G, PGLOSS_LUMA_B);
+
+    mod.def("status_string", [](int s) { return std::string(pgloss_status_string(static_cast<pgloss_status>(s))); });
+    mod.def("status_name", [](int s) { return std::string(pgloss_status_name(static_cast<pgloss_status>(s))); });
+
+    py::class_<Material>(mod, "Material",
+                         "An evaluation-ready material (pgloss_material): the physical parameters rounded to float\n"
+                         "and what eval/pdf/sample precompute. Build one with pgloss.material_init(physical) or\n"
+                         "Physical.material(); the fields are read-only.")
+        .def_property_readonly("rho_d", [](const Material &M) { return rgb_tuple(M.m.rho_d); },
+                               "diffuse reflectance (r, g, b), rounded to float")
+        .def_property_readonly("rho_s", [](const Material &M) { return M.m.rho_s; }, "specular energy ρs")
+        .def_property_readonly("alpha_x", [](const Material &M) { return M.m.alpha_x; }, "αx (at least ALPHA_MIN)")
+        .def_property_readonly("alpha_y", [](const Material &M) { return M.m.alpha_y; }, "αy (at least ALPHA_MIN)")
+        .def_property_readonly("normalization", [](const Material &M) { return static_cast<int>(M.m.normalization); },
+                               "normalisation of the specular lobe (pgloss.Normalization value)")
+        .def_property_readonly("lobes", [](const Material &M) { return M.m.lobes; },
+                               "lobes present: DIFFUSE if any ρd > 0, SPECULAR if ρs > 0")
+        .def_property_readonly("inv_alpha_x", [](const Material &M) { return M.m.inv_alpha_x; }, "1/αx")
+        .def_property_readonly("inv_alpha_y", [](const Material &M) { return M.m.inv_alpha_y; }, "1/αy")
+        .def_property_readonly("spec_scale", [](const Material &M) { return M.m.spec_scale; },
+                               "ρs/(4π αx αy) (WARD, WARD_DUR) or ρs/(π αx αy) (BOUNDED)")
+        .def_property_readonly("pdf_scale", [](const Material &M) { return M.m.pdf_scale; },
+                               "1/(4π αx αy), the specular pdf's constant")
+        .def_property_readonly("weight_diffuse", [](const Material &M) { return M.m.weight_diffuse; },
+                               "lobe-selection weight of the diffuse lobe (luminance of ρd)")
+        .def_property_readonly("weight_specular", [](const Material &M) { return M.m.weight_specular; },
+                               "lobe-selection weight of the specular lobe (ρs)")
+        .def_property_readonly("parameters", [](const Material &M) { return py::make_tuple(M.v, M.normalization); },
+                               "the (rho_d r, g, b, rho_s, alpha_x, alpha_y) doubles and the normalisation it was built from")
+        .def("__eq__", [](const Material &a, const Material &b) { return a.v == b.v && a.normalization == b.normalization; })
+        .def("__hash__", [](const Material &M) {
+            return py::hash(py::make_tuple(M.v[0], M.v[1], M.v[2], M.v[3], M.v[4], M.v[5], M.normalization));
+        })
+        .def("__repr__", [](const Material &M) {
+            char buf[320];
+            std::snprintf(buf, sizeof buf,
+                          "Material(rho_d=(%.9g, %.9g, %.9g), rho_s=%.9g, alpha_x=%.9g, alpha_y=%.9g, normalization=%d, lobes=%u)",
+                          M.m.rho_d[0], M.m.rho_d[1], M.m.rho_d[2], M.m.rho_s, M.m.alpha_x, M.m.alpha_y,
+                          static_cast<int>(M.m.normalization), M.m.lobes);
+            return std::string(buf);
+        })
+        .def(py::pickle(
+            [](const Material &M) { return py::make_tuple(M.v, M.normalization); },
+            [](const py::tuple &t) {
+                if (t.size() != 2) throw std::runtime_error("pgloss.Material: bad pickle state");
+                auto r = material_init(t[0].cast<std::array<double, 6>>(), t[1].cast<int>());
+                if (r.second < 0) throw py::value_error(pgloss_status_string(static_cast<pgloss_status>(r.second)));
+                return r.first;
+            }));
+
+    mod.def("material_init", [](const std::array<double, 6> &v, int norm) {
+        auto r = material_init(v, norm);
+        return py::make_tuple(r.first, r.second);
+    });
+    mod.def("specular_probability",
+            [](const Material &M, unsigned lobes) { return pgloss_specular_probability(&M.m, lobes); });
+
+    mod.def("eval_f32", &eval_f32);
+    mod.def("eval_f64", &eval_f64);
+    mod.def("sample_f32", &sample_f32);
+    mod.def("sample_f64", &sample_f64);
+    mod.def("time_eval_batch", &time_eval_batch,
+            "Seconds per repetition of pgloss_eval_batch on (3, n) float32 SoA buffers (benchmark helper).");
+
+    // Perceptual and colour functions (double), element-wise.
+    mod.def("lightness_from_luminance", [](darr Y) {
+        return vmap<1, 1>({Y}, [](const double *x, double *y) { return (int)pgloss_lightness_from_luminance(x[0], &y[0]); });
+    });
+    mod.def("luminance_from_lightness", [](darr L) {
+        return vmap<1, 1>({L}, [](const double *x, double *y) { return (int)pgloss_luminance_from_lightness(x[0], &y[0]); });
+    });
+    mod.def("contrast_gloss", [](darr rd, darr rs) {
+        return vmap<2, 1>({rd, rs}, [](const double *x, double *y) { return (int)pgloss_contrast_gloss(x[0], x[1], &y[0]); });
+    });
+    mod.def("specular_from_contrast", [](darr rd, darr c) {
+        return vmap<2, 1>({rd, c}, [](const double *x, double *y) {
+            return (int)pgloss_specular_from_contrast(x[0], x[1], &y[0]);
+        });
+    });
+    mod.def("gloss_from_physical", [](darr rd, darr rs, darr a) {
+        return vmap<3, 3>({rd, rs, a}, [](const double *x, double *y) {
+            return (int)pgloss_gloss_from_physical(x[0], x[1], x[2], &y[0], &y[1], &y[2]);
+        });
+    });
+    mod.def("physical_from_gloss", [](darr L, darr c, darr d) {
+        return vmap<3, 3>({L, c, d}, [](const double *x, double *y) {
+            return (int)pgloss_physical_from_gloss(x[0], x[1], x[2], &y[0], &y[1], &y[2]);
+        });
+    });
+    mod.def("gloss_distance", [](darr c1, darr d1, darr c2, darr d2) {
+        return vmap<4, 1>({c1, d1, c2, d2}, [](const double *x, double *y) {
+            return (int)pgloss_gloss_distance(x[0], x[1], x[2], x[3], &y[0]);
+        });
+    });
+    mod.def("envelope_contrast", [](darr L) {
+        return vmap<1, 1>({L}, [](const double *x, double *y) { return (int)pgloss_envelope_contrast(x[0], &y[0]); });
+    });
+    mod.def("match_gloss", [](darr rd, darr rs, darr L) {
+        return vmap<3, 2>({rd, rs, L}, [](const double *x, double *y) {
+            return (int)pgloss_match_gloss(x[0], x[1], x[2], &y[0], &y[1]);
+        });
+    });
+    mod.def("isogloss_contour", [](double c0, double d0, double D, size_t n) {
+        darr c(static_cast<py::ssize_t>(n)), d(static_cast<py::ssize_t>(n));
+        double *cp = c.mutable_data(), *dp = d.mutable_data();
+        int st;
+        {
+            py::gil_scoped_release nogil;
+            st = pgloss_isogloss_contour(c0, d0, D, n, cp, dp);
+        }
+        return py::make_tuple(c, d, st);
+    });
+    mod.def("rgb_from_lab", [](darr L, darr a, darr b) {
+        return vmap<3, 3>({L, a, b}, [](const double *x, double *y) { return (int)pgloss_rgb_from_lab(x, y); });
+    });
+    mod.def("lab_from_rgb", [](darr r, darr g, darr b) {
+        return vmap<3, 3>({r, g, b}, [](const double *x, double *y) { return (int)pgloss_lab_from_rgb(x, y); });
+    });
+    mod.def("luminance", [](darr r, darr g, darr b) {
+        return vmap<3, 1>({r, g, b}, [](const double *x, double *y) { return (int)pgloss_luminance(x, &y[0]); });
+    });
+    // Structs: physical = (rho_d r, g, b, rho_s, alpha_x, alpha_y, normalization); perceptual = (L, a, b, c, d).
+    mod.def("check_physical", [](darr r, darr g, darr b, darr rs, darr ax, darr ay, darr norm) {
+        return vmap<7, 0>({r, g, b, rs, ax, ay, norm}, [](const double *x, double *) {
+            return pgloss_py_check_physical(x, static_cast<int>(x[6]));
+        });
+    });
+    mod.def("check_perceptual", [](darr L, darr a, darr b, darr c, darr d) {
+        return vmap<5, 0>({L, a, b, c, d}, [](const double *x, double *) { return pgloss_py_check_perceptual(x); });
+    });
+    mod.def("physical_from_perceptual", [](darr L, darr a, darr b, darr c, darr d, darr norm) {
+        return vmap<6, 7>({L, a, b, c, d, norm}, [](const double *x, double *y) {
+            int n = 0;
+            const int st = pgloss_py_physical_from_perceptual(x, static_cast<int>(x[5]), y, &n);
+            y[6] = n;
+            return st;
+        });
+    });
+    mod.def("perceptual_from_physical", [](darr r, darr g, darr b, darr rs, darr ax, darr ay, darr norm) {
+        return vmap<7, 5>({r, g, b, rs, ax, ay, norm}, [](const double *x, double *y) {
+            return pgloss_py_perceptual_from_physical(x, static_cast<int>(x[6]), y);
+        });
+    });
+}

@@ -1,0 +1,76 @@
+/* shim.c — C helpers for the Python module (core.cpp): build the core's structs from plain
+ * numbers, with the normalisation as an int. The vectors pass unknown normalisations
+ * (3, -1, 1000) on purpose; converting such an int to the enum is defined in C but not in
+ * C++, so the conversion happens here. */
+#include <string.h>
+
+#include "pgloss/pgloss.h"
+#include "shim.h"
+
+static pgloss_physical make_physical(const double v[6], int normalization)
+{
+    pgloss_physical p;
+    memset(&p, 0, sizeof p);
+    p.rho_d[0] = v[0];
+    p.rho_d[1] = v[1];
+    p.rho_d[2] = v[2];
+    p.rho_s = v[3];
+    p.alpha_x = v[4];
+    p.alpha_y = v[5];
+    p.normalization = (pgloss_normalization)normalization;
+    return p;
+}
+
+static pgloss_perceptual make_perceptual(const double q[5])
+{
+    pgloss_perceptual r = {q[0], q[1], q[2], q[3], q[4]};
+    return r;
+}
+
+int pgloss_py_material_init(pgloss_material *m, const double v[6], int normalization)
+{
+    const pgloss_physical p = make_physical(v, normalization);
+    return (int)pgloss_material_init(m, &p);
+}
+
+int pgloss_py_check_physical(const double v[6], int normalization)
+{
+    const pgloss_physical p = make_physical(v, normalization);
+    return (int)pgloss_check_physical(&p);
+}
+
+int pgloss_py_check_perceptual(const double q[5])
+{
+    const pgloss_perceptual r = make_perceptual(q);
+    return (int)pgloss_check_perceptual(&r);
+}
+
+int pgloss_py_physical_from_perceptual(const double q[5], int normalization, double out[6],
+                                       int *normalization_out)
+{
+    const pgloss_perceptual r = make_perceptual(q);
+    pgloss_physical p;
+    memset(&p, 0, sizeof p);
+    const pgloss_status st = pgloss_physical_from_perceptual(&r, (pgloss_normalization)normalization, &p);
+    out[0] = p.rho_d[0];
+    out[1] = p.rho_d[1];
+    out[2] = p.rho_d[2];
+    out[3] = p.rho_s;
+    out[4] = p.alpha_x;
+    out[5] = p.alpha_y;
+    *normalization_out = (int)p.normalization;
+    return (int)st;
+}
+
+int pgloss_py_perceptual_from_physical(const double v[6], int normalization, double q[5])
+{
+    const pgloss_physical p = make_physical(v, normalization);
+    pgloss_perceptual r = {0, 0, 0, 0, 0};
+    const pgloss_status st = pgloss_perceptual_from_physical(&p, &r);
+    q[0] = r.L;
+    q[1] = r.a;
+    q[2] = r.b;
+    q[3] = r.c;
+    q[4] = r.d;
+    return (int)st;
+}

@@ -1,0 +1,22 @@
+/* shim.h — see shim.c. v = {rho_d r, g, b, rho_s, alpha_x, alpha_y}; q = {L, a, b, c, d}. */
+#ifndef PGLOSS_PY_SHIM_H
+#define PGLOSS_PY_SHIM_H
+
+#include "pgloss/pgloss.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+int pgloss_py_material_init(pgloss_material *m, const double v[6], int normalization);
+int pgloss_py_check_physical(const double v[6], int normalization);
+int pgloss_py_check_perceptual(const double q[5]);
+int pgloss_py_physical_from_perceptual(const double q[5], int normalization, double out[6],
+                                       int *normalization_out);
+int pgloss_py_perceptual_from_physical(const double v[6], int normalization, double q[5]);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif
