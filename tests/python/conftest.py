@@ -1,0 +1,36 @@
+"""pytest set-up for the Python package's tests.
+
+* ``tests/python`` is put on ``sys.path`` so that the helper module ``vectors`` imports.
+* The package under test is the *installed* one (``pip install .``), never the source tree:
+  the source folder has no compiled ``_core``.
+* With PGLOSS_REQUIRE_ALL=1 (set by scripts/test.sh and CI) a skipped test is a failure.
+* The largest error per function and output against the shared vectors is printed at the end.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+import vectors  # noqa: E402
+
+
+def pytest_terminal_summary(terminalreporter, exitstatus, config):  # noqa: D103
+    if vectors.STATS:
+        terminalreporter.write_line("")
+        for line in vectors.summary_lines():
+            terminalreporter.write_line(line)
+    if os.environ.get("PGLOSS_REQUIRE_ALL") == "1":
+        skipped = terminalreporter.stats.get("skipped", [])
+        if skipped:
+            terminalreporter.write_line(f"PGLOSS_REQUIRE_ALL=1: {len(skipped)} skipped tests count as failures")
+
+
+def pytest_sessionfinish(session, exitstatus):  # noqa: D103
+    if os.environ.get("PGLOSS_REQUIRE_ALL") == "1":
+        reporter = session.config.pluginmanager.get_plugin("terminalreporter")
+        if reporter is not None and reporter.stats.get("skipped") and session.exitstatus == 0:
+            session.exitstatus = 1
