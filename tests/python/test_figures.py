@@ -55,3 +55,12 @@ def test_figure_data_are_the_papers() -> None:
     env = pgloss.envelope_contrast(L)
     assert (c < env).all()
     assert pgloss.envelope_contrast(0.0) == pytest.approx(1.0) and pgloss.envelope_contrast(100.0) == pytest.approx(0.0, abs=1e-12)
+
+
+def test_benchmark_script_runs() -> None:
+    """The benchmark is a program, not a timed test: only check that it runs and reports both paths."""
+    bench = Path(__file__).resolve().parents[2] / "bindings" / "python" / "bench" / "bench_eval.py"
+    proc = subprocess.run([sys.executable, str(bench), "--n", "20000", "--repeat", "2"], capture_output=True,
+                          text=True, timeout=120)
+    assert proc.returncode == 0, proc.stderr
+    assert "C pgloss_eval_batch" in proc.stdout and "Python float32 / C batched (best)" in proc.stdout
