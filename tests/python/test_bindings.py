@@ -501,3 +501,15 @@ def test_stubs_cover_the_api() -> None:
     for name in pgloss.__all__:
         assert name in stub, f"{name} missing from __init__.pyi"
     assert (root / "_core.pyi").is_file()
+
+
+def test_docstring_examples() -> None:
+    """The examples in the docstrings run and print what they say."""
+    import doctest
+
+    import pgloss.__main__ as main_module
+
+    for module in (pgloss, main_module):
+        result = doctest.testmod(module, optionflags=doctest.NORMALIZE_WHITESPACE, raise_on_error=False)
+        assert result.failed == 0, f"{module.__name__}: {result.failed} docstring examples failed"
+    assert doctest.testmod(pgloss).attempted >= 10
