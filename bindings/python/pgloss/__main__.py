@@ -173,10 +173,5 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     return 0
 
 
-def figures_entry() -> None:
-    """Console script ``pgloss-figures OUTDIR``."""
-    sys.exit(main(["figures", *sys.argv[1:]]))
-
-
 if __name__ == "__main__":
     sys.exit(main())
