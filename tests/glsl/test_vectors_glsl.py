@@ -8,8 +8,13 @@ import pytest
 import glsl_vectors as gv
 
 
-def _report(rep: gv.Report, title: str) -> None:
-    print(f"\n== {title}\n{rep.summary()}")
+def _report(rep: gv.Report, title: str, full: bool = True) -> None:
+    if full:
+        print(f"\n== {title}\n{rep.summary()}")
+    else:
+        worst = max(rep.stats.items(), key=lambda kv: kv[1].max_ratio)
+        print(f"\n== {title}: {rep.cases} cases, {sum(s.checks for s in rep.stats.values())} checks, "
+              f"largest err/tol {worst[1].max_ratio:.3g} ({worst[0]}, {worst[1].worst_ratio})")
     for f in rep.failures[:40]:
         print("FAIL", f)
     assert not rep.failures, f"{len(rep.failures)} failures, first: {rep.failures[0]}"
@@ -63,5 +68,5 @@ FEATURE_BUILDS = {
 def test_feature_build(gl_ctx, name: str) -> None:
     defines, files, select = FEATURE_BUILDS[name]
     rep = gv.run_all(gl_ctx, files, defines, select)
-    _report(rep, f"feature build {name}: {' '.join(defines)}")
+    _report(rep, f"feature build {name}: {' '.join(defines)}", full=False)
     assert rep.cases > 100
