@@ -3,6 +3,7 @@
 feature-switch builds (on the cases whose result a switch does not change)."""
 from __future__ import annotations
 
+import numpy as np
 import pytest
 
 import glsl_vectors as gv
@@ -33,6 +34,36 @@ def test_all_vectors_full_build(gl_ctx) -> None:
                 "check_physical status", "check_perceptual status", "physical_from_perceptual rho_d",
                 "perceptual_from_physical c"]:
         assert rep.stats.get(key) and rep.stats[key].checks > 0, f"no checks of {key}"
+
+
+def test_all_vectors_fragment_glsl330(gl_ctx) -> None:
+    """The same vectors through a GLSL 3.30 fragment shader (integer texture in, RGBA32UI
+    render target out: the float bits travel exactly)."""
+    rep = gv.run_all(gl_ctx, stage="frag")
+    _report(rep, "GLSL 3.30 fragment stage: every vector file")
+
+
+def _job(fn: str, fin: list[float], uin1: int = 0, uin2: int = 0) -> gv.Job:
+    return gv.Job({"id": "switch"}, fn, fin, [gv.FN[fn], uin1 & 0xFFFFFFFF, uin2, 0])
+
+
+@pytest.mark.parametrize("defines,physical,norm,status,lobes", [
+    # a compiled-out normalisation is an unknown one; anisotropy without its code is an error
+    (["PGLOSS_NO_NORM_WARD_DUR"], [0.5, 0.5, 0.5, 0.1, 0.1, 0.1], 1, -10, 0),
+    (["PGLOSS_NO_NORM_BOUNDED"], [0.5, 0.5, 0.5, 0.1, 0.1, 0.1], 2, -10, 0),
+    (["PGLOSS_NO_NORM_BOUNDED"], [0.5, 0.5, 0.5, 0.1, 0.1, 0.1], 1, 0, 3),
+    (["PGLOSS_NO_ANISOTROPY"], [0.5, 0.5, 0.5, 0.1, 0.1, 0.2], 0, -11, 0),
+    (["PGLOSS_NO_ANISOTROPY"], [0.5, 0.5, 0.5, 0.1, 0.1, 0.1], 0, 0, 3),
+    # a compiled-out lobe is absent from the material
+    (["PGLOSS_NO_DIFFUSE"], [0.5, 0.5, 0.5, 0.1, 0.1, 0.1], 0, 0, 2),
+    (["PGLOSS_NO_SPECULAR"], [0.5, 0.5, 0.5, 0.1, 0.1, 0.1], 0, 0, 1),
+])
+def test_switch_semantics(gl_ctx, defines, physical, norm, status, lobes) -> None:
+    """What pgloss.glsl's header says the switches do to pgloss_material_init."""
+    fout, iout = gv.run_jobs(gl_ctx, [_job("material_init", physical, norm)], defines)
+    assert int(iout[0, 0]) == status and int(iout[0, 1]) == lobes, (iout[0], fout[0])
+    if status < 0:
+        assert np.all(fout[0, 12:15] == 0), "a failed init must give a black material"
 
 
 def _material_lobes(j: gv.Job) -> int:
