@@ -186,12 +186,19 @@ void pgloss_run(uint j) {
 """
 
 
+STAGES = {"comp": "450 core", "frag": "330 core", "frag_es": "300 es"}
+
+
 def shader_source(defines: Iterable[str] = (), stage: str = "comp") -> str:
-    version = "450 core" if stage == "comp" else "330 core"
-    head = f"#version {version}\n" + "".join(f"#define {d} 1\n" for d in defines)
+    """comp: GLSL 4.50 compute; frag: GLSL 3.30 fragment; frag_es: GLSL ES 3.00 (WebGL2's
+    language) fragment, which a desktop GL >= 4.3 context runs through ARB_ES3_compatibility."""
+    head = f"#version {STAGES[stage]}\n" + "".join(f"#define {d} 1\n" for d in defines)
     if stage == "comp":
         return head + GLSL.read_text() + COMPUTE_PRELUDE + DISPATCHER + COMPUTE_MAIN
-    return head + GLSL.read_text() + FRAGMENT_PRELUDE + DISPATCHER + FRAGMENT_MAIN
+    prelude = FRAGMENT_PRELUDE
+    if stage == "frag_es":  # ES has no default precision for integer samplers
+        prelude = prelude.replace("uniform usampler2D inp;", "uniform highp usampler2D inp;")
+    return head + GLSL.read_text() + prelude + DISPATCHER + FRAGMENT_MAIN
 
 
 # ---------------------------------------------------------------------------------------
@@ -312,8 +319,8 @@ def run_jobs(ctx, jobs: list[Job], defines: Iterable[str] = (),
         for k, j in enumerate(jobs):
             fin[k, : len(j.fin)] = np.array(j.fin, np.float64).astype(np.float32)
             uin[k, :] = j.uin
-    if stage == "frag":
-        return _run_fragment(ctx, fin, uin, defines)
+    if stage in ("frag", "frag_es"):
+        return _run_fragment(ctx, fin, uin, defines, stage)
     prog = ctx.compute_shader(shader_source(defines))
     bufs = [ctx.buffer(fin.tobytes()), ctx.buffer(uin.tobytes()),
             ctx.buffer(reserve=n * NF_OUT * 4), ctx.buffer(reserve=n * NI_OUT * 4)]
@@ -330,20 +337,22 @@ def run_jobs(ctx, jobs: list[Job], defines: Iterable[str] = (),
     return fout, iout
 
 
-_VERTEX_330 = """#version 330 core
+_VERTEX = """
 in vec2 pos;
 void main() { gl_Position = vec4(pos, 0.0, 1.0); }
 """
 
 
-def _run_fragment(ctx, fin: np.ndarray, uin: np.ndarray, defines: Iterable[str]) -> tuple[np.ndarray, np.ndarray]:
+def _run_fragment(ctx, fin: np.ndarray, uin: np.ndarray, defines: Iterable[str],
+                  stage: str) -> tuple[np.ndarray, np.ndarray]:
     import moderngl
 
     n = fin.shape[0]
     texels = np.concatenate([fin.view(np.uint32), uin], axis=1)  # n x 20 uints = 5 RGBA texels
     tex = ctx.texture((5, n), 4, texels.tobytes(), dtype="u4")
     tex.filter = (moderngl.NEAREST, moderngl.NEAREST)
-    prog = ctx.program(vertex_shader=_VERTEX_330, fragment_shader=shader_source(defines, "frag"))
+    prog = ctx.program(vertex_shader=f"#version {STAGES[stage]}\n" + _VERTEX,
+                       fragment_shader=shader_source(defines, stage))
     tex.use(0)
     prog["inp"].value = 0
     quad = ctx.buffer(np.array([-1, -1, 1, -1, -1, 1, 1, 1], np.float32).tobytes())

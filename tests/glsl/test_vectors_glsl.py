@@ -36,11 +36,13 @@ def test_all_vectors_full_build(gl_ctx) -> None:
         assert rep.stats.get(key) and rep.stats[key].checks > 0, f"no checks of {key}"
 
 
-def test_all_vectors_fragment_glsl330(gl_ctx) -> None:
-    """The same vectors through a GLSL 3.30 fragment shader (integer texture in, RGBA32UI
-    render target out: the float bits travel exactly)."""
-    rep = gv.run_all(gl_ctx, stage="frag")
-    _report(rep, "GLSL 3.30 fragment stage: every vector file")
+@pytest.mark.parametrize("stage", ["frag", "frag_es"])
+def test_all_vectors_fragment(gl_ctx, stage: str) -> None:
+    """The same vectors through a fragment shader — GLSL 3.30 core, and GLSL ES 3.00 (the
+    language of WebGL2, run by the desktop context through ARB_ES3_compatibility) — with an
+    RGBA32UI texture in and an RGBA32UI render target out (float bits travel exactly)."""
+    rep = gv.run_all(gl_ctx, stage=stage)
+    _report(rep, f"{gv.STAGES[stage]} fragment stage: every vector file")
 
 
 def _job(fn: str, fin: list[float], uin1: int = 0, uin2: int = 0) -> gv.Job:
