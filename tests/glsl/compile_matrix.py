@@ -212,9 +212,14 @@ def matrix() -> list[tuple[Target, str, str]]:
 # SPIR-V size
 
 
+# Debug-information instructions (names, source text, line info): not counted as code.
+DEBUG_OPS = {"OpName", "OpMemberName", "OpSource", "OpSourceExtension", "OpSourceContinued",
+             "OpString", "OpLine", "OpNoLine", "OpModuleProcessed"}
+
+
 def spirv_instructions(spv: pathlib.Path, optimise: bool) -> int:
-    """Number of SPIR-V instructions (spirv-dis lines that are not comments), after
-    spirv-opt -O when optimise."""
+    """Number of SPIR-V instructions other than debug information (spirv-dis lines, without
+    comments and DEBUG_OPS), after spirv-opt -O when optimise."""
     path = spv
     if optimise:
         opt = spv.with_suffix(".opt.spv")
@@ -225,7 +230,16 @@ def spirv_instructions(spv: pathlib.Path, optimise: bool) -> int:
     r = subprocess.run(["spirv-dis", "--no-header", "--raw-id", str(path)], capture_output=True, text=True)
     if r.returncode:
         raise RuntimeError(r.stderr)
-    return sum(1 for line in r.stdout.splitlines() if line.strip() and not line.lstrip().startswith(";"))
+    count = 0
+    for line in r.stdout.splitlines():
+        line = line.strip()
+        if not line or line.startswith(";"):
+            continue
+        # "%5 = OpTypeFloat 32" or "OpStore %a %b"
+        op = line.split(" = ", 1)[1].split()[0] if line.startswith("%") else line.split()[0]
+        if op not in DEBUG_OPS:
+            count += 1
+    return count
 
 
 def size_table() -> str:
