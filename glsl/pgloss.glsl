@@ -51,10 +51,11 @@
  * float slack PGLOSS_BOUNDARY_TOLERANCE = 1e-6 instead of the C core's 1e-12, so inputs
  * that differ from a boundary by less than float resolution (e.g. α = 0.2 + 1e-16) are
  * classified as the boundary itself. tests/glsl/README.md states the tolerances.
- * Only basic arithmetic, sqrt, inversesqrt and exp (eq. 2's exponential) come from the
- * driver; the cube root is refined by a Newton step, and sampling uses its own log, sin and
- * cos (the GLSL spec allows 2^-11 absolute error in sin/cos and 2^-21 in log near 1, which
- * would move sampled directions by more than float rounding).
+ * From the driver come only basic arithmetic, sqrt, inversesqrt, floor, exp (eq. 2's
+ * exponential: the spec allows it 3 + 2|x| ulp) and exp2/log2 as the first guess of the cube
+ * root, which a Newton step then corrects. Sampling and the isogloss contour use their own
+ * log, sin and cos (the GLSL spec allows 2^-11 absolute error in sin/cos and 2^-21 in log
+ * near 1, which would move sampled directions by more than float rounding).
  */
 #ifndef PGLOSS_GLSL
 #define PGLOSS_GLSL 1

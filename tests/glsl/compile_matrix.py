@@ -201,7 +201,15 @@ def compile_one(target: Target, stage: str, defines: tuple[str, ...], probe: str
             cmd += ["-V", "--target-env", target.target_env]
             cmd += ["-o", str(spv_out) if spv_out else os.path.join(tmp, "probe.spv")]
         cmd.append(str(path))
-        return subprocess.run(cmd, capture_output=True, text=True)
+        r = subprocess.run(cmd, capture_output=True, text=True)
+        if r.returncode == 0 and target.vulkan:  # and the SPIR-V must validate
+            spv = cmd[cmd.index("-o") + 1]
+            v = subprocess.run(["spirv-val", "--target-env", target.target_env, spv],
+                               capture_output=True, text=True)
+            if v.returncode:
+                return subprocess.CompletedProcess(cmd + ["&& spirv-val"], v.returncode,
+                                                   r.stdout + v.stdout, r.stderr + v.stderr)
+        return r
 
 
 def matrix() -> list[tuple[Target, str, str]]:
