@@ -8,4 +8,5 @@ export PGLOSS_REQUIRE_ALL="${PGLOSS_REQUIRE_ALL:-1}"
 start=$SECONDS
 bash scripts/test-core.sh
 bash scripts/test-python.sh
+bash scripts/test-glsl.sh
 echo "== every test passed ($((SECONDS - start)) s)"
