@@ -41,6 +41,9 @@ STATUS = {
 STATUS_NAME = {v: k for k, v in STATUS.items()}
 LOBE = {"PGLOSS_LOBE_NONE": 0, "PGLOSS_LOBE_DIFFUSE": 1, "PGLOSS_LOBE_SPECULAR": 2}
 ISO_MAX = 360  # largest isogloss n in the driver
+# Cycles zeroes a pixel whose |R| + |G| + |B| overflows float (e.g. three values near FLT_MAX):
+# the driver emits its results times 2^-2 (exact) and the reader multiplies by 4.
+SCALE = 0.25
 
 
 def num(v: Any) -> float:
@@ -303,7 +306,7 @@ shader pgloss_vectors(
         int v = slot * 3 + j;
         out[j] = v == 0 ? (float)st : v == 1 ? (float)bad : (v - 2 < {nres} ? res[v - 2] : 0.0);
     }}
-    Cout = emission() * out;
+    Cout = emission() * (out * {SCALE!r});  // see SCALE
 }}
 """
     shader = WORK / "vectors" / (file.replace(".json", "") + ".osl")
@@ -316,7 +319,7 @@ def execute(p: Prepared) -> np.ndarray:
     """Renders the driver; returns per case the flat result vector [st, bad, res...]."""
     img = render_shader(p.shader, p.W, p.H, p.shader.with_suffix(".exr"))
     flat = img.reshape(-1, 3)[: len(p.cases) * p.K].reshape(len(p.cases), p.K * 3)
-    return flat.astype(np.float64)
+    return flat.astype(np.float64) / SCALE
 
 
 # ------------------------------------------------------------------------------------------
