@@ -65,11 +65,13 @@ def reset_scene() -> bpy.types.Scene:
     return sc
 
 
-def render_shader(osl_path: Path, width: int, height: int, out_exr: Path) -> np.ndarray:
+def render_shader(osl_path: Path, width: int, height: int, out_exr: Path, wire=None) -> np.ndarray:
     """Renders the shader as emission on a camera-filling plane; returns float32 [H, W, 3].
 
     ``width`` must be even and >= ``height`` >= 4 (Blender's smallest height), so that the
     orthographic scale is the width and the plane's edges fall on pixel edges.
+    ``wire(node_tree, script_node, output_node)``, if given, links the script's outputs to the
+    material output itself (e.g. a pattern shader through an Emission node).
     """
     assert width % 2 == 0 and width >= height >= 4
     sc = reset_scene()
@@ -99,7 +101,10 @@ def render_shader(osl_path: Path, width: int, height: int, out_exr: Path) -> np.
     script.filepath = str(osl_path)
     if not script.outputs:
         raise RuntimeError(f"OSL compilation of {osl_path} failed (see the log above)")
-    nt.links.new(script.outputs[0], out.inputs["Surface"])
+    if wire is None:
+        nt.links.new(script.outputs[0], out.inputs["Surface"])
+    else:
+        wire(nt, script, out)
     mesh.materials.append(mat)
 
     cam = bpy.data.cameras.new("cam")

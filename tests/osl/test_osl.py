@@ -83,20 +83,40 @@ def test_vectors_pass(vector_report: vo.Report) -> None:
     assert not vector_report.failures, "\n".join(vector_report.failures[:50])
 
 
-def test_params_shader_fig12(tmp_path: Path) -> None:
-    """The conversion pgloss_params.osl makes: L* of ρd = 0.767 and the paper's c = 0.057, d = 0.96 give back
-    ρd = 0.767, α = 0.04 and (eq. 7) ρs ≈ 0.099 (Fig. 12: white sphere, ρs = 0.099, α = 0.04)."""
+@pytest.mark.parametrize("output", ["rho_d", "rho_s", "alpha", "status"])
+def test_params_shader_fig12(output: str, tmp_path: Path) -> None:
+    """pgloss_params.osl, wired through an Emission node: L* of ρd = 0.767 (the paper's white)
+    with Fig. 12's c = 0.057, d = 0.96 gives ρd = 0.767, α = 0.04 and ρs = 0.0976 by eq. 7
+    (computed here by the C core; the paper's ρs = 0.099
+    corresponds to c = 0.0578, which it rounds to 0.057)."""
+    import ctypes as C
+
+    import cref
+
     L = 116 * 0.767 ** (1 / 3) - 16
-    src = tmp_path / "params_drv.osl"
-    src.write_text(f'#include "{(oslrt.OSL_DIR / "pgloss.h").as_posix()}"\n'
-                   "shader params_drv(output closure color Cout = 0) {\n"
-                   f"  pgloss_perceptual q; q.L = {L!r}; q.a = 0.0; q.b = 0.0; q.c = 0.057; q.d = 0.96;\n"
-                   "  pgloss_physical p; int st = pgloss_physical_from_perceptual(q, PGLOSS_NORM_WARD, p);\n"
-                   "  Cout = emission() * color(p.rho_d[1], p.rho_s, p.alpha_x + 10.0 * st);\n}\n")
-    img = oslrt.render_shader(src, 64, 4, tmp_path / "params.exr")
-    rd, rs, al = (float(x) for x in img[0, 0])
-    assert abs(rd - 0.767) < 1e-5 and abs(al - 0.04) < 1e-6
-    assert abs(rs - 0.099) < 0.002  # the paper rounds c to 0.057
+    rd, rs, al = C.c_double(), C.c_double(), C.c_double()
+    assert cref.lib().pgloss_physical_from_gloss(C.c_double(L), C.c_double(0.057), C.c_double(0.96),
+                                                 C.byref(rd), C.byref(rs), C.byref(al)) == 0
+
+    def wire(nt, script, out) -> None:
+        script.inputs["Lightness"].default_value = L
+        script.inputs["contrast_gloss"].default_value = 0.057
+        script.inputs["distinctness_gloss"].default_value = 0.96
+        em = nt.nodes.new("ShaderNodeEmission")
+        em.inputs["Strength"].default_value = 1.0
+        if output == "rho_d":
+            nt.links.new(script.outputs["rho_d"], em.inputs["Color"])
+        else:
+            em.inputs["Color"].default_value = (1, 1, 1, 1)
+            nt.links.new(script.outputs[output], em.inputs["Strength"])
+        nt.links.new(em.outputs["Emission"], out.inputs["Surface"])
+
+    img = oslrt.render_shader(oslrt.OSL_DIR / "pgloss_params.osl", 64, 4, tmp_path / "params.exr", wire)
+    got = img[1, 10].astype(np.float64)
+    want = {"rho_d": rd.value, "rho_s": rs.value, "alpha": al.value, "status": 0.0}[output]
+    assert np.allclose(got, want, rtol=1e-5, atol=1e-7), (output, got, want)
+    if output == "rho_d":
+        assert abs(want - 0.767) < 1e-12 and abs(al.value - 0.04) < 1e-12
 
 
 def _furnace(inputs: dict, tmp_path: Path, samples: int = 256) -> np.ndarray:
