@@ -9,4 +9,5 @@ start=$SECONDS
 bash scripts/test-core.sh
 bash scripts/test-python.sh
 bash scripts/test-glsl.sh
+bash scripts/test-osl.sh
 echo "== every test passed ($((SECONDS - start)) s)"

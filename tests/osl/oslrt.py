@@ -1,0 +1,131 @@
+"""A real OSL runtime for tests: OSL 1.14 inside Blender's Cycles (PyPI ``bpy==5.0.1``).
+
+``compile_osl`` runs Cycles' OSL compiler on a file. ``render_shader`` executes a shader as
+an emission closure on a plane that fills an orthographic camera exactly, one Cycles sample
+per pixel, a box pixel filter 0.01 pixel wide (so no sample leaves its pixel), no bounces,
+the Raw view transform, written to a 32-bit float OpenEXR and read back with OpenImageIO.
+Pixel (x, y) (y = 0 at the top) sees the plane at P = (x + 0.5 - W/2, H/2 - y - 0.5, 0),
+up to the sub-pixel jitter, so a shader finds its pixel with ``floor(P[0] + W/2)``.
+Cycles replaces non-finite radiance by 0 (``ensure_finite``), so shaders must report
+non-finiteness themselves; the readback is checked to be exact by ``tests/osl/test_osl.py``.
+"""
+from __future__ import annotations
+
+import importlib.util
+import os
+import sys
+from pathlib import Path
+
+import numpy as np
+
+_spec = importlib.util.find_spec("bpy")
+if _spec is None or _spec.origin is None:
+    raise ImportError("bpy (PyPI bpy==5.0.1) is not installed in this interpreter")
+# The Cycles add-on imports oslquery, which bpy bundles outside the interpreter's sys.path.
+_BUNDLED = Path(_spec.origin).parent / "5.0" / "python" / "lib" / "python3.11" / "site-packages"
+if str(_BUNDLED) not in sys.path:
+    sys.path.append(str(_BUNDLED))
+
+import bpy  # noqa: E402
+import OpenImageIO as oiio  # noqa: E402  (bundled with bpy)
+
+REPO = Path(__file__).resolve().parents[2]
+OSL_DIR = REPO / "osl"
+WORK = REPO / "build-osl"
+
+
+def compile_osl(src: Path, oso: Path) -> bool:
+    """Compiles ``src`` with Cycles' OSL compiler into ``oso``; True on success."""
+    import _cycles  # available once bpy is imported
+
+    oso.parent.mkdir(parents=True, exist_ok=True)
+    if oso.exists():
+        oso.unlink()
+    ok = bool(_cycles.osl_compile(str(src), str(oso)))
+    return ok and oso.exists() and oso.stat().st_size > 0
+
+
+def reset_scene() -> bpy.types.Scene:
+    """An empty scene set up for Cycles + OSL on the CPU."""
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    sc = bpy.context.scene
+    sc.render.engine = "CYCLES"
+    sc.cycles.device = "CPU"
+    sc.cycles.shading_system = True
+    sc.render.threads_mode = "FIXED"
+    sc.render.threads = max(1, min(2, os.cpu_count() or 1))
+    sc.view_settings.view_transform = "Raw"
+    sc.view_settings.look = "None"
+    sc.view_settings.exposure = 0.0
+    sc.view_settings.gamma = 1.0
+    sc.render.image_settings.file_format = "OPEN_EXR"
+    sc.render.image_settings.color_depth = "32"
+    sc.render.image_settings.exr_codec = "ZIP"
+    sc.render.resolution_percentage = 100
+    return sc
+
+
+def render_shader(osl_path: Path, width: int, height: int, out_exr: Path, wire=None) -> np.ndarray:
+    """Renders the shader as emission on a camera-filling plane; returns float32 [H, W, 3].
+
+    ``width`` must be even and >= ``height`` >= 4 (Blender's smallest height), so that the
+    orthographic scale is the width and the plane's edges fall on pixel edges.
+    ``wire(node_tree, script_node, output_node)``, if given, links the script's outputs to the
+    material output itself (e.g. a pattern shader through an Emission node).
+    """
+    assert width % 2 == 0 and width >= height >= 4
+    sc = reset_scene()
+    sc.cycles.samples = 1
+    sc.cycles.use_adaptive_sampling = False
+    sc.cycles.use_denoising = False
+    sc.cycles.pixel_filter_type = "BOX"
+    sc.cycles.filter_width = 0.01
+    sc.cycles.max_bounces = 0
+    sc.cycles.seed = 0
+    sc.render.resolution_x = width
+    sc.render.resolution_y = height
+
+    mesh = bpy.data.meshes.new("plane")
+    w2, h2 = width / 2, height / 2
+    mesh.from_pydata([(-w2, -h2, 0), (w2, -h2, 0), (w2, h2, 0), (-w2, h2, 0)], [], [(0, 1, 2, 3)])
+    plane = bpy.data.objects.new("plane", mesh)
+    sc.collection.objects.link(plane)
+
+    mat = bpy.data.materials.new("shader")
+    nt = mat.node_tree
+    for n in list(nt.nodes):
+        nt.nodes.remove(n)
+    out = nt.nodes.new("ShaderNodeOutputMaterial")
+    script = nt.nodes.new("ShaderNodeScript")
+    script.mode = "EXTERNAL"
+    script.filepath = str(osl_path)
+    if not script.outputs:
+        raise RuntimeError(f"OSL compilation of {osl_path} failed (see the log above)")
+    if wire is None:
+        nt.links.new(script.outputs[0], out.inputs["Surface"])
+    else:
+        wire(nt, script, out)
+    mesh.materials.append(mat)
+
+    cam = bpy.data.cameras.new("cam")
+    cam.type = "ORTHO"
+    cam.ortho_scale = float(width)
+    cam_obj = bpy.data.objects.new("cam", cam)
+    sc.collection.objects.link(cam_obj)
+    cam_obj.location = (0.0, 0.0, 10.0)
+    sc.camera = cam_obj
+    world = bpy.data.worlds.new("world")
+    world.color = (0.0, 0.0, 0.0)
+    sc.world = world
+
+    out_exr.parent.mkdir(parents=True, exist_ok=True)
+    if out_exr.exists():
+        out_exr.unlink()
+    sc.render.filepath = str(out_exr)
+    bpy.ops.render.render(write_still=True)
+    buf = oiio.ImageBuf(str(out_exr))
+    spec = buf.spec()
+    if (spec.width, spec.height) != (width, height) or spec.format != oiio.FLOAT:
+        raise RuntimeError(f"unexpected EXR {spec.width}x{spec.height} {spec.format}")
+    px = np.asarray(buf.get_pixels(oiio.FLOAT), dtype=np.float32)
+    return px[:, :, :3].copy()
