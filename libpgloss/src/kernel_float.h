@@ -6,6 +6,7 @@
 #define PGLOSS_KERNEL_FLOAT_H
 
 #include <float.h>
+#include <math.h>
 #include <stdint.h>
 #include <string.h>
 
@@ -109,22 +110,78 @@ PGLOSS_INLINE void pgloss__sincos_turn(float u, float *s, float *c)
     *c = cc;
 }
 
-/* Normalises (x, y, z) in place after scaling by the largest component; returns 0 (and
- * leaves zeros) for a zero or non-finite vector. */
-PGLOSS_INLINE int pgloss__normalize_f(float *x, float *y, float *z)
+/* 2^-e for the binary exponent e of m > 0 (2^127 for subnormal m, at most 2^-126): an exact
+ * scale that brings the largest component of a vector to [1, 2) (or below 4 at the top of the
+ * range) without a division, so that the squares neither overflow nor underflow. */
+PGLOSS_INLINE float pgloss__pow2_scale(float m)
 {
-    const float m = pgloss__maxf(pgloss__absf(*x), pgloss__maxf(pgloss__absf(*y), pgloss__absf(*z)));
-    /* x*0 is 0 for finite x and NaN for NaN or ±Inf (not folded without -ffast-math). */
-    const int finite = (*x * 0.0f + *y * 0.0f + *z * 0.0f) == 0.0f;
-    const int ok = finite & (m > 0.0f);
-    const float mm = ok ? m : 1.0f;
-    const float a = *x / mm, b = *y / mm, c = *z / mm;
-    const float l2 = a * a + b * b + c * c;
-    const float inv = 1.0f / sqrtf(ok ? l2 : 1.0f);
-    *x = ok ? a * inv : 0.0f;
-    *y = ok ? b * inv : 0.0f;
-    *z = ok ? c * inv : 0.0f;
-    return ok;
+    const int32_t e = (pgloss__float_to_bits(m) >> 23) & 0xff;
+    const int32_t s = 254 - e;
+    return pgloss__bits_to_float((s < 1 ? 1 : s) << 23);
 }
+
+/* 1/sqrt(x) for normal x > 0: the bit-level first guess (Lomont's constant, relative error
+ * 3.4e-2) and two Newton steps (1.75e-3, then <= 4.6e-6). The fast tier's rsqrt. */
+PGLOSS_INLINE float pgloss__rsqrt_fast(float x)
+{
+    float y = pgloss__bits_to_float(0x5f375a86 - (pgloss__float_to_bits(x) >> 1));
+    y = y * (1.5f - 0.5f * x * y * y);
+    return y * (1.5f - 0.5f * x * y * y);
+}
+
+/* exp(x) for x <= 0 in the fast tier: the reduction of pgloss__exp_neg with a degree-5
+ * Taylor polynomial, relative error <= 2.5e-6 (|r| <= ln2/2: r^6/720). */
+PGLOSS_INLINE float pgloss__exp_neg_fast(float x)
+{
+    const float lo = -87.33654f;
+    const float xc = x < lo ? lo : x;
+    const float shifter = 12582912.0f;
+    const float n = (xc * 1.44269504088896341f + shifter) - shifter;
+    const float r = (xc - n * 0.693145751953125f) - n * 1.428606765330187e-06f;
+    float p = 1.0f / 120.0f;
+    p = p * r + 1.0f / 24.0f;
+    p = p * r + 1.0f / 6.0f;
+    p = p * r + 0.5f;
+    p = p * r + 1.0f;
+    p = p * r + 1.0f;
+    const float scale = pgloss__bits_to_float(((int32_t)n + 127) << 23);
+    return x < lo ? 0.0f : p * scale;
+}
+
+/* Whether x is finite, by its bits (robust under any floating-point flags). */
+PGLOSS_INLINE int pgloss__finite_f(float x)
+{
+    return (pgloss__float_to_bits(x) & 0x7f800000) != 0x7f800000;
+}
+
+/* Normalises (x, y, z) in place after an exact power-of-two scaling by the largest component;
+ * returns 0 (and leaves zeros) for a zero or non-finite vector. RSQRT is 1/sqrt or its fast
+ * approximation. */
+#define PGLOSS__NORMALIZE_F(name, RSQRT)                                                           \
+    PGLOSS_INLINE int name(float *x, float *y, float *z)                                           \
+    {                                                                                              \
+        const float m =                                                                            \
+            pgloss__maxf(pgloss__absf(*x), pgloss__maxf(pgloss__absf(*y), pgloss__absf(*z)));      \
+        const int finite = pgloss__finite_f(*x) & pgloss__finite_f(*y) & pgloss__finite_f(*z);    \
+        const int ok = finite & (m > 0.0f);                                                        \
+        const float s = pgloss__pow2_scale(ok ? m : 1.0f);                                         \
+        const float a = *x * s, b = *y * s, c = *z * s;                                            \
+        const float l2 = a * a + b * b + c * c;                                                    \
+        const float inv = RSQRT(ok ? l2 : 1.0f);                                                   \
+        *x = ok ? a * inv : 0.0f;                                                                  \
+        *y = ok ? b * inv : 0.0f;                                                                  \
+        *z = ok ? c * inv : 0.0f;                                                                  \
+        return ok;                                                                                 \
+    }
+#define PGLOSS__RSQRT_IEEE(v) (1.0f / sqrtf(v))
+PGLOSS__NORMALIZE_F(pgloss__normalize_f, PGLOSS__RSQRT_IEEE)
+/* Directions feed tan²δ/α², whose error grows as 1/α: the fast tier normalises them with a
+ * third Newton step (float rounding, as sqrt + division) and saves only the division. */
+PGLOSS_INLINE float pgloss__rsqrt_fast2(float x)
+{
+    const float y = pgloss__rsqrt_fast(x);
+    return y * (1.5f - 0.5f * x * y * y);
+}
+PGLOSS__NORMALIZE_F(pgloss__normalize_fast, pgloss__rsqrt_fast2)
 
 #endif

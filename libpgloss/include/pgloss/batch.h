@@ -7,6 +7,9 @@
  * loop bodies, restrict-qualified arrays, an inlined float exp). They agree with the
  * scalar reference within a few float ulps times the conditioning of exp (tests assert it).
  *
+ * The functions below run the float tier on the best instruction set of the running CPU;
+ * the *_ex forms choose the tier and the instruction set explicitly (pgloss_batch_options).
+ *
  * Arrays may be any alignment. Input and output arrays must not overlap.
  * The status is PGLOSS_OK if every element was valid, else the error of the first
  * invalid element (PGLOSS_ERR_DIRECTION, PGLOSS_ERR_RANDOM); invalid elements get 0
@@ -45,6 +48,65 @@ pgloss_status pgloss_sample_batch(const pgloss_material *m, unsigned lobes, size
                                   pgloss_vec3_array wo, const float *u0, const float *u1,
                                   const float *u2, pgloss_vec3_out wi, float *pdf,
                                   pgloss_rgb_out weight, unsigned char *lobe);
+
+/* ---- accuracy tiers and instruction sets --------------------------------------------- */
+
+/* How the batched loops compute. Maximum relative errors against the exact (40-digit)
+ * values of the shared vectors, on the regular range, are measured by bench/ and listed
+ * in BENCHMARKS.md:
+ *   FLOAT      float arithmetic, IEEE division and square root, an exp within 2 ulp (the
+ *              default; about 5e-7 on eval and pdf);
+ *   FAST       float arithmetic with a degree-5 exp and Newton-refined reciprocal square
+ *              roots in place of division and sqrt (about 3e-5);
+ *   REFERENCE  the scalar functions (double arithmetic, libm) element by element: the
+ *              slowest, the most accurate (float rounding of the result). */
+typedef enum pgloss_precision {
+    PGLOSS_PRECISION_FLOAT = 0,
+    PGLOSS_PRECISION_FAST = 1,
+    PGLOSS_PRECISION_REFERENCE = 2
+} pgloss_precision;
+
+/* Instruction sets of the FLOAT and FAST loops. AUTO picks the best one the running CPU
+ * supports (pgloss_isa_best). BASELINE is the build's target without extensions (SSE2 on
+ * x86-64); AVX2 means AVX2 + FMA, AVX512 means AVX-512 F/VL/DQ/BW. FLOAT-tier results are
+ * bit-identical across instruction sets (no FMA contraction); FAST-tier results may
+ * differ by its stated error. */
+typedef enum pgloss_isa {
+    PGLOSS_ISA_AUTO = 0,
+    PGLOSS_ISA_BASELINE = 1,
+    PGLOSS_ISA_AVX2 = 2,
+    PGLOSS_ISA_AVX512 = 3
+} pgloss_isa;
+
+typedef struct pgloss_batch_options {
+    pgloss_precision precision;
+    pgloss_isa isa;
+} pgloss_batch_options;
+
+/* 1 if this build has loops for isa and the running CPU can execute them (AUTO: 1). */
+int pgloss_isa_supported(pgloss_isa isa);
+/* What PGLOSS_ISA_AUTO resolves to on the running CPU. */
+pgloss_isa pgloss_isa_best(void);
+/* "auto", "baseline", "avx2", "avx512"; "unknown" otherwise. */
+const char *pgloss_isa_name(pgloss_isa isa);
+
+/*
+ * pgloss_eval_pdf_batch with explicit options (NULL: the defaults, FLOAT on AUTO). Either
+ * output may be omitted: f.r == NULL (then f.g and f.b are ignored) or pdf == NULL, not
+ * both. PGLOSS_ERR_ARGUMENT (nothing written) for an unknown precision or isa, or an isa
+ * that pgloss_isa_supported denies.
+ */
+pgloss_status pgloss_eval_pdf_batch_ex(const pgloss_batch_options *options,
+                                       const pgloss_material *m, unsigned lobes, size_t n,
+                                       pgloss_vec3_array wo, pgloss_vec3_array wi,
+                                       pgloss_rgb_out f, float *pdf);
+
+/* pgloss_sample_batch with explicit options, as pgloss_eval_pdf_batch_ex. */
+pgloss_status pgloss_sample_batch_ex(const pgloss_batch_options *options,
+                                     const pgloss_material *m, unsigned lobes, size_t n,
+                                     pgloss_vec3_array wo, const float *u0, const float *u1,
+                                     const float *u2, pgloss_vec3_out wi, float *pdf,
+                                     pgloss_rgb_out weight, unsigned char *lobe);
 
 #ifdef __cplusplus
 }

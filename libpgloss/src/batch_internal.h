@@ -1,0 +1,50 @@
+/* The batched paths, shared between batch.c (public entry points, validation, ISA and tier
+ * dispatch) and batch_isa.c (the loops, compiled once per ISA × tier). Not installed. */
+#ifndef PGLOSS_BATCH_INTERNAL_H
+#define PGLOSS_BATCH_INTERNAL_H
+
+#include <stddef.h>
+#include "pgloss/batch.h"
+
+/* Per-call constants of the loops, derived from the material and the active lobes. */
+typedef struct pgloss__batch_consts {
+    float fd[3];            /* ρd/π */
+    float spec_scale, pdf2; /* the specular constant of eq. 2; 2 × its pdf's constant */
+    float inv_ax, inv_ay;
+    /* Half-vector sampling works on (αx/g, αy/g, 1/g), g = max(1, αx, αy): the same
+     * direction as (αx, αy, 1), without overflowing float for α up to FLT_MAX. */
+    float ax_g, ay_g, inv_g;
+    float ps, pd;           /* lobe-selection probabilities */
+} pgloss__batch_consts;
+
+typedef size_t (*pgloss__eval_pdf_fn)(const pgloss__batch_consts *k, unsigned active, int norm,
+                                      size_t n, pgloss_vec3_array wo, pgloss_vec3_array wi,
+                                      pgloss_rgb_out f, float *pdf);
+typedef void (*pgloss__sample_fn)(const pgloss__batch_consts *k, unsigned active, int norm,
+                                  size_t n, pgloss_vec3_array wo, const float *u0,
+                                  const float *u1, const float *u2, pgloss_vec3_out wi,
+                                  float *pdf, pgloss_rgb_out weight, unsigned char *lobe);
+
+/* One pair of loops per (ISA, tier) built; f.r == NULL / pdf == NULL: output not wanted.
+ * eval_pdf returns the number of invalid directions met (wo and wi counted separately). */
+#define PGLOSS__DECLARE_KERNELS(isa, tier)                                                        \
+    size_t pgloss__eval_pdf_##isa##_##tier(const pgloss__batch_consts *, unsigned, int, size_t,  \
+                                           pgloss_vec3_array, pgloss_vec3_array,                 \
+                                           pgloss_rgb_out, float *);                             \
+    void pgloss__sample_##isa##_##tier(const pgloss__batch_consts *, unsigned, int, size_t,       \
+                                       pgloss_vec3_array, const float *, const float *,          \
+                                       const float *, pgloss_vec3_out, float *, pgloss_rgb_out,  \
+                                       unsigned char *);
+
+PGLOSS__DECLARE_KERNELS(baseline, float)
+PGLOSS__DECLARE_KERNELS(baseline, fast)
+#if defined(PGLOSS_HAVE_AVX2)
+PGLOSS__DECLARE_KERNELS(avx2, float)
+PGLOSS__DECLARE_KERNELS(avx2, fast)
+#endif
+#if defined(PGLOSS_HAVE_AVX512)
+PGLOSS__DECLARE_KERNELS(avx512, float)
+PGLOSS__DECLARE_KERNELS(avx512, fast)
+#endif
+
+#endif
