@@ -15,7 +15,8 @@ from pathlib import Path
 from typing import Any
 
 REPO = Path(__file__).resolve().parents[2]
-LIB = REPO / "build-osl" / "libpgloss_ref.so"
+BUILD = REPO / "build-osl" / "core"
+LIB = BUILD / "libpgloss" / "libpgloss.so"
 
 D = C.c_double
 PD = C.POINTER(C.c_double)
@@ -37,13 +38,12 @@ class Material(C.Structure):
 
 
 def build() -> C.CDLL:
-    """Compiles libpgloss into a shared library (once; again when a source is newer)."""
-    srcs = sorted((REPO / "libpgloss" / "src").glob("*.c"))
-    hdrs = sorted((REPO / "libpgloss").rglob("*.h"))
-    if not LIB.exists() or any(s.stat().st_mtime > LIB.stat().st_mtime for s in srcs + hdrs):
-        LIB.parent.mkdir(parents=True, exist_ok=True)
-        subprocess.run(["cc", "-std=c11", "-O2", "-shared", "-fPIC", "-I", str(REPO / "libpgloss" / "include"),
-                        *map(str, srcs), "-lm", "-o", str(LIB)], check=True)
+    """Builds libpgloss as a shared library with the project's own CMake (incremental: quick
+    when nothing changed), so that the batched loops get their per-ISA compile flags."""
+    subprocess.run(["cmake", "-S", str(REPO), "-B", str(BUILD), "-G", "Ninja", "-DCMAKE_BUILD_TYPE=Release",
+                    "-DBUILD_SHARED_LIBS=ON", "-DPGLOSS_BUILD_CLI=OFF", "-DPGLOSS_BUILD_TESTS=OFF"],
+                   check=True, stdout=subprocess.DEVNULL)
+    subprocess.run(["cmake", "--build", str(BUILD), "--target", "pgloss"], check=True, stdout=subprocess.DEVNULL)
     return C.CDLL(str(LIB))
 
 
