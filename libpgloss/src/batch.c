@@ -12,7 +12,9 @@
 typedef struct consts {
     float fd[3];          /* ρd/π */
     float spec_scale, pdf2; /* 2 × pdf_scale */
-    float inv_ax, inv_ay, ax, ay;
+    float inv_ax, inv_ay;
+    float ax_s, ay_s;     /* αx, αy divided by amax = max(αx, αy, 1) (sampling) */
+    float inv_amax;       /* 1 / amax: never 0, since α <= FLT_MAX */
     float ps, pd;         /* lobe probabilities */
 } consts;
 
@@ -25,8 +27,10 @@ static consts make_consts(const pgloss_material *m, unsigned active)
     k.pdf2 = 2.0f * m->pdf_scale;
     k.inv_ax = m->inv_alpha_x;
     k.inv_ay = m->inv_alpha_y;
-    k.ax = m->alpha_x;
-    k.ay = m->alpha_y;
+    const double amax = fmax(fmax((double)m->alpha_x, (double)m->alpha_y), 1.0);
+    k.ax_s = (float)(m->alpha_x / amax);
+    k.ay_s = (float)(m->alpha_y / amax);
+    k.inv_amax = (float)(1.0 / amax);
     k.ps = (float)pgloss__specular_probability_d(m, active);
     k.pd = 1.0f - k.ps;
     return k;
@@ -234,9 +238,14 @@ PGLOSS_INLINE void sample_loop(const consts *restrict k, const unsigned active, 
         float sn, cs;
         pgloss__sincos_turn(u2, &sn, &cs);
         const float s = sqrtf(pgloss__neg_log1m(u1));
-        const float hx0 = k->ax * s * cs, hy0 = k->ay * s * sn;
-        const float hinv = 1.0f / sqrtf(hx0 * hx0 + hy0 * hy0 + 1.0f);
-        const float hx = hx0 * hinv, hy = hy0 * hinv, hz = hinv;
+        /* h ∝ (αx s cos t, αy s sin t, 1). αx s overflows float for α near FLT_MAX, and its
+         * square for α ≳ 2e19 (giving NaN or wi = -wo): first divide by the per-material
+         * amax = max(αx, αy, 1), then by the largest component, as the scalar path does. */
+        const float hx0 = k->ax_s * (s * cs), hy0 = k->ay_s * (s * sn), hz0 = k->inv_amax;
+        const float hm = pgloss__maxf(pgloss__maxf(pgloss__absf(hx0), pgloss__absf(hy0)), hz0);
+        const float hx1 = hx0 / hm, hy1 = hy0 / hm, hz1 = hz0 / hm;
+        const float hinv = 1.0f / sqrtf(hx1 * hx1 + hy1 * hy1 + hz1 * hz1);
+        const float hx = hx1 * hinv, hy = hy1 * hinv, hz = hz1 * hinv;
         const float oh = ox * hx + oy * hy + oz * hz;
         const float sx = 2.0f * oh * hx - ox, sy = 2.0f * oh * hy - oy, sz = 2.0f * oh * hz - oz;
 
