@@ -190,125 +190,6 @@ const std::vector<Config> &configs() {
 }
 
 // ---------------------------------------------------------------------------------------
-// The histogram grid, in (t, φ') with t = 1 − cos θ ∈ [0, 1] (dω = dt dφ; t keeps full
-// precision near the normal) and φ' = φ − φo ∈ [0, 2π) (the mirror direction is at φ' = π,
-// so the refined band never wraps). Uniform coarse edges in cos θ (32) and φ (64), plus 40
-// fine edges uniform in θ and in φ over the lobe's extent (LobeBox below: where the pdf
-// falls to e^-16 of its peak), when that extent is narrower than 1 rad in θ / 2 rad in φ.
-// ---------------------------------------------------------------------------------------
-struct Grid {
-    std::vector<double> te, pe;
-    double phi_o = 0;
-    std::size_t nt() const { return te.size() - 1; }
-    std::size_t np() const { return pe.size() - 1; }
-    std::size_t cells() const { return nt() * np(); }
-    // Cell of a (float) direction, or -1 at or below the horizon.
-    long cell(double x, double y, double z) const {
-        const double r2 = x * x + y * y, l = std::sqrt(r2 + z * z);
-        const double c = z / l;
-        if (!(c > 0)) return -1;
-        const double t = c > 0.5 ? (r2 / (l * l)) / (1 + c) : 1 - c;  // 1 − cos θ without cancellation
-        double p = std::atan2(y, x) - phi_o;
-        p = std::fmod(p, 2 * kPi);
-        if (p < 0) p += 2 * kPi;
-        std::size_t it = static_cast<std::size_t>(std::upper_bound(te.begin(), te.end(), t) - te.begin());
-        std::size_t ip = static_cast<std::size_t>(std::upper_bound(pe.begin(), pe.end(), p) - pe.begin());
-        it = std::min(std::max<std::size_t>(it, 1), nt()) - 1;
-        ip = std::min(std::max<std::size_t>(ip, 1), np()) - 1;
-        return static_cast<long>(it * np() + ip);
-    }
-};
-
-void finish_edges(std::vector<double> &e, double lo, double hi) {
-    std::sort(e.begin(), e.end());
-    std::vector<double> out;
-    for (double v : e)
-        if (v >= lo && v <= hi && (out.empty() || v - out.back() > 1e-13)) out.push_back(v);
-    out.front() = lo;
-    if (hi - out.back() <= 1e-13) out.back() = hi;
-    else out.push_back(hi);
-    e.swap(out);
-}
-
-// The extent of the specular lobe in (θ, φ'): half vectors on the rings tanδ·(cos t, sin t) =
-// k·(αx cos t', αy sin t'), k = 0..4 (E = e^-16 on the outer ring), mapped to wi = 2(wo·h)h − wo
-// exactly as the sampler maps them. This follows the lobe where a fixed width would not: at
-// grazing wo the lobe is compressed in φ by cos θo, and an anisotropic lobe is narrow along
-// one tangent axis only.
-struct LobeBox {
-    double th_lo = 0, th_hi = 0, ph_lo = 0, ph_hi = 0;
-};
-LobeBox lobe_box(const Config &cfg, double ax, double ay) {
-    const V3 wo = v3(dir(cfg.cos_o, cfg.phi_o));
-    LobeBox b{1e9, -1e9, 1e9, -1e9};
-    for (int k = 0; k <= 4; ++k)
-        for (int j = 0; j < 256; ++j) {
-            const double t = 2 * kPi * j / 256;
-            V3 h{ax * k * std::cos(t), ay * k * std::sin(t), 1.0};
-            normalize(h);
-            const double oh = dot(wo, h);
-            const V3 wi = add(scale(h, 2 * oh), scale(wo, -1));
-            const double th = wi.z <= 0 ? kPi / 2 : std::atan2(std::hypot(wi.x, wi.y), wi.z);
-            double ph = std::fmod(std::atan2(wi.y, wi.x) - cfg.phi_o, 2 * kPi);
-            if (ph < 0) ph += 2 * kPi;
-            b.th_lo = std::min(b.th_lo, th);
-            b.th_hi = std::max(b.th_hi, th);
-            if (th > 1e-9) {
-                b.ph_lo = std::min(b.ph_lo, ph);
-                b.ph_hi = std::max(b.ph_hi, ph);
-            }
-        }
-    return b;
-}
-
-Grid make_grid(const Config &cfg, double ax, double ay, bool specular) {
-    Grid g;
-    g.phi_o = cfg.phi_o;
-    const int coarse_t = 32, coarse_p = 64, fine = 40;
-    for (int i = 0; i <= coarse_t; ++i) g.te.push_back(static_cast<double>(i) / coarse_t);
-    for (int i = 0; i <= coarse_p; ++i) g.pe.push_back(2 * kPi * i / coarse_p);
-    if (specular) {
-        const LobeBox b = lobe_box(cfg, ax, ay);
-        const double mt = 0.05 * (b.th_hi - b.th_lo), mp = 0.05 * (b.ph_hi - b.ph_lo);
-        if (b.th_hi - b.th_lo < 1.0) {
-            const double lo = std::max(b.th_lo - mt, 0.0), hi = std::min(b.th_hi + mt, kPi / 2);
-            for (int i = 0; i <= fine; ++i) {
-                const double th = lo + (hi - lo) * i / fine, sh = std::sin(0.5 * th);
-                g.te.push_back(2 * sh * sh);  // 1 − cos θ
-            }
-        }
-        if (b.ph_hi - b.ph_lo < 2.0) {
-            const double lo = std::max(b.ph_lo - mp, 0.0), hi = std::min(b.ph_hi + mp, 2 * kPi);
-            for (int i = 0; i <= fine; ++i) g.pe.push_back(lo + (hi - lo) * i / fine);
-        }
-    }
-    finish_edges(g.te, 0, 1);
-    finish_edges(g.pe, 0, 2 * kPi);
-    return g;
-}
-
-// Direction at grid coordinates (t, φ').
-V3 grid_dir(const Grid &g, double t, double p) {
-    const double c = 1 - t, s = std::sqrt(std::max(0.0, t * (2 - t)));
-    return {s * std::cos(p + g.phi_o), s * std::sin(p + g.phi_o), c};
-}
-
-// Expected probability of every cell (row-major, t then φ') and its total, by cubature of pdf.
-template <class Pdf>
-std::vector<double> cell_probabilities(const Grid &g, const Pdf &pdf, double &mass, Cubature &cub) {
-    std::vector<double> prob(g.cells());
-    mass = 0;
-    for (std::size_t it = 0; it < g.nt(); ++it)
-        for (std::size_t ip = 0; ip < g.np(); ++ip) {
-            const double v = cub.integrate([&](double t, double p) { return pdf(grid_dir(g, t, p)); }, g.te[it],
-                                           g.te[it + 1], g.pe[ip], g.pe[ip + 1]);
-            prob[it * g.np() + ip] = v;
-            mass += v;
-        }
-    return prob;
-}
-
-// ---------------------------------------------------------------------------------------
 // The test.
 // ---------------------------------------------------------------------------------------
 struct Outcome {
@@ -421,7 +302,7 @@ Outcome run_config(const Config &cfg, const Pdf &pdf, std::size_t n, std::uint64
     pgloss_material m;
     const pgloss_status st = pgloss_material_init(&m, &cfg.phys);
     EXPECT_GE(st, 0) << pgloss_status_name(st);
-    const Grid g = make_grid(cfg, m.alpha_x, m.alpha_y, (cfg.mask & m.lobes & PGLOSS_LOBE_SPECULAR) != 0);
+    const Grid g = make_grid(cfg.cos_o, cfg.phi_o, m.alpha_x, m.alpha_y, (cfg.mask & m.lobes & PGLOSS_LOBE_SPECULAR) != 0);
     std::vector<double> hist(g.cells(), 0.0);
     draw(cfg, m, g, n, seed, hist, o);
 
@@ -435,7 +316,7 @@ Outcome run_config(const Config &cfg, const Pdf &pdf, std::size_t n, std::uint64
     cub.count_tol = 0.01 / std::sqrt(static_cast<double>(n));
     cub.max_depth = 5;
     double mass = 0;
-    const std::vector<double> prob = cell_probabilities(g, pdf, mass, cub);
+    const std::vector<double> prob = cell_integrals(g, pdf, mass, cub);
     o.mass = mass;
     o.evaluations = cub.evaluations;
     o.capped = cub.capped;
@@ -473,13 +354,13 @@ TEST(Chi2Stats, GridIntegratesTheLobeToItsClosedForm) {
         const pgloss_physical p = physical(0, 0, 0, 0.9, a, a, PGLOSS_NORM_WARD);
         const Config cfg{"", p, PGLOSS_LOBE_ALL, 1.0, 0.0, false};
         const Ref ref = Ref::from(p);
-        const Grid g = make_grid(cfg, ref.ax, ref.ay, true);
+        const Grid g = make_grid(cfg.cos_o, cfg.phi_o, ref.ax, ref.ay, true);
         Cubature cub;
         cub.abs_tol = 1e-12;
         cub.rel_tol = 1e-9;
         cub.max_depth = 8;
         double mass = 0;
-        cell_probabilities(g, [&](const V3 &wi) { return ref.pdf_d({0, 0, 1}, wi, PGLOSS_LOBE_ALL).pdf; }, mass, cub);
+        cell_integrals(g, [&](const V3 &wi) { return ref.pdf_d({0, 0, 1}, wi, PGLOSS_LOBE_ALL).pdf; }, mass, cub);
         EXPECT_NEAR(mass, 1 - std::exp(-1 / (ref.ax * ref.ax)), 1e-7) << "alpha " << a;
     }
 }
@@ -560,11 +441,11 @@ TEST(Chi2Power, RejectsMissingHalfVectorJacobian) {
         return q.p_spec * 4 * dot(wo, h);
     };
     // Scale the wrong shape to the correct total mass, so that only the shape differs.
-    const Grid g = make_grid(cfg, ref.ax, ref.ay, true);
+    const Grid g = make_grid(cfg.cos_o, cfg.phi_o, ref.ax, ref.ay, true);
     Cubature cub;
     double m_raw = 0, m_ok = 0;
-    cell_probabilities(g, raw, m_raw, cub);
-    cell_probabilities(g, [&](const V3 &wi) { return ref.pdf_d(wo, wi, PGLOSS_LOBE_ALL).pdf; }, m_ok, cub);
+    cell_integrals(g, raw, m_raw, cub);
+    cell_integrals(g, [&](const V3 &wi) { return ref.pdf_d(wo, wi, PGLOSS_LOBE_ALL).pdf; }, m_ok, cub);
     auto wrong = [&](const V3 &wi) { return raw(wi) * m_ok / m_raw; };
     const Outcome o = run_config(cfg, wrong, scaled(200000, 20000), 79);
     std::printf("[chi2-power] pdf without 1/(4 wo.h): chi2=%.1f dof=%d p=%.3g\n", o.stat, o.dof, o.p);

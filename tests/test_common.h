@@ -458,6 +458,125 @@ private:
     }
 };
 // ---------------------------------------------------------------------------------------
+// The histogram grid, in (t, φ') with t = 1 − cos θ ∈ [0, 1] (dω = dt dφ; t keeps full
+// precision near the normal) and φ' = φ − φo ∈ [0, 2π) (the mirror direction is at φ' = π,
+// so the refined band never wraps). Uniform coarse edges in cos θ (32) and φ (64), plus 40
+// fine edges uniform in θ and in φ over the lobe's extent (LobeBox below: where the pdf
+// falls to e^-16 of its peak), when that extent is narrower than 1 rad in θ / 2 rad in φ.
+// ---------------------------------------------------------------------------------------
+struct Grid {
+    std::vector<double> te, pe;
+    double phi_o = 0;
+    std::size_t nt() const { return te.size() - 1; }
+    std::size_t np() const { return pe.size() - 1; }
+    std::size_t cells() const { return nt() * np(); }
+    // Cell of a (float) direction, or -1 at or below the horizon.
+    long cell(double x, double y, double z) const {
+        const double r2 = x * x + y * y, l = std::sqrt(r2 + z * z);
+        const double c = z / l;
+        if (!(c > 0)) return -1;
+        const double t = c > 0.5 ? (r2 / (l * l)) / (1 + c) : 1 - c;  // 1 − cos θ without cancellation
+        double p = std::atan2(y, x) - phi_o;
+        p = std::fmod(p, 2 * kPi);
+        if (p < 0) p += 2 * kPi;
+        std::size_t it = static_cast<std::size_t>(std::upper_bound(te.begin(), te.end(), t) - te.begin());
+        std::size_t ip = static_cast<std::size_t>(std::upper_bound(pe.begin(), pe.end(), p) - pe.begin());
+        it = std::min(std::max<std::size_t>(it, 1), nt()) - 1;
+        ip = std::min(std::max<std::size_t>(ip, 1), np()) - 1;
+        return static_cast<long>(it * np() + ip);
+    }
+};
+
+inline void finish_edges(std::vector<double> &e, double lo, double hi) {
+    std::sort(e.begin(), e.end());
+    std::vector<double> out;
+    for (double v : e)
+        if (v >= lo && v <= hi && (out.empty() || v - out.back() > 1e-13)) out.push_back(v);
+    out.front() = lo;
+    if (hi - out.back() <= 1e-13) out.back() = hi;
+    else out.push_back(hi);
+    e.swap(out);
+}
+
+// The extent of the specular lobe in (θ, φ'): half vectors on the rings tanδ·(cos t, sin t) =
+// k·(αx cos t', αy sin t'), k = 0..4 (E = e^-16 on the outer ring), mapped to wi = 2(wo·h)h − wo
+// exactly as the sampler maps them. This follows the lobe where a fixed width would not: at
+// grazing wo the lobe is compressed in φ by cos θo, and an anisotropic lobe is narrow along
+// one tangent axis only.
+struct LobeBox {
+    double th_lo = 0, th_hi = 0, ph_lo = 0, ph_hi = 0;
+};
+inline LobeBox lobe_box(double cos_o, double phi_o, double ax, double ay) {
+    const V3 wo = v3(dir(cos_o, phi_o));
+    LobeBox b{1e9, -1e9, 1e9, -1e9};
+    for (int k = 0; k <= 4; ++k)
+        for (int j = 0; j < 256; ++j) {
+            const double t = 2 * kPi * j / 256;
+            V3 h{ax * k * std::cos(t), ay * k * std::sin(t), 1.0};
+            normalize(h);
+            const double oh = dot(wo, h);
+            const V3 wi = add(scale(h, 2 * oh), scale(wo, -1));
+            const double th = wi.z <= 0 ? kPi / 2 : std::atan2(std::hypot(wi.x, wi.y), wi.z);
+            double ph = std::fmod(std::atan2(wi.y, wi.x) - phi_o, 2 * kPi);
+            if (ph < 0) ph += 2 * kPi;
+            b.th_lo = std::min(b.th_lo, th);
+            b.th_hi = std::max(b.th_hi, th);
+            if (th > 1e-9) {
+                b.ph_lo = std::min(b.ph_lo, ph);
+                b.ph_hi = std::max(b.ph_hi, ph);
+            }
+        }
+    return b;
+}
+
+inline Grid make_grid(double cos_o, double phi_o, double ax, double ay, bool specular, int coarse_t = 32,
+                      int coarse_p = 64, int fine = 40) {
+    Grid g;
+    g.phi_o = phi_o;
+    for (int i = 0; i <= coarse_t; ++i) g.te.push_back(static_cast<double>(i) / coarse_t);
+    for (int i = 0; i <= coarse_p; ++i) g.pe.push_back(2 * kPi * i / coarse_p);
+    if (specular) {
+        const LobeBox b = lobe_box(cos_o, phi_o, ax, ay);
+        const double mt = 0.05 * (b.th_hi - b.th_lo), mp = 0.05 * (b.ph_hi - b.ph_lo);
+        if (b.th_hi - b.th_lo < 1.0) {
+            const double lo = std::max(b.th_lo - mt, 0.0), hi = std::min(b.th_hi + mt, kPi / 2);
+            for (int i = 0; i <= fine; ++i) {
+                const double th = lo + (hi - lo) * i / fine, sh = std::sin(0.5 * th);
+                g.te.push_back(2 * sh * sh);  // 1 − cos θ
+            }
+        }
+        if (b.ph_hi - b.ph_lo < 2.0) {
+            const double lo = std::max(b.ph_lo - mp, 0.0), hi = std::min(b.ph_hi + mp, 2 * kPi);
+            for (int i = 0; i <= fine; ++i) g.pe.push_back(lo + (hi - lo) * i / fine);
+        }
+    }
+    finish_edges(g.te, 0, 1);
+    finish_edges(g.pe, 0, 2 * kPi);
+    return g;
+}
+
+// Direction at grid coordinates (t, φ').
+inline V3 grid_dir(const Grid &g, double t, double p) {
+    const double c = 1 - t, s = std::sqrt(std::max(0.0, t * (2 - t)));
+    return {s * std::cos(p + g.phi_o), s * std::sin(p + g.phi_o), c};
+}
+
+// ∫∫ pdf(wi) dt dφ over every cell (row-major, t then φ') and the total, by cubature.
+template <class Pdf>
+std::vector<double> cell_integrals(const Grid &g, const Pdf &pdf, double &mass, Cubature &cub) {
+    std::vector<double> prob(g.cells());
+    mass = 0;
+    for (std::size_t it = 0; it < g.nt(); ++it)
+        for (std::size_t ip = 0; ip < g.np(); ++ip) {
+            const double v = cub.integrate([&](double t, double p) { return pdf(grid_dir(g, t, p)); }, g.te[it],
+                                           g.te[it + 1], g.pe[ip], g.pe[ip + 1]);
+            prob[it * g.np() + ip] = v;
+            mass += v;
+        }
+    return prob;
+}
+
+// ---------------------------------------------------------------------------------------
 // Regularised incomplete gamma functions P(a, x) and Q(a, x) = 1 - P (series for
 // x < a + 1, modified Lentz continued fraction otherwise; Numerical Recipes §6.2), and
 // the chi-square survival function.
