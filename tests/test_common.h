@@ -662,9 +662,9 @@ inline float wild_float(Pcg32 &rng) {
     if (kind == 0) return special_float(rng);
     if (kind == 1) return rng.uniform_float();
     if (kind == 2) return static_cast<float>(rng.uniform(-2, 2));
-    double e = rng.uniform(-149.0, 127.999);
-    float v = static_cast<float>(std::ldexp(1.0 + rng.uniform(), static_cast<int>(std::floor(e))));
-    if (!std::isfinite(v)) v = FLT_MAX;
+    const double e = rng.uniform(-149.0, 127.999);
+    const double d = std::ldexp(1.0 + rng.uniform(), static_cast<int>(std::floor(e)));
+    const float v = d >= static_cast<double>(FLT_MAX) ? FLT_MAX : static_cast<float>(d);  // no overflowing cast
     return (rng.next_u32() & 1) ? -v : v;
 }
 inline float nonfinite_float(Pcg32 &rng) {
