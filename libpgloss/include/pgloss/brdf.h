@@ -97,7 +97,8 @@ typedef struct pgloss_material {
 
 /*
  * Validates p and precomputes m. Errors (m becomes black: lobes = 0, eval returns 0):
- *   PGLOSS_ERR_NULL, PGLOSS_ERR_NONFINITE (any NaN/Inf), PGLOSS_ERR_NEGATIVE (ρd or ρs < 0),
+ *   PGLOSS_ERR_NULL, PGLOSS_ERR_NONFINITE (any NaN/Inf, or |value| > FLT_MAX: the material
+ *   stores floats), PGLOSS_ERR_NEGATIVE (ρd or ρs < 0),
  *   PGLOSS_ERR_ALPHA (αx <= 0 or αy <= 0), PGLOSS_ERR_NORMALIZATION.
  * Checked in that order; the first failure is returned. Positive α below PGLOSS_ALPHA_MIN
  * is raised to it. Energy (ρd + ρs > 1) is NOT rejected here — a renderer may want such a
@@ -152,8 +153,7 @@ typedef struct pgloss_sample_record {
  * A rejected sample — wi at or below the horizon, wo·h <= 0, wo below the horizon, no
  * active lobe, or a density that rounds to 0 in float (at most 2^-150; then the returned pdf
  * is 0 and so must the weight be) — returns PGLOSS_OK with pdf = 0 and weight = 0 (wi is
- * still written): the
- * caller ends the path. This is the expected outcome for a fraction of the specular samples
+ * still written): the caller ends the path. This is the expected outcome for a fraction of the specular samples
  * at grazing wo and is what makes pgloss_pdf integrate to less than 1 there.
  */
 pgloss_status pgloss_sample(const pgloss_material *m, pgloss_vec3 wo, const float u[3],
