@@ -489,13 +489,17 @@ struct Grid {
 
 inline void finish_edges(std::vector<double> &e, double lo, double hi) {
     std::sort(e.begin(), e.end());
-    std::vector<double> out;
+    std::vector<double> in;  // interior edges, without duplicates
     for (double v : e)
-        if (v >= lo && v <= hi && (out.empty() || v - out.back() > 1e-13)) out.push_back(v);
-    out.front() = lo;
-    if (hi - out.back() <= 1e-13) out.back() = hi;
-    else out.push_back(hi);
-    e.swap(out);
+        if (v > lo && v < hi && (in.empty() || v - in.back() > 1e-13)) in.push_back(v);
+    // No sliver at the domain ends either: an interior edge closer to an end than half of its
+    // neighbouring cell is dropped.
+    while (in.size() >= 2 && in.front() - lo < 0.5 * (in[1] - in[0])) in.erase(in.begin());
+    while (in.size() >= 2 && hi - in.back() < 0.5 * (in[in.size() - 1] - in[in.size() - 2])) in.pop_back();
+    e.clear();
+    e.push_back(lo);
+    e.insert(e.end(), in.begin(), in.end());
+    e.push_back(hi);
 }
 
 // The extent of the specular lobe in (θ, φ'): half vectors on the rings tanδ·(cos t, sin t) =
@@ -529,6 +533,20 @@ inline LobeBox lobe_box(double cos_o, double phi_o, double ax, double ay) {
     return b;
 }
 
+// Inserts the (sorted) fine edges of a band, removing the coarse edges inside it and within
+// half a fine cell of its ends: otherwise a coarse edge a hair away from a fine one leaves a
+// sliver cell far narrower than the float resolution of the sampled directions (at grazing
+// wo a sharp lobe is only ~100 float ulps wide in φ), whose count is then meaningless.
+inline void add_band(std::vector<double> &e, const std::vector<double> &band) {
+    const double lo = band.front() - 0.5 * (band[1] - band[0]);
+    const double hi = band.back() + 0.5 * (band[band.size() - 1] - band[band.size() - 2]);
+    std::vector<double> kept;
+    for (double v : e)
+        if (v <= lo || v >= hi) kept.push_back(v);
+    kept.insert(kept.end(), band.begin(), band.end());
+    e.swap(kept);
+}
+
 inline Grid make_grid(double cos_o, double phi_o, double ax, double ay, bool specular, int coarse_t = 32,
                       int coarse_p = 64, int fine = 40) {
     Grid g;
@@ -540,14 +558,18 @@ inline Grid make_grid(double cos_o, double phi_o, double ax, double ay, bool spe
         const double mt = 0.05 * (b.th_hi - b.th_lo), mp = 0.05 * (b.ph_hi - b.ph_lo);
         if (b.th_hi - b.th_lo < 1.0) {
             const double lo = std::max(b.th_lo - mt, 0.0), hi = std::min(b.th_hi + mt, kPi / 2);
+            std::vector<double> band;
             for (int i = 0; i <= fine; ++i) {
                 const double th = lo + (hi - lo) * i / fine, sh = std::sin(0.5 * th);
-                g.te.push_back(2 * sh * sh);  // 1 − cos θ
+                band.push_back(2 * sh * sh);  // 1 − cos θ
             }
+            add_band(g.te, band);
         }
         if (b.ph_hi - b.ph_lo < 2.0) {
             const double lo = std::max(b.ph_lo - mp, 0.0), hi = std::min(b.ph_hi + mp, 2 * kPi);
-            for (int i = 0; i <= fine; ++i) g.pe.push_back(lo + (hi - lo) * i / fine);
+            std::vector<double> band;
+            for (int i = 0; i <= fine; ++i) band.push_back(lo + (hi - lo) * i / fine);
+            add_band(g.pe, band);
         }
     }
     finish_edges(g.te, 0, 1);
