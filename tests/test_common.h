@@ -1,7 +1,8 @@
-// Shared helpers of the statistical / consistency / stress tests of libpgloss:
-// a fixed-seed RNG, direction generators, an independent double-precision reference of
-// the formulas documented in pgloss/brdf.h (the test oracle), condition numbers for
-// float tolerances, adaptive quadrature, and the regularised incomplete gamma function.
+// Shared helpers of the statistical / consistency / albedo / stress tests of libpgloss:
+// sample-count scaling for sanitizer builds, a fixed-seed RNG (PCG32), direction and
+// adversarial-value generators, an independent double-precision reference of the formulas
+// documented in pgloss/brdf.h (the test oracle), adaptive quadrature in double, and the
+// regularised incomplete gamma function (chi-square p-values).
 #ifndef PGLOSS_TEST_COMMON_H
 #define PGLOSS_TEST_COMMON_H
 
@@ -12,7 +13,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -25,39 +25,44 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kFloatEps = 1.0 / 16777216.0;  // 2^-24, unit roundoff of float
 
 // ---------------------------------------------------------------------------------------
-// Run-time scale of the sample counts: PGLOSS_TEST_SCALE (e.g. 0.25) if set, otherwise 1
-// in a normal build and 0.25 under AddressSanitizer (the chi-square minimum of 10^6
-// samples is enforced separately in the normal build).
+// Run-time scale of the sample counts. Sanitizer builds run the same tests with fewer
+// samples: PGLOSS_SANITIZED=1 in the environment (scripts/test-core.sh sets it for the
+// ASan/UBSan build) or a compiler that says it instruments (GCC __SANITIZE_ADDRESS__,
+// Clang __has_feature) selects the factor 0.25; PGLOSS_TEST_SCALE=x overrides it (x > 0).
+// The Release build always runs at scale 1 unless PGLOSS_TEST_SCALE says otherwise, and the
+// chi-square test insists on >= 10^6 samples there.
 // ---------------------------------------------------------------------------------------
-inline bool sanitized_build() {
-#if defined(__SANITIZE_ADDRESS__)
-    return true;
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_UNDEFINED__)
+#define PGLOSS_TEST_COMPILED_SANITIZED 1
 #elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-    return true;
-#else
-    return false;
+#if __has_feature(address_sanitizer) || __has_feature(undefined_behavior_sanitizer)
+#define PGLOSS_TEST_COMPILED_SANITIZED 1
 #endif
-#else
-    return false;
 #endif
+#ifndef PGLOSS_TEST_COMPILED_SANITIZED
+#define PGLOSS_TEST_COMPILED_SANITIZED 0
+#endif
+
+inline bool sanitized_build() {
+    const char *s = std::getenv("PGLOSS_SANITIZED");
+    if (s && *s && std::string(s) != "0") return true;
+    return PGLOSS_TEST_COMPILED_SANITIZED != 0;
+}
+
+inline bool scale_overridden() {
+    const char *s = std::getenv("PGLOSS_TEST_SCALE");
+    return s && *s && std::atof(s) > 0.0;
 }
 
 inline double test_scale() {
-    const char *s = std::getenv("PGLOSS_TEST_SCALE");
-    if (s && *s) {
-        double v = std::atof(s);
-        if (v > 0.0 && std::isfinite(v)) return v;
-    }
+    if (scale_overridden()) return std::atof(std::getenv("PGLOSS_TEST_SCALE"));
     return sanitized_build() ? 0.25 : 1.0;
 }
 
 inline std::size_t scaled(std::size_t n, std::size_t minimum = 1) {
-    double v = static_cast<double>(n) * test_scale();
-    std::size_t r = static_cast<std::size_t>(v);
-    return std::max(r, minimum);
+    const double v = static_cast<double>(n) * test_scale();
+    return std::max(static_cast<std::size_t>(v), minimum);
 }
-
 // ---------------------------------------------------------------------------------------
 // RNG: PCG32 (O'Neill 2014, XSH-RR 64/32), seeded through splitmix64.
 // ---------------------------------------------------------------------------------------
@@ -228,9 +233,10 @@ struct Ref {
         bool valid = true;     // false: a direction was zero or non-finite
     };
 
-    Eval eval(pgloss_vec3 wo_f, pgloss_vec3 wi_f, unsigned mask) const {
+    Eval eval(pgloss_vec3 wo_f, pgloss_vec3 wi_f, unsigned mask) const { return eval_d(v3(wo_f), v3(wi_f), mask); }
+
+    Eval eval_d(V3 wo, V3 wi, unsigned mask) const {
         Eval e;
-        V3 wo = v3(wo_f), wi = v3(wi_f);
         if (!normalize(wo) || !normalize(wi)) {
             e.valid = false;
             return e;
@@ -266,9 +272,10 @@ struct Ref {
         bool valid = true;
     };
 
-    Pdf pdf(pgloss_vec3 wo_f, pgloss_vec3 wi_f, unsigned mask) const {
+    Pdf pdf(pgloss_vec3 wo_f, pgloss_vec3 wi_f, unsigned mask) const { return pdf_d(v3(wo_f), v3(wi_f), mask); }
+
+    Pdf pdf_d(V3 wo, V3 wi, unsigned mask) const {
         Pdf p;
-        V3 wo = v3(wo_f), wi = v3(wi_f);
         if (!normalize(wo) || !normalize(wi)) {
             p.valid = false;
             return p;
@@ -365,150 +372,231 @@ struct Ref {
 };
 
 // ---------------------------------------------------------------------------------------
-// Condition numbers. For g(x1..xn) > 0, kappa = sum_k |x_k d ln g / d x_k|, estimated by
-// central differences with relative step 2^-20 in double: a computation whose inputs or
-// intermediates carry relative errors of a few float ulps then differs by ~ulps * kappa.
-// Returns +inf where g vanishes at a perturbed point (a branch/support boundary).
+// Quadrature in double.
 // ---------------------------------------------------------------------------------------
-inline double log_condition(const std::function<double(const std::vector<double> &)> &g,
-                            const std::vector<double> &x) {
-    const double h = 0x1p-20;
-    double g0 = g(x);
-    if (!(g0 > 0)) return 0.0;
-    double kappa = 0;
-    std::vector<double> y = x;
-    for (std::size_t k = 0; k < x.size(); ++k) {
-        if (x[k] == 0) continue;
-        y[k] = x[k] * (1 + h);
-        double gp = g(y);
-        y[k] = x[k] * (1 - h);
-        double gm = g(y);
-        y[k] = x[k];
-        if (!(gp > 0) || !(gm > 0)) return std::numeric_limits<double>::infinity();
-        kappa += std::fabs(std::log(gp) - std::log(gm)) / (2 * h);
-    }
-    return kappa;
-}
-
-// Absolute condition of a (possibly signed) function: sum_k |x_k dg/dx_k|.
-inline double abs_condition(const std::function<double(const std::vector<double> &)> &g,
-                            const std::vector<double> &x) {
-    const double h = 0x1p-20;
-    double c = 0;
-    std::vector<double> y = x;
-    for (std::size_t k = 0; k < x.size(); ++k) {
-        if (x[k] == 0) continue;
-        y[k] = x[k] * (1 + h);
-        double gp = g(y);
-        y[k] = x[k] * (1 - h);
-        double gm = g(y);
-        y[k] = x[k];
-        c += std::fabs(gp - gm) / (2 * h);
-    }
-    return c;
-}
-
-// ---------------------------------------------------------------------------------------
-// Quadrature.
-// ---------------------------------------------------------------------------------------
-// Gauss–Legendre nodes/weights on [-1, 1] (n = 5 and 8), double.
-struct GaussLegendre {
-    std::vector<double> x, w;
-    explicit GaussLegendre(int n) {
-        // Newton iteration on P_n; accurate to double rounding.
-        x.resize(n);
-        w.resize(n);
-        for (int i = 0; i < n; ++i) {
-            double z = std::cos(kPi * (i + 0.75) / (n + 0.5)), pp = 0;
-            for (int it = 0; it < 100; ++it) {
-                double p1 = 1, p2 = 0;
-                for (int j = 1; j <= n; ++j) {
-                    double p3 = p2;
-                    p2 = p1;
-                    p1 = ((2.0 * j - 1) * z * p2 - (j - 1.0) * p3) / j;
-                }
-                pp = n * (z * p1 - p2) / (z * z - 1);
-                double z1 = z;
-                z = z1 - p1 / pp;
-                if (std::fabs(z - z1) < 1e-16) break;
-            }
-            x[i] = z;
-            w[i] = 2 / ((1 - z * z) * pp * pp);
-        }
-    }
-};
-
 // Adaptive 1D Gauss–Kronrod (G7/K15) on [a, b] with absolute tolerance.
-inline double integrate1d(const std::function<double(double)> &f, double a, double b,
-                          double tol, int depth = 0) {
+template <class F>
+double integrate1d(const F &f, double a, double b, double tol, int depth = 0) {
     static const double xk[8] = {0.991455371120812639206854697526329, 0.949107912342758524526189684047851,
                                  0.864864423359769072789712788640926, 0.741531185599394439863864773280788,
                                  0.586087235467691130294144845693013, 0.405845151377397166906606412076961,
-                                 0.207784955007898467600689403773245, 0.000000000000000000000000000000000};
+                                 0.207784955007898467600689403773245, 0.0};
     static const double wk[8] = {0.022935322010529224963732008058970, 0.063092092629978553290700663189204,
                                  0.104790010322250183839876322541518, 0.140653259715525918745189590510238,
                                  0.169004726639267902826583426598550, 0.190350578064785409913256402421014,
                                  0.204432940075298892414161999234649, 0.209482141084727828012999174891714};
     static const double wg[4] = {0.129484966168869693270611432679082, 0.279705391489276667901467771423780,
                                  0.381830050505118944950369775488975, 0.417959183673469387755102040816327};
-    double c = 0.5 * (a + b), h = 0.5 * (b - a);
-    double fc = f(c);
+    const double c = 0.5 * (a + b), h = 0.5 * (b - a);
+    const double fc = f(c);
     double k = wk[7] * fc, g = wg[3] * fc;
     for (int j = 0; j < 7; ++j) {
-        double f1 = f(c - h * xk[j]), f2 = f(c + h * xk[j]);
+        const double f1 = f(c - h * xk[j]), f2 = f(c + h * xk[j]);
         k += wk[j] * (f1 + f2);
         if (j % 2 == 1) g += wg[j / 2] * (f1 + f2);
     }
     k *= h;
     g *= h;
-    if (std::fabs(k - g) <= tol || depth > 40) return k;
+    if (std::fabs(k - g) <= tol || depth > 30) return k;
     return integrate1d(f, a, c, tol / 2, depth + 1) + integrate1d(f, c, b, tol / 2, depth + 1);
 }
 
-// Adaptive 2D tensor Gauss–Legendre cubature on [x0,x1]×[y0,y1]: the whole-cell rule is
-// compared with the sum over its four quadrants; subdivides until they agree to
-// max(abs_tol, rel_tol·|I|). Returns the quadrant sum.
-class Cubature2D {
-public:
-    explicit Cubature2D(int order = 5) : gl_(order) {}
-    double integrate(const std::function<double(double, double)> &f, double x0, double x1, double y0,
-                     double y1, double abs_tol, double rel_tol = 1e-9, int max_depth = 14) const {
-        double whole = rule(f, x0, x1, y0, y1);
-        return refine(f, x0, x1, y0, y1, whole, abs_tol, rel_tol, 0, max_depth);
+// Adaptive 2D cubature on [x0,x1]×[y0,y1]: the 4×4 tensor Gauss–Legendre rule on the whole
+// rectangle is compared with the sum of the rule over its four quadrants; a rectangle is
+// split until the two agree within max(abs_tol, rel_tol·|I|, count_tol·sqrt|I|) (abs_tol
+// quartered per level) or max_depth is reached. Returns the quadrant sum. count_tol serves
+// expected counts N·I: with count_tol = c/sqrt(N) the error is at most c Poisson sigmas.
+//
+// Like every adaptive rule it can be fooled by a feature much narrower than the rectangle
+// (both rules miss it): callers integrate over a grid whose cells are no wider than a few
+// widths of the narrowest feature (the chi-square grid is refined around the lobe), and the
+// tolerances must stay above the noise of the integrand (a float pdf: relative 1e-7), or the
+// refinement runs to max_depth everywhere.
+struct Cubature {
+    double abs_tol = 1e-10, rel_tol = 1e-6, count_tol = 0;
+    int max_depth = 7;
+    long evaluations = 0;
+    long capped = 0;  // rectangles that hit max_depth without meeting the tolerance
+
+    template <class F>
+    double integrate(const F &f, double x0, double x1, double y0, double y1) {
+        return refine(f, x0, x1, y0, y1, rule(f, x0, x1, y0, y1), abs_tol, 0);
     }
-    mutable long evaluations = 0;
 
 private:
-    double rule(const std::function<double(double, double)> &f, double x0, double x1, double y0,
-                double y1) const {
-        double cx = 0.5 * (x0 + x1), hx = 0.5 * (x1 - x0), cy = 0.5 * (y0 + y1), hy = 0.5 * (y1 - y0);
+    template <class F>
+    double rule(const F &f, double x0, double x1, double y0, double y1) {
+        static const double xg[4] = {-0.861136311594052575223946488892809, -0.339981043584856264802665759103245,
+                                     0.339981043584856264802665759103245, 0.861136311594052575223946488892809};
+        static const double wg[4] = {0.347854845137453857373063949221999, 0.652145154862546142626936050778001,
+                                     0.652145154862546142626936050778001, 0.347854845137453857373063949221999};
+        const double cx = 0.5 * (x0 + x1), hx = 0.5 * (x1 - x0), cy = 0.5 * (y0 + y1), hy = 0.5 * (y1 - y0);
         double s = 0;
-        const std::size_t n = gl_.x.size();
-        for (std::size_t i = 0; i < n; ++i) {
+        for (int i = 0; i < 4; ++i) {
             double row = 0;
-            for (std::size_t j = 0; j < n; ++j) row += gl_.w[j] * f(cx + hx * gl_.x[i], cy + hy * gl_.x[j]);
-            s += gl_.w[i] * row;
+            for (int j = 0; j < 4; ++j) row += wg[j] * f(cx + hx * xg[i], cy + hy * xg[j]);
+            s += wg[i] * row;
         }
-        evaluations += static_cast<long>(n * n);
+        evaluations += 16;
         return s * hx * hy;
     }
-    double refine(const std::function<double(double, double)> &f, double x0, double x1, double y0,
-                  double y1, double whole, double abs_tol, double rel_tol, int depth,
-                  int max_depth) const {
-        double cx = 0.5 * (x0 + x1), cy = 0.5 * (y0 + y1);
-        double q[4] = {rule(f, x0, cx, y0, cy), rule(f, cx, x1, y0, cy), rule(f, x0, cx, cy, y1),
-                       rule(f, cx, x1, cy, y1)};
-        double sum = q[0] + q[1] + q[2] + q[3];
-        if (std::fabs(sum - whole) <= std::max(abs_tol, rel_tol * std::fabs(sum)) || depth >= max_depth)
+    template <class F>
+    double refine(const F &f, double x0, double x1, double y0, double y1, double whole, double tol, int depth) {
+        const double cx = 0.5 * (x0 + x1), cy = 0.5 * (y0 + y1);
+        const double q[4] = {rule(f, x0, cx, y0, cy), rule(f, cx, x1, y0, cy), rule(f, x0, cx, cy, y1),
+                             rule(f, cx, x1, cy, y1)};
+        const double sum = q[0] + q[1] + q[2] + q[3];
+        const double a = std::fabs(sum);
+        if (std::fabs(sum - whole) <= std::max(std::max(tol, rel_tol * a), count_tol * std::sqrt(a))) return sum;
+        if (depth >= max_depth) {
+            ++capped;
             return sum;
-        double t = abs_tol / 4;
-        return refine(f, x0, cx, y0, cy, q[0], t, rel_tol, depth + 1, max_depth) +
-               refine(f, cx, x1, y0, cy, q[1], t, rel_tol, depth + 1, max_depth) +
-               refine(f, x0, cx, cy, y1, q[2], t, rel_tol, depth + 1, max_depth) +
-               refine(f, cx, x1, cy, y1, q[3], t, rel_tol, depth + 1, max_depth);
+        }
+        const double t = tol / 4;
+        return refine(f, x0, cx, y0, cy, q[0], t, depth + 1) + refine(f, cx, x1, y0, cy, q[1], t, depth + 1) +
+               refine(f, x0, cx, cy, y1, q[2], t, depth + 1) + refine(f, cx, x1, cy, y1, q[3], t, depth + 1);
     }
-    GaussLegendre gl_;
 };
+// ---------------------------------------------------------------------------------------
+// The histogram grid, in (t, φ') with t = 1 − cos θ ∈ [0, 1] (dω = dt dφ; t keeps full
+// precision near the normal) and φ' = φ − φo ∈ [0, 2π) (the mirror direction is at φ' = π,
+// so the refined band never wraps). Uniform coarse edges in cos θ (32) and φ (64), plus 40
+// fine edges uniform in θ and in φ over the lobe's extent (LobeBox below: where the pdf
+// falls to e^-16 of its peak), when that extent is narrower than 1 rad in θ / 2 rad in φ.
+// ---------------------------------------------------------------------------------------
+struct Grid {
+    std::vector<double> te, pe;
+    double phi_o = 0;
+    std::size_t nt() const { return te.size() - 1; }
+    std::size_t np() const { return pe.size() - 1; }
+    std::size_t cells() const { return nt() * np(); }
+    // Cell of a (float) direction, or -1 at or below the horizon.
+    long cell(double x, double y, double z) const {
+        const double r2 = x * x + y * y, l = std::sqrt(r2 + z * z);
+        const double c = z / l;
+        if (!(c > 0)) return -1;
+        const double t = c > 0.5 ? (r2 / (l * l)) / (1 + c) : 1 - c;  // 1 − cos θ without cancellation
+        double p = std::atan2(y, x) - phi_o;
+        p = std::fmod(p, 2 * kPi);
+        if (p < 0) p += 2 * kPi;
+        std::size_t it = static_cast<std::size_t>(std::upper_bound(te.begin(), te.end(), t) - te.begin());
+        std::size_t ip = static_cast<std::size_t>(std::upper_bound(pe.begin(), pe.end(), p) - pe.begin());
+        it = std::min(std::max<std::size_t>(it, 1), nt()) - 1;
+        ip = std::min(std::max<std::size_t>(ip, 1), np()) - 1;
+        return static_cast<long>(it * np() + ip);
+    }
+};
+
+inline void finish_edges(std::vector<double> &e, double lo, double hi) {
+    std::sort(e.begin(), e.end());
+    std::vector<double> in;  // interior edges, without duplicates
+    for (double v : e)
+        if (v > lo && v < hi && (in.empty() || v - in.back() > 1e-13)) in.push_back(v);
+    // No sliver at the domain ends either: an interior edge closer to an end than half of its
+    // neighbouring cell is dropped.
+    while (in.size() >= 2 && in.front() - lo < 0.5 * (in[1] - in[0])) in.erase(in.begin());
+    while (in.size() >= 2 && hi - in.back() < 0.5 * (in[in.size() - 1] - in[in.size() - 2])) in.pop_back();
+    e.clear();
+    e.push_back(lo);
+    e.insert(e.end(), in.begin(), in.end());
+    e.push_back(hi);
+}
+
+// The extent of the specular lobe in (θ, φ'): half vectors on the rings tanδ·(cos t, sin t) =
+// k·(αx cos t', αy sin t'), k = 0..4 (E = e^-16 on the outer ring), mapped to wi = 2(wo·h)h − wo
+// exactly as the sampler maps them. This follows the lobe where a fixed width would not: at
+// grazing wo the lobe is compressed in φ by cos θo, and an anisotropic lobe is narrow along
+// one tangent axis only.
+struct LobeBox {
+    double th_lo = 0, th_hi = 0, ph_lo = 0, ph_hi = 0;
+};
+inline LobeBox lobe_box(double cos_o, double phi_o, double ax, double ay) {
+    const V3 wo = v3(dir(cos_o, phi_o));
+    LobeBox b{1e9, -1e9, 1e9, -1e9};
+    for (int k = 0; k <= 4; ++k)
+        for (int j = 0; j < 256; ++j) {
+            const double t = 2 * kPi * j / 256;
+            V3 h{ax * k * std::cos(t), ay * k * std::sin(t), 1.0};
+            normalize(h);
+            const double oh = dot(wo, h);
+            const V3 wi = add(scale(h, 2 * oh), scale(wo, -1));
+            const double th = wi.z <= 0 ? kPi / 2 : std::atan2(std::hypot(wi.x, wi.y), wi.z);
+            double ph = std::fmod(std::atan2(wi.y, wi.x) - phi_o, 2 * kPi);
+            if (ph < 0) ph += 2 * kPi;
+            b.th_lo = std::min(b.th_lo, th);
+            b.th_hi = std::max(b.th_hi, th);
+            if (th > 1e-9) {
+                b.ph_lo = std::min(b.ph_lo, ph);
+                b.ph_hi = std::max(b.ph_hi, ph);
+            }
+        }
+    return b;
+}
+
+// Inserts the (sorted) fine edges of a band, removing the coarse edges inside it and within
+// half a fine cell of its ends: otherwise a coarse edge a hair away from a fine one leaves a
+// sliver cell far narrower than the float resolution of the sampled directions (at grazing
+// wo a sharp lobe is only ~100 float ulps wide in φ), whose count is then meaningless.
+inline void add_band(std::vector<double> &e, const std::vector<double> &band) {
+    const double lo = band.front() - 0.5 * (band[1] - band[0]);
+    const double hi = band.back() + 0.5 * (band[band.size() - 1] - band[band.size() - 2]);
+    std::vector<double> kept;
+    for (double v : e)
+        if (v <= lo || v >= hi) kept.push_back(v);
+    kept.insert(kept.end(), band.begin(), band.end());
+    e.swap(kept);
+}
+
+inline Grid make_grid(double cos_o, double phi_o, double ax, double ay, bool specular, int coarse_t = 32,
+                      int coarse_p = 64, int fine = 40) {
+    Grid g;
+    g.phi_o = phi_o;
+    for (int i = 0; i <= coarse_t; ++i) g.te.push_back(static_cast<double>(i) / coarse_t);
+    for (int i = 0; i <= coarse_p; ++i) g.pe.push_back(2 * kPi * i / coarse_p);
+    if (specular) {
+        const LobeBox b = lobe_box(cos_o, phi_o, ax, ay);
+        const double mt = 0.05 * (b.th_hi - b.th_lo), mp = 0.05 * (b.ph_hi - b.ph_lo);
+        if (b.th_hi - b.th_lo < 1.0) {
+            const double lo = std::max(b.th_lo - mt, 0.0), hi = std::min(b.th_hi + mt, kPi / 2);
+            std::vector<double> band;
+            for (int i = 0; i <= fine; ++i) {
+                const double th = lo + (hi - lo) * i / fine, sh = std::sin(0.5 * th);
+                band.push_back(2 * sh * sh);  // 1 − cos θ
+            }
+            add_band(g.te, band);
+        }
+        if (b.ph_hi - b.ph_lo < 2.0) {
+            const double lo = std::max(b.ph_lo - mp, 0.0), hi = std::min(b.ph_hi + mp, 2 * kPi);
+            std::vector<double> band;
+            for (int i = 0; i <= fine; ++i) band.push_back(lo + (hi - lo) * i / fine);
+            add_band(g.pe, band);
+        }
+    }
+    finish_edges(g.te, 0, 1);
+    finish_edges(g.pe, 0, 2 * kPi);
+    return g;
+}
+
+// Direction at grid coordinates (t, φ').
+inline V3 grid_dir(const Grid &g, double t, double p) {
+    const double c = 1 - t, s = std::sqrt(std::max(0.0, t * (2 - t)));
+    return {s * std::cos(p + g.phi_o), s * std::sin(p + g.phi_o), c};
+}
+
+// ∫∫ pdf(wi) dt dφ over every cell (row-major, t then φ') and the total, by cubature.
+template <class Pdf>
+std::vector<double> cell_integrals(const Grid &g, const Pdf &pdf, double &mass, Cubature &cub) {
+    std::vector<double> prob(g.cells());
+    mass = 0;
+    for (std::size_t it = 0; it < g.nt(); ++it)
+        for (std::size_t ip = 0; ip < g.np(); ++ip) {
+            const double v = cub.integrate([&](double t, double p) { return pdf(grid_dir(g, t, p)); }, g.te[it],
+                                           g.te[it + 1], g.pe[ip], g.pe[ip + 1]);
+            prob[it * g.np() + ip] = v;
+            mass += v;
+        }
+    return prob;
+}
 
 // ---------------------------------------------------------------------------------------
 // Regularised incomplete gamma functions P(a, x) and Q(a, x) = 1 - P (series for
@@ -596,9 +684,9 @@ inline float wild_float(Pcg32 &rng) {
     if (kind == 0) return special_float(rng);
     if (kind == 1) return rng.uniform_float();
     if (kind == 2) return static_cast<float>(rng.uniform(-2, 2));
-    double e = rng.uniform(-149.0, 127.999);
-    float v = static_cast<float>(std::ldexp(1.0 + rng.uniform(), static_cast<int>(std::floor(e))));
-    if (!std::isfinite(v)) v = FLT_MAX;
+    const double e = rng.uniform(-149.0, 127.999);
+    const double d = std::ldexp(1.0 + rng.uniform(), static_cast<int>(std::floor(e)));
+    const float v = d >= static_cast<double>(FLT_MAX) ? FLT_MAX : static_cast<float>(d);  // no overflowing cast
     return (rng.next_u32() & 1) ? -v : v;
 }
 inline float nonfinite_float(Pcg32 &rng) {

@@ -63,7 +63,10 @@ pgloss_status pgloss_gloss_from_physical(double rho_d, double rho_s, double alph
         return PGLOSS_ERR_ALPHA;
     double l, cc;
     pgloss_lightness_from_luminance(rho_d, &l);
-    pgloss_contrast_gloss(rho_d, rho_s, &cc);
+    /* ρs + ρd/2 beyond DBL_MAX: NONFINITE (not a silent c = 0). */
+    const pgloss_status cs = pgloss_contrast_gloss(rho_d, rho_s, &cc);
+    if (cs != PGLOSS_OK)
+        return cs;
     *L = l;
     *c = cc;
     *d = 1.0 - alpha; /* eq. 3 */
@@ -90,7 +93,10 @@ pgloss_status pgloss_physical_from_gloss(double L, double c, double d,
         return PGLOSS_ERR_ALPHA;
     double y, s;
     pgloss_luminance_from_lightness(L, &y);          /* eq. 6 */
-    pgloss_specular_from_contrast(y, c, &s);         /* eq. 7 */
+    /* eq. 7; c ≳ 5e102 overflows ρs: NONFINITE, not a silent ρs = 0. */
+    const pgloss_status ss = pgloss_specular_from_contrast(y, c, &s);
+    if (ss != PGLOSS_OK)
+        return ss;
     *rho_d = y;
     *rho_s = s;
     *alpha = 1.0 - d;                                /* eq. 8 */
@@ -142,7 +148,9 @@ pgloss_status pgloss_match_gloss(double rho_d, double rho_s, double L_target,
     if (L_target < 0.0 || L_target > 100.0)
         return PGLOSS_ERR_LIGHTNESS;
     double c, y, s;
-    pgloss_contrast_gloss(rho_d, rho_s, &c);
+    const pgloss_status cs = pgloss_contrast_gloss(rho_d, rho_s, &c);
+    if (cs != PGLOSS_OK)
+        return cs; /* ρs + ρd/2 beyond DBL_MAX */
     pgloss_luminance_from_lightness(L_target, &y);
     const pgloss_status st = pgloss_specular_from_contrast(y, c, &s);
     if (st != PGLOSS_OK)

@@ -30,7 +30,11 @@ pgloss_status pgloss_luminance_from_lightness(double L, double *Y)
         *Y = L / PGLOSS_CIE_KAPPA;
     } else {
         const double t = (L + 16.0) / 116.0;
-        *Y = t * t * t;
+        const double y = t * t * t;
+        /* Finite L* above ~6.6e104 would give Y = +Inf: no finite input may produce Inf. */
+        if (!isfinite(y))
+            return PGLOSS_ERR_NONFINITE;
+        *Y = y;
     }
     return PGLOSS_OK;
 }

@@ -37,11 +37,16 @@ static void sample_half_vector(const pgloss_material *m, double u1, double u2, d
 {
     const double s = sqrt(-log1p(-u1));
     const double t = 2.0 * PGLOSS_PI * u2;
-    const double x = m->alpha_x * s * cos(t), y = m->alpha_y * s * sin(t);
-    const double inv = 1.0 / sqrt(x * x + y * y + 1.0);
+    double x = m->alpha_x * s * cos(t), y = m->alpha_y * s * sin(t), z = 1.0;
+    /* Scale by the largest component before squaring, as pgloss__normalize does, and as the
+     * float batch must (there (α s)² overflows for α ≳ 2e19): the same algorithm in both
+     * paths keeps scalar and batch results together for every α the material accepts. */
+    const double big = fmax(fmax(fabs(x), fabs(y)), 1.0);
+    x /= big; y /= big; z /= big;
+    const double inv = 1.0 / sqrt(x * x + y * y + z * z);
     h[0] = x * inv;
     h[1] = y * inv;
-    h[2] = inv;
+    h[2] = z * inv;
 }
 
 static void reject(pgloss_sample_record *s)
@@ -102,9 +107,13 @@ pgloss_status pgloss_sample(const pgloss_material *m, pgloss_vec3 wo, const floa
         return PGLOSS_OK;
     double f[3], p;
     pgloss__eval_pdf_d(m, active, o, i, f, &p);
-    if (!(p > 0.0))
+    /* Decide rejection on the float pdf that is stored, not on the double one: a density in
+     * (0, FLT_TRUE_MIN/2) rounds to 0, and a sample with pdf 0 must be a rejected sample
+     * (weight 0), never one with a finite weight and a zero pdf (found by test_stress). */
+    const float pf = pgloss__to_float(p);
+    if (!(pf > 0.0f))
         return PGLOSS_OK;
-    s->pdf = pgloss__to_float(p);
+    s->pdf = pf;
     s->weight.r = pgloss__to_float(f[0] * i[2] / p);
     s->weight.g = pgloss__to_float(f[1] * i[2] / p);
     s->weight.b = pgloss__to_float(f[2] * i[2] / p);

@@ -7,7 +7,7 @@ const char *pgloss_status_string(pgloss_status status)
     case PGLOSS_WARN_ALPHA_UNTRUSTED:
         return "alpha > 0.2 (d < 0.8): outside the range the paper trusts; Ward's lobe is not normalised there";
     case PGLOSS_ERR_NULL: return "a required pointer argument is NULL";
-    case PGLOSS_ERR_NONFINITE: return "an input is NaN or infinite (or beyond float range)";
+    case PGLOSS_ERR_NONFINITE: return "an input is NaN or infinite, or so large that a parameter exceeds float range or the result would overflow";
     case PGLOSS_ERR_NEGATIVE: return "a reflectance or gloss value is negative";
     case PGLOSS_ERR_ALPHA: return "alpha <= 0 (d >= 1): the specular lobe has no spread";
     case PGLOSS_ERR_ENERGY:

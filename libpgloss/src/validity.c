@@ -134,5 +134,8 @@ pgloss_status pgloss_perceptual_from_physical(const pgloss_physical *p, pgloss_p
     q->L = lab[0]; q->a = lab[1]; q->b = lab[2];
     q->c = c;
     q->d = 1.0 - alpha;
-    return alpha > PGLOSS_ALPHA_TRUSTED_MAX ? PGLOSS_WARN_ALPHA_UNTRUSTED : PGLOSS_OK;
+    /* The warning asks the same question as pgloss_check_physical: is the wider of the two
+     * spreads beyond the trusted range? (Not the geometric mean used for d.) */
+    return fmax(p->alpha_x, p->alpha_y) > PGLOSS_ALPHA_TRUSTED_MAX ? PGLOSS_WARN_ALPHA_UNTRUSTED
+                                                                   : PGLOSS_OK;
 }

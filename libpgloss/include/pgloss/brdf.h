@@ -11,8 +11,17 @@
  *   - the BRDF is one-sided: if wo.z <= 0 or wi.z <= 0 (after normalisation) the
  *     value and the pdf are 0 and the status is PGLOSS_OK (this is not an error);
  *   - cosines ci = wi.z and co = wo.z in (0, PGLOSS_COS_MIN) are raised to PGLOSS_COS_MIN
- *     in the specular normalisation factors and in the specular pdf's denominator (where
- *     h.z is replaced by max(ci, COS_MIN) + max(co, COS_MIN)); the exponent uses the true h.
+ *     in the specular normalisation factors and in the specular pdf's denominator; the
+ *     exponent E uses the true h. Precisely, with h = wo + wi (unnormalised, unit wo and wi)
+ *     and hzc = max(ci, COS_MIN) + max(co, COS_MIN) (= h.z when both cosines >= COS_MIN):
+ *       WARD, WARD_DUR   ci, co in the denominators below are max(ci, COS_MIN), max(co, COS_MIN);
+ *       BOUNDED          (h.z)^4 in the denominator is hzc^4 (h·h uses the true h);
+ *       pdf (every normalisation; it does not depend on the normalisation)
+ *                        p_spec = E (h·h) / (2π αx αy hzc³), which equals pgloss_pdf's
+ *                        formula below (wo·ĥ ĥz³ = h.z³ / (2 h·h) for unit wo, wi) when both
+ *                        cosines >= COS_MIN, and is otherwise that formula with h.z -> hzc
+ *                        (hzc - h.z < 2·COS_MIN, so the relative change is below
+ *                        6·COS_MIN/h.z, and the value stays finite as both cosines -> 0⁺).
  *     Outputs are finally clamped to at most FLT_MAX. So no finite input overflows to Inf;
  *   - eval returns the BRDF f, without the cosine factor.
  *
@@ -88,7 +97,8 @@ typedef struct pgloss_material {
 
 /*
  * Validates p and precomputes m. Errors (m becomes black: lobes = 0, eval returns 0):
- *   PGLOSS_ERR_NULL, PGLOSS_ERR_NONFINITE (any NaN/Inf), PGLOSS_ERR_NEGATIVE (ρd or ρs < 0),
+ *   PGLOSS_ERR_NULL, PGLOSS_ERR_NONFINITE (any NaN/Inf, or |value| > FLT_MAX: the material
+ *   stores floats), PGLOSS_ERR_NEGATIVE (ρd or ρs < 0),
  *   PGLOSS_ERR_ALPHA (αx <= 0 or αy <= 0), PGLOSS_ERR_NORMALIZATION.
  * Checked in that order; the first failure is returned. Positive α below PGLOSS_ALPHA_MIN
  * is raised to it. Energy (ρd + ρs > 1) is NOT rejected here — a renderer may want such a
@@ -130,17 +140,20 @@ typedef struct pgloss_sample_record {
 } pgloss_sample_record;
 
 /*
- * Draws wi given wo from three uniform numbers u[0..2] in [0, 1) (values outside are clamped
- * to [0, 1 - 2^-24]; NaN is PGLOSS_ERR_RANDOM):
+ * Draws wi given wo from three uniform numbers u[0..2] in [0, 1). Values outside are clamped
+ * to [0, 1 - 2^-24] — negative values and -Inf to 0, values >= 1 and +Inf to 1 - 2^-24 — with
+ * status PGLOSS_OK; only NaN is an error (PGLOSS_ERR_RANDOM, outputs as for a rejected sample):
  *   lobe:     specular if u[0] < Ps, else diffuse;
  *   diffuse:  cosine-weighted, Shirley–Chiu concentric map of (u[1], u[2]) onto the disk,
  *             lifted to the hemisphere (Malley's method);
  *   specular: t = 2π u[2], s = sqrt(-log(1 - u[1])),
- *             h = normalize(αx s cos t, αy s sin t, 1)   (Walter 2005's half-vector density),
+ *             h = normalize(αx s cos t, αy s sin t, 1)   (Walter 2005's half-vector density;
+ *             normalised after dividing by its largest component, so any α <= FLT_MAX works),
  *             wi = 2 (wo·h) h - wo.
- * A rejected sample — wi at or below the horizon, wo·h <= 0, wo below the horizon, or no
- * active lobe — returns PGLOSS_OK with pdf = 0 and weight = 0 (wi is still written): the
- * caller ends the path. This is the expected outcome for a fraction of the specular samples
+ * A rejected sample — wi at or below the horizon, wo·h <= 0, wo below the horizon, no
+ * active lobe, or a density that rounds to 0 in float (at most 2^-150; then the returned pdf
+ * is 0 and so must the weight be) — returns PGLOSS_OK with pdf = 0 and weight = 0 (wi is
+ * still written): the caller ends the path. This is the expected outcome for a fraction of the specular samples
  * at grazing wo and is what makes pgloss_pdf integrate to less than 1 there.
  */
 pgloss_status pgloss_sample(const pgloss_material *m, pgloss_vec3 wo, const float u[3],

@@ -11,6 +11,9 @@
  *
  * All functions are in double: they run once per material, not per sample. Every
  * function returns a status; on an error the outputs are 0 unless stated otherwise.
+ * No finite input gives a NaN or Inf output: where a finite input would overflow double
+ * (L* > 6.6e104, c > ~5e102 in eq. 7, ρs + ρd/2 > DBL_MAX, differences beyond DBL_MAX in
+ * eq. 5, ...) the function returns PGLOSS_ERR_NONFINITE with the fallback outputs.
  * For a coloured diffuse, ρd in eqs. 4, 6, 7 is its luminance Y (Rec. 709 weights).
  */
 #ifndef PGLOSS_PERCEPTUAL_H
@@ -47,7 +50,8 @@ typedef struct pgloss_perceptual {
  * Y >= 0 (Y > 1 gives L > 100). Errors: NULL, NONFINITE, NEGATIVE. */
 pgloss_status pgloss_lightness_from_luminance(double Y, double *L);
 
-/* Y from L*: Y = L/κ if L <= κε (= 8), else ((L + 16)/116)³. L >= 0. Errors: NULL, NONFINITE,
+/* Y from L*: Y = L/κ if L <= κε (= 8), else ((L + 16)/116)³. L >= 0 (L > 100 gives Y > 1).
+ * Errors: NULL, NONFINITE (also for finite L above ~6.6e104, where Y would overflow; Y = 0),
  * LIGHTNESS (L < 0). */
 pgloss_status pgloss_luminance_from_lightness(double L, double *Y);
 
@@ -58,14 +62,15 @@ pgloss_status pgloss_contrast_gloss(double rho_d, double rho_s, double *c);
 /* Eq. 7, computed as c (c² + 3cB + 3B²), B = cbrt(ρd/2). Errors: NULL, NONFINITE, NEGATIVE. */
 pgloss_status pgloss_specular_from_contrast(double rho_d, double c, double *rho_s);
 
-/* Eqs. 3, 4 and L* of ρd, for an achromatic paint. Errors: NULL, NONFINITE, NEGATIVE, ALPHA
- * (α <= 0); warning ALPHA_UNTRUSTED (α > 0.2). */
+/* Eqs. 3, 4 and L* of ρd, for an achromatic paint. Errors: NULL, NONFINITE (also when
+ * ρs + ρd/2 overflows, as in pgloss_contrast_gloss), NEGATIVE, ALPHA (α <= 0); warning
+ * ALPHA_UNTRUSTED (α > 0.2). */
 pgloss_status pgloss_gloss_from_physical(double rho_d, double rho_s, double alpha,
                                          double *L, double *c, double *d);
 
-/* Eqs. 6, 7, 8. Errors: NULL, NONFINITE, LIGHTNESS (L outside [0, 100]), NEGATIVE (c < 0),
- * ALPHA (d >= 1); warning ALPHA_UNTRUSTED (d < 0.8). No envelope check here
- * (see pgloss_check_perceptual). */
+/* Eqs. 6, 7, 8. Errors: NULL, NONFINITE (also for a finite c so large that ρs overflows),
+ * LIGHTNESS (L outside [0, 100]), NEGATIVE (c < 0), ALPHA (d >= 1); warning ALPHA_UNTRUSTED
+ * (d < 0.8). No envelope check here (see pgloss_check_perceptual). */
 pgloss_status pgloss_physical_from_gloss(double L, double c, double d,
                                          double *rho_d, double *rho_s, double *alpha);
 
@@ -123,7 +128,10 @@ pgloss_status pgloss_physical_from_perceptual(const pgloss_perceptual *q,
 /*
  * The inverse: L*a*b* of ρd, c from eq. 4 with Y = luminance(ρd), d = 1 - α where
  * α = sqrt(αx αy) (the geometric mean: an extension for anisotropic lobes, which the paper
- * did not study). Errors: NULL, NONFINITE, NEGATIVE, ALPHA; warning ALPHA_UNTRUSTED.
+ * did not study). Errors: NULL, NONFINITE, NEGATIVE, ALPHA; warning ALPHA_UNTRUSTED when
+ * max(αx, αy) > 0.2 — the same test as pgloss_check_physical, not the geometric mean (a lobe
+ * is outside the trusted range as soon as one of its spreads is), so d >= 0.8 may come with
+ * the warning for an anisotropic lobe.
  */
 pgloss_status pgloss_perceptual_from_physical(const pgloss_physical *p, pgloss_perceptual *q);
 

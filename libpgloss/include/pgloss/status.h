@@ -21,7 +21,10 @@ typedef enum pgloss_status {
 
     /* Errors (< 0): the outputs hold the documented fallback. */
     PGLOSS_ERR_NULL = -1,              /* a required pointer argument is NULL */
-    PGLOSS_ERR_NONFINITE = -2,         /* an input is NaN or ±Inf */
+    PGLOSS_ERR_NONFINITE = -2,         /* an input is NaN or ±Inf, or is finite but beyond the
+                                          range the function can represent: a float material
+                                          parameter above FLT_MAX, or a double input whose
+                                          result would overflow to ±Inf (e.g. L* > 6.6e104) */
     PGLOSS_ERR_NEGATIVE = -3,          /* a reflectance (ρd, ρs, Y, c) is negative */
     PGLOSS_ERR_ALPHA = -4,             /* α ≤ 0 (equivalently d ≥ 1) */
     PGLOSS_ERR_ENERGY = -5,            /* ρd + ρs > 1 in some channel: the paint reflects more than it receives */
@@ -31,7 +34,8 @@ typedef enum pgloss_status {
     PGLOSS_ERR_DIRECTION = -9,         /* a direction is zero-length or not finite */
     PGLOSS_ERR_NORMALIZATION = -10,    /* unknown pgloss_normalization value */
     PGLOSS_ERR_ARGUMENT = -11,         /* another argument is out of its domain (documented per function) */
-    PGLOSS_ERR_RANDOM = -12            /* a random number is NaN (finite values are clamped to [0, 1)) */
+    PGLOSS_ERR_RANDOM = -12            /* a random number is NaN (every other value, ±Inf
+                                          included, is clamped to [0, 1 - 2^-24]) */
 } pgloss_status;
 
 /* A static, human-readable English sentence naming the reason; never NULL. */
