@@ -270,7 +270,8 @@ PGLOSS_INLINE void sample_loop(const pgloss__batch_consts *restrict k, const uns
         for (size_t j = 0; j < m; ++j) {
             const float p = pdfs[base + j];
             const int good = ok[j] & (p > 0.0f);
-            const float inv_p = iz[j] / (good ? p : 1.0f);
+            /* Clamped, so that f = 0 at a subnormal pdf gives 0 (not 0·Inf). */
+            const float inv_p = pgloss__minf(iz[j] / (good ? p : 1.0f), FLT_MAX);
             pdfs[base + j] = good ? p : 0.0f;
             wr[base + j] = good ? pgloss__minf(wr[base + j] * inv_p, FLT_MAX) : 0.0f;
             wg[base + j] = good ? pgloss__minf(wg[base + j] * inv_p, FLT_MAX) : 0.0f;
