@@ -11,23 +11,19 @@
 #define PGLOSS_PI 3.14159265358979323846
 #define PGLOSS_INV_PI 0.31830988618379067154
 
-/* Normalises v into out (double). Scaling by the largest component first keeps
- * lengths from 1e-45 to 3e38 exact-ish and overflow-free. Returns 0 for a zero or
- * non-finite vector (out is then set to 0). */
+/* Normalises v into out (double). The components are floats, so their squares can neither
+ * overflow nor underflow in double (3.4e38² · 3 < DBL_MAX, (1.4e-45)² > DBL_MIN): no scaling
+ * is needed, and the result is within an ulp of double. Returns 0 for a zero or non-finite
+ * vector (out is then set to 0); a NaN or Inf component makes the sum NaN or Inf. */
 static inline int pgloss__normalize(pgloss_vec3 v, double out[3])
 {
-    double x = v.x, y = v.y, z = v.z;
-    if (!isfinite(x) || !isfinite(y) || !isfinite(z)) { /* fmax below would skip a NaN */
+    const double x = v.x, y = v.y, z = v.z;
+    const double l2 = x * x + y * y + z * z;
+    if (!(l2 > 0.0) || !(l2 <= DBL_MAX)) {
         out[0] = out[1] = out[2] = 0.0;
         return 0;
     }
-    double m = fmax(fabs(x), fmax(fabs(y), fabs(z)));
-    if (!(m > 0.0) || !isfinite(m)) {
-        out[0] = out[1] = out[2] = 0.0;
-        return 0;
-    }
-    x /= m; y /= m; z /= m;
-    double inv = 1.0 / sqrt(x * x + y * y + z * z);
+    const double inv = 1.0 / sqrt(l2);
     out[0] = x * inv; out[1] = y * inv; out[2] = z * inv;
     return 1;
 }
