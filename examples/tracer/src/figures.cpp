@@ -69,7 +69,7 @@ void render_fig4(const FigureOptions &o) {
                 total.seconds += st.seconds, total.rays += st.rays, total.samples += st.samples;
                 write_exr(img, o.out_dir + "/fig4/" + id + ".exr");
                 std::ostringstream label;
-                label << paint.name << " \u03c1d " << fmt(paint.rho_d) << "\n\u03c1s " << fmt(rs) << "  \u03b1 " << fmt(a);
+                label << paint.name << " rho_d " << fmt(paint.rho_d) << "\nrho_s " << fmt(rs) << "  alpha " << fmt(a);
                 cells.push_back({display_image(img, sc.tonemap), label.str()});
             }
     std::ostringstream title;
@@ -97,7 +97,7 @@ void render_fig12(const FigureOptions &o) {
         double L, c, d;
         pgloss_gloss_from_physical(paint.rho_d, rs0, a0, &L, &c, &d);
         std::ostringstream lt;
-        lt << paint.name << " \u03c1s " << fmt(rs0) << " \u03b1 " << fmt(a0) << "\nc " << fmt(c) << "  d " << fmt(d);
+        lt << paint.name << " rho_s " << fmt(rs0) << " alpha " << fmt(a0) << "\nc " << fmt(c) << "  d " << fmt(d);
         top.push_back({display_image(img, sc.tonemap), lt.str()});
         // Bottom: same perceptual gloss (c, d) as the white paint, at this paint's lightness.
         double Lt, rd_m, rs_m;
@@ -108,7 +108,7 @@ void render_fig12(const FigureOptions &o) {
         img = render_with(sc, ward(rd_m, rs_m, 1.0 - d0), s, o, "fig12 " + id, nullptr);
         write_exr(img, o.out_dir + "/fig12/" + id + ".exr");
         std::ostringstream lb;
-        lb << paint.name << " \u03c1s " << fmt(rs_m) << " \u03b1 " << fmt(1.0 - d0) << "\nc " << fmt(c0) << "  d " << fmt(d0);
+        lb << paint.name << " rho_s " << fmt(rs_m) << " alpha " << fmt(1.0 - d0) << "\nc " << fmt(c0) << "  d " << fmt(d0);
         bottom.push_back({display_image(img, sc.tonemap), lb.str()});
     }
     std::vector<SheetCell> cells = top;

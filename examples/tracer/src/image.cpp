@@ -87,13 +87,13 @@ void write_png(const Image &disp, const std::string &path) {
 Image contact_sheet(const std::vector<SheetCell> &cells, int columns, const std::string &title) {
     if (cells.empty()) return {};
     const int cw = cells[0].display.width, ch = cells[0].display.height;
-    const int pad = 6, font = std::max(10, cw / 11), label_h = 2 * font + 6, title_h = font + 16;
+    const int pad = 6, font = std::max(10, cw / 13), label_h = 2 * font + 6, title_h = font + 16;
     const int rows = (int(cells.size()) + columns - 1) / columns;
     const int W = pad + columns * (cw + pad), H = title_h + rows * (ch + label_h + pad);
     OIIO::ImageBuf sheet(OIIO::ImageSpec(W, H, 3, OIIO::TypeDesc::FLOAT));
     OIIO::ImageBufAlgo::fill(sheet, {0.08f, 0.08f, 0.08f});
     const std::string fontname = "DejaVuSans";
-    OIIO::ImageBufAlgo::render_text(sheet, pad, title_h - 8, title, font + 2, fontname, {1.0f, 1.0f, 1.0f});
+    OIIO::ImageBufAlgo::render_text(sheet, pad, title_h - 8, title, font, fontname, {1.0f, 1.0f, 1.0f});
     for (size_t i = 0; i < cells.size(); ++i) {
         int col = int(i) % columns, row = int(i) / columns;
         int x = pad + col * (cw + pad), y = title_h + row * (ch + label_h + pad);
