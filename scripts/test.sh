@@ -7,4 +7,5 @@ cd "$(dirname "$0")/.."
 export PGLOSS_REQUIRE_ALL="${PGLOSS_REQUIRE_ALL:-1}"
 start=$SECONDS
 bash scripts/test-core.sh
+bash scripts/test-tracer.sh
 echo "== every test passed ($((SECONDS - start)) s)"

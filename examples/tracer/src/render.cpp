@@ -349,6 +349,7 @@ Image Renderer::render(const RenderSettings &s, const RenderOptions &opt, Render
     const int ntiles = tiles_x * tiles_y;
     int nthreads = opt.threads > 0 ? opt.threads : int(std::max(1u, std::thread::hardware_concurrency()));
     std::vector<double> sum(size_t(w) * size_t(h) * 3, 0.0);
+    std::vector<double> sum2(opt.variance ? sum.size() : 0, 0.0);
     Image img;
     img.width = w, img.height = h;
     img.rgb.assign(sum.size(), 0.0f);
@@ -402,12 +403,14 @@ Image Renderer::render(const RenderSettings &s, const RenderOptions &opt, Render
                     for (int x = x0; x < x1; ++x) {
                         std::uint64_t pix = std::uint64_t(y) * std::uint64_t(w) + std::uint64_t(x);
                         double *acc = &sum[3 * pix];
+                        double *acc2 = sum2.empty() ? nullptr : &sum2[3 * pix];
                         for (int k = s0; k < s1; ++k) {
                             Rng rng(s.seed, pix, std::uint64_t(k));
                             float jx = rng.uniform(), jy = rng.uniform();
                             glm::vec3 c = impl_->trace(float(x) + jx, float(y) + jy, w, h, s.mode, s.max_depth, rng, local_rays);
                             if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z))) c = glm::vec3(0);
                             acc[0] += c.x, acc[1] += c.y, acc[2] += c.z;
+                            if (acc2) acc2[0] += double(c.x) * c.x, acc2[1] += double(c.y) * c.y, acc2[2] += double(c.z) * c.z;
                         }
                     }
                 rays += local_rays;
@@ -432,6 +435,16 @@ Image Renderer::render(const RenderSettings &s, const RenderOptions &opt, Render
         }
     }
     for (size_t i = 0; i < sum.size(); ++i) img.rgb[i] = spp_done > 0 ? float(sum[i] / spp_done) : 0.0f;
+    if (opt.variance) {
+        Image &v = *opt.variance;
+        v.width = w, v.height = h;
+        v.rgb.assign(sum.size(), 0.0f);
+        if (spp_done > 1)
+            for (size_t i = 0; i < sum.size(); ++i) {
+                double n = spp_done, m = sum[i] / n;
+                v.rgb[i] = float(std::max(0.0, (sum2[i] / n - m * m)) / (n - 1));
+            }
+    }
     st.seconds = elapsed();
     if (tty) print_progress(true);
     if (stats_out) *stats_out = st;

@@ -46,6 +46,9 @@ struct RenderOptions {
     int max_pass_spp = 16;     // samples per pixel per progressive pass, at most
     // Called after each pass with the running mean image; return false to stop early.
     std::function<bool(const Image &, const RenderStats &)> on_pass;
+    // If set, receives per pixel and channel the estimated variance of the pixel's mean
+    // (sample variance / spp): what the tests need for z-scores.
+    Image *variance = nullptr;
 };
 
 // Region of the pixel centre's first hit, for comparisons per region (POV-Ray test).
