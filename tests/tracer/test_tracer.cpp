@@ -401,3 +401,40 @@ TEST(DirectLight, SphereMatchesQuadrature) {
     EXPECT_LT(std::fabs(sum_t - sum_q) / sum_q, 0.005);
     EXPECT_LT(max_rel, 5.0);
 }
+
+// ---------------------------------------------------------------- display pipeline
+
+TEST(Display, OcioConfigIsTheSrgbTransferFunction) {
+    // IEC 61966-2-1: 12.92 x below 0.0031308, else 1.055 x^(1/2.4) - 0.055. The tone map is made
+    // transparent here (limit 1e30: s(x) = x to float precision).
+    pgt::ToneMap tm{1.0f, 1e30f, 2.0f};
+    pgt::Image lin;
+    lin.width = 6, lin.height = 1;
+    const float xs[6] = {0.0f, 0.001f, 0.0031308f, 0.18f, 0.5f, 1.0f};
+    for (float x : xs) lin.rgb.insert(lin.rgb.end(), {x, x, x});
+    pgt::Image d = pgt::display_image(lin, tm);
+    for (int i = 0; i < 6; ++i) {
+        double x = xs[i], e = x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1 / 2.4) - 0.055;
+        EXPECT_NEAR(d.rgb[size_t(3 * i)], e, 2e-4) << "x = " << x;
+    }
+}
+
+TEST(Display, SigmoidLeavesSmallSignalsAndLimitsLargeOnes) {
+    // The two properties of THG99's sigmoid (their abstract): no effect on small signals,
+    // compression of large ones to an asymptotic limit D; and it is increasing.
+    for (float n : {1.0f, 2.0f, 4.0f}) {
+        pgt::ToneMap tm{1.0f, 0.8f, n};
+        EXPECT_NEAR(pgt::tonemap_sigmoid(1e-4f, tm) / 1e-4f, 1.0f, 2e-4f);
+        EXPECT_NEAR(pgt::tonemap_sigmoid(1e7f, tm), 0.8f, 1e-4f);
+        float prev = 0;
+        for (float x = 0.01f; x < 100; x *= 1.1f) {
+            float s = pgt::tonemap_sigmoid(x, tm);
+            if (x < 5) {  // strictly, until float saturates near D
+                EXPECT_GT(s, prev);
+            }
+            EXPECT_GE(s, prev);
+            EXPECT_LE(s, 0.8f);
+            prev = s;
+        }
+    }
+}
