@@ -17,8 +17,9 @@ namespace pgt {
 
 float tonemap_sigmoid(float x, const ToneMap &tm) {
     if (!(x > 0)) return 0.0f;
-    float r = x / tm.limit;
-    return x / std::pow(1.0f + std::pow(r, tm.sharpness), 1.0f / tm.sharpness);
+    // In double, so that the rounded result stays monotonic up to the asymptote.
+    const double r = double(x) / tm.limit, n = tm.sharpness;
+    return float(double(x) / std::pow(1.0 + std::pow(r, n), 1.0 / n));
 }
 
 void write_exr(const Image &img, const std::string &path) {
