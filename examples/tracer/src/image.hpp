@@ -12,7 +12,9 @@
 //                      s(x) = x / (1 + (x / D)^n)^(1/n)
 //                  D = ToneMap::limit (display white), n = ToneMap::sharpness (n = 1 is the plain
 //                  rational x/(1 + x/D)); see the README's tracer section for the caveat that the
-//                  constants of THG99's own equation could not be checked here.
+//                  constants of THG99's own equation could not be checked here. (THG99's other
+//                  operator, the revised Tumblin-Rushmeier mapping of their foveal method, is a
+//                  power law, not this sigmoid.)
 //                  Colour is kept: RGB is scaled by s(x)/x (the highlight goes towards white only
 //                  through the final clip).
 //   3. display:    linear Rec. 709 → sRGB (IEC 61966-2-1 transfer) through OCIO, with the config

@@ -315,7 +315,6 @@ Scene parse_scene(const std::string &text, const std::string &file, const std::s
             add_quad(m, a + ex, ey, ez);            // x = max
             add_quad(m, a, ex, ez);                 // y = min
             add_quad(m, a + ey, ez, ex);            // y = max
-            l.num("inside", 1);  // shading is two-sided: accepted for readability only
             sc.meshes.push_back(std::move(m));
         } else if (kw == "quad") {
             Mesh m;

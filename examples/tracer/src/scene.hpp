@@ -12,7 +12,7 @@
 //   material NAME perceptual L=L* a=a* b=b* c=c d=d [norm=…]                   (paper Fig. 13)
 //   material NAME checker a=MATERIAL b=MATERIAL size=s [offset=x,y,z]            (3-D checkerboard)
 //   sphere      center=x,y,z radius=r material=NAME
-//   box         min=x,y,z max=x,y,z material=NAME [inside=1]                     (6 quads)
+//   box         min=x,y,z max=x,y,z material=NAME                  (6 quads; all shading is two-sided)
 //   quad        corner=p edge1=u edge2=v material=NAME
 //   mesh        file=thing.obj material=NAME [scale=s] [translate=x,y,z]         (OBJ v/f, relative path)
 //   light       corner=p edge1=u edge2=v radiance=L|r,g,b [emission=cosine|isotropic]
