@@ -10,4 +10,5 @@ bash scripts/test-core.sh
 bash scripts/test-python.sh
 bash scripts/test-glsl.sh
 bash scripts/test-osl.sh
+bash scripts/test-tracer.sh
 echo "== every test passed ($((SECONDS - start)) s)"

@@ -1,0 +1,490 @@
+// render.cpp — the path tracer (see render.hpp).
+#include "render.hpp"
+
+#include <embree3/rtcore.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <mutex>
+#include <thread>
+#include <unistd.h>
+
+namespace pgt {
+
+namespace {
+
+constexpr float kPi = 3.14159265358979323846f;
+
+// PCG32 (O'Neill 2014), seeded per (seed, pixel, sample) through SplitMix64.
+std::uint64_t splitmix64(std::uint64_t x) {
+    x += 0x9e3779b97f4a7c15ull;
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+    return x ^ (x >> 31);
+}
+
+class Rng {
+public:
+    Rng(unsigned seed, std::uint64_t pixel, std::uint64_t sample) {
+        std::uint64_t h = splitmix64(splitmix64(splitmix64(seed) ^ pixel) ^ sample);
+        inc_ = (splitmix64(h) << 1u) | 1u;
+        state_ = 0;
+        next();
+        state_ += h;
+        next();
+    }
+    std::uint32_t next() {
+        std::uint64_t old = state_;
+        state_ = old * 6364136223846793005ull + inc_;
+        auto xorshifted = static_cast<std::uint32_t>(((old >> 18u) ^ old) >> 27u);
+        auto rot = static_cast<std::uint32_t>(old >> 59u);
+        return (xorshifted >> rot) | (xorshifted << ((-rot) & 31u));
+    }
+    float uniform() { return float(next() >> 8) * (1.0f / 16777216.0f); }  // [0, 1)
+
+private:
+    std::uint64_t state_, inc_;
+};
+
+struct Frame {  // orthonormal basis around n (Duff et al. 2017)
+    glm::vec3 t, b, n;
+    explicit Frame(glm::vec3 nn) : n(nn) {
+        float sign = std::copysign(1.0f, n.z);
+        float a = -1.0f / (sign + n.z);
+        float bb = n.x * n.y * a;
+        t = glm::vec3(1.0f + sign * n.x * n.x * a, sign * bb, -sign * n.x);
+        b = glm::vec3(bb, sign + n.y * n.y * a, -n.y);
+    }
+    pgloss_vec3 to_local(glm::vec3 v) const { return {glm::dot(v, t), glm::dot(v, b), glm::dot(v, n)}; }
+    glm::vec3 to_world(pgloss_vec3 v) const { return v.x * t + v.y * b + v.z * n; }
+};
+
+glm::vec3 rgb(const pgloss_rgb &c) { return {c.r, c.g, c.b}; }
+float max3(glm::vec3 v) { return std::max(v.x, std::max(v.y, v.z)); }
+float power_heuristic(float a, float b) {
+    float a2 = a * a, b2 = b * b;
+    return a2 + b2 > 0 ? a2 / (a2 + b2) : 0.0f;
+}
+
+enum class GeomKind { SPHERE, MESH, LIGHT };
+struct GeomRef {
+    GeomKind kind;
+    int index;
+};
+
+struct Hit {
+    bool hit = false;
+    float t = 0;
+    glm::vec3 p, n;  // n: unit geometric normal, not yet face-forwarded
+    GeomRef ref{GeomKind::MESH, -1};
+};
+
+}  // namespace
+
+const char *region_name(int r) {
+    switch (r) {
+    case REGION_NONE: return "none";
+    case REGION_WALL: return "walls";
+    case REGION_FLOOR: return "floor";
+    case REGION_CEILING: return "ceiling";
+    case REGION_SPHERE: return "sphere";
+    case REGION_LIGHT: return "light";
+    case REGION_OTHER: return "other";
+    case REGION_SHADOW: return "shadow";
+    }
+    return "?";
+}
+
+struct Renderer::Impl {
+    const Scene &scene;
+    RTCDevice device = nullptr;
+    RTCScene rtc = nullptr;
+    std::vector<GeomRef> geoms;  // by geomID
+    float eps = 1e-4f;           // ray offset, scaled to the scene
+
+    explicit Impl(const Scene &s) : scene(s) {
+        device = rtcNewDevice("threads=1");  // our own threads call into Embree; BVH build is small
+        if (!device) throw std::runtime_error("Embree: rtcNewDevice failed");
+        rtc = rtcNewScene(device);
+        rtcSetSceneBuildQuality(rtc, RTC_BUILD_QUALITY_HIGH);
+        float extent = 1.0f;
+        for (size_t i = 0; i < s.spheres.size(); ++i) {
+            const Sphere &sp = s.spheres[i];
+            RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_SPHERE_POINT);
+            auto *v = static_cast<float *>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                                    RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1));
+            v[0] = sp.center.x, v[1] = sp.center.y, v[2] = sp.center.z, v[3] = sp.radius;
+            extent = std::max(extent, max3(glm::abs(sp.center)) + sp.radius);
+            attach(g, {GeomKind::SPHERE, int(i)});
+        }
+        for (size_t i = 0; i < s.meshes.size(); ++i) {
+            add_triangles(s.meshes[i].vertices, s.meshes[i].faces, {GeomKind::MESH, int(i)});
+            for (auto &p : s.meshes[i].vertices) extent = std::max(extent, max3(glm::abs(p)));
+        }
+        for (size_t i = 0; i < s.lights.size(); ++i) {
+            const AreaLight &l = s.lights[i];
+            std::vector<glm::vec3> v{l.corner, l.corner + l.edge1, l.corner + l.edge1 + l.edge2, l.corner + l.edge2};
+            add_triangles(v, {{0, 1, 2}, {0, 2, 3}}, {GeomKind::LIGHT, int(i)});
+        }
+        eps = 1e-4f * extent;
+        rtcCommitScene(rtc);
+    }
+    ~Impl() {
+        if (rtc) rtcReleaseScene(rtc);
+        if (device) rtcReleaseDevice(device);
+    }
+
+    void attach(RTCGeometry g, GeomRef ref) {
+        rtcCommitGeometry(g);
+        unsigned id = rtcAttachGeometry(rtc, g);
+        rtcReleaseGeometry(g);
+        if (geoms.size() <= id) geoms.resize(id + 1);
+        geoms[id] = ref;
+    }
+    void add_triangles(const std::vector<glm::vec3> &verts, const std::vector<glm::uvec3> &faces, GeomRef ref) {
+        RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+        auto *v = static_cast<float *>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                                3 * sizeof(float), verts.size()));
+        for (size_t k = 0; k < verts.size(); ++k) v[3 * k] = verts[k].x, v[3 * k + 1] = verts[k].y, v[3 * k + 2] = verts[k].z;
+        auto *ix = static_cast<unsigned *>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                                    3 * sizeof(unsigned), faces.size()));
+        for (size_t k = 0; k < faces.size(); ++k) ix[3 * k] = faces[k].x, ix[3 * k + 1] = faces[k].y, ix[3 * k + 2] = faces[k].z;
+        attach(g, ref);
+    }
+
+    Hit intersect(glm::vec3 o, glm::vec3 d, std::uint64_t &rays) const {
+        ++rays;
+        RTCIntersectContext ctx;
+        rtcInitIntersectContext(&ctx);
+        RTCRayHit rh{};
+        rh.ray.org_x = o.x, rh.ray.org_y = o.y, rh.ray.org_z = o.z;
+        rh.ray.dir_x = d.x, rh.ray.dir_y = d.y, rh.ray.dir_z = d.z;
+        rh.ray.tnear = 0.0f;
+        rh.ray.tfar = std::numeric_limits<float>::infinity();
+        rh.ray.mask = 0xffffffffu;
+        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        rtcIntersect1(rtc, &ctx, &rh);
+        Hit h;
+        if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return h;
+        h.hit = true;
+        h.t = rh.ray.tfar;
+        h.p = o + h.t * d;
+        h.ref = geoms[rh.hit.geomID];
+        if (h.ref.kind == GeomKind::SPHERE) {
+            const Sphere &s = scene.spheres[size_t(h.ref.index)];
+            h.n = glm::normalize(h.p - s.center);
+        } else {
+            h.n = glm::normalize(glm::vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z));
+        }
+        return h;
+    }
+
+    bool occluded(glm::vec3 o, glm::vec3 d, float tfar, std::uint64_t &rays) const {
+        ++rays;
+        RTCIntersectContext ctx;
+        rtcInitIntersectContext(&ctx);
+        RTCRay r{};
+        r.org_x = o.x, r.org_y = o.y, r.org_z = o.z;
+        r.dir_x = d.x, r.dir_y = d.y, r.dir_z = d.z;
+        r.tnear = 0.0f;
+        r.tfar = tfar;
+        r.mask = 0xffffffffu;
+        rtcOccluded1(rtc, &ctx, &r);
+        return r.tfar < 0.0f;
+    }
+
+    const pgloss_material &material_at(int mi, glm::vec3 p) const {
+        const Material &m = scene.materials[size_t(mi)];
+        if (!m.checker) return m.ward;
+        glm::vec3 q = glm::floor((p - m.check_offset) / m.check_size);
+        long parity = (long(q.x) + long(q.y) + long(q.z)) & 1L;
+        return scene.materials[size_t(parity ? m.check_b : m.check_a)].ward;
+    }
+
+    // Emitted radiance of light li towards a point, seen along direction -wi (wi points at the light).
+    glm::vec3 light_emission(const AreaLight &l, float cos_l) const {
+        if (cos_l <= 0) return glm::vec3(0);
+        return l.isotropic ? l.radiance / cos_l : l.radiance;
+    }
+
+    size_t light_count() const { return scene.lights.size() + (scene.has_environment ? 1 : 0); }
+
+    glm::vec3 camera_dir(float px, float py, int w, int h) const {
+        const Camera &c = scene.camera;
+        glm::vec3 f = glm::normalize(c.look_at - c.position);
+        glm::vec3 r = glm::normalize(glm::cross(f, c.up));
+        glm::vec3 u = glm::cross(r, f);
+        float th = std::tan(0.5f * c.fov_deg * kPi / 180.0f);
+        float aspect = float(w) / float(h);
+        float sx = (2.0f * px / float(w) - 1.0f) * aspect * th;
+        float sy = (1.0f - 2.0f * py / float(h)) * th;
+        return glm::normalize(f + sx * r + sy * u);
+    }
+
+    // One camera path (radiance estimate) for pixel position (px, py).
+    glm::vec3 trace(float px, float py, int w, int h, Mode mode, int max_depth, Rng &rng, std::uint64_t &rays) const {
+        glm::vec3 L(0), beta(1);
+        glm::vec3 o = scene.camera.position;
+        glm::vec3 d = camera_dir(px, py, w, h);
+        const float nl = float(light_count());
+        // What the previous vertex did, to weight emission found by its BRDF-sampled ray.
+        enum class Prev { CAMERA, MIS, BRDF, LIGHT } prev = Prev::CAMERA;
+        float prev_pdf = 0;
+        glm::vec3 prev_p(0), prev_n(0);
+        for (int depth = 0;; ++depth) {
+            Hit hit = intersect(o, d, rays);
+            if (!hit.hit) {
+                if (scene.has_environment && prev != Prev::LIGHT) {
+                    float w = 1;
+                    if (prev == Prev::MIS)
+                        w = power_heuristic(prev_pdf, std::max(0.0f, glm::dot(prev_n, d)) / kPi / nl);
+                    L += beta * scene.environment * w;
+                }
+                break;
+            }
+            if (hit.ref.kind == GeomKind::LIGHT) {
+                const AreaLight &l = scene.lights[size_t(hit.ref.index)];
+                float cos_l = -glm::dot(l.normal, d);
+                if (cos_l > 0 && prev != Prev::LIGHT) {
+                    float w = 1;
+                    if (prev == Prev::MIS) {
+                        float pdf_light = hit.t * hit.t / (l.area * cos_l) / nl;
+                        w = power_heuristic(prev_pdf, pdf_light);
+                    }
+                    L += beta * light_emission(l, cos_l) * w;
+                }
+                break;  // lights do not reflect
+            }
+            if (depth + 1 > max_depth) break;
+            int mi = hit.ref.kind == GeomKind::SPHERE ? scene.spheres[size_t(hit.ref.index)].material
+                                                      : scene.meshes[size_t(hit.ref.index)].material;
+            const pgloss_material &m = material_at(mi, hit.p);
+            if (m.lobes == PGLOSS_LOBE_NONE) break;
+            glm::vec3 n = glm::dot(hit.n, d) < 0 ? hit.n : -hit.n;  // two-sided: face the viewer
+            Frame frame(n);
+            pgloss_vec3 wo = frame.to_local(-d);
+            glm::vec3 p = hit.p + eps * n;
+
+            // Strategy at this vertex: no MIS work where there is no specular lobe.
+            Prev strat = mode == Mode::BRDF ? Prev::BRDF
+                       : mode == Mode::LIGHT ? Prev::LIGHT
+                       : (m.lobes & PGLOSS_LOBE_SPECULAR) ? Prev::MIS : Prev::LIGHT;
+
+            if (strat != Prev::BRDF && nl > 0) {  // next-event estimation
+                size_t li = std::min(size_t(rng.uniform() * nl), light_count() - 1);
+                float u1 = rng.uniform(), u2 = rng.uniform();
+                glm::vec3 wi, Le;
+                float pdf_light, tmax;
+                bool ok = true;
+                if (li < scene.lights.size()) {
+                    const AreaLight &l = scene.lights[li];
+                    glm::vec3 y = l.corner + u1 * l.edge1 + u2 * l.edge2;
+                    glm::vec3 dv = y - p;
+                    float dist2 = glm::dot(dv, dv), dist = std::sqrt(dist2);
+                    wi = dv / dist;
+                    float cos_l = -glm::dot(l.normal, wi);
+                    ok = cos_l > 0;
+                    pdf_light = ok ? dist2 / (l.area * cos_l) : 0;
+                    Le = ok ? light_emission(l, cos_l) : glm::vec3(0);
+                    tmax = dist * (1.0f - 1e-4f);
+                } else {  // environment: cosine-weighted about n
+                    float r = std::sqrt(u1), phi = 2 * kPi * u2;
+                    pgloss_vec3 lw{r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0f, 1 - u1))};
+                    wi = frame.to_world(lw);
+                    pdf_light = lw.z / kPi;
+                    ok = pdf_light > 0;
+                    Le = scene.environment;
+                    tmax = std::numeric_limits<float>::infinity();
+                }
+                pdf_light /= nl;
+                pgloss_vec3 wil = frame.to_local(wi);
+                if (ok && wil.z > 0) {
+                    pgloss_rgb f;
+                    float pdf_brdf = 0, w = 1;
+                    if (strat == Prev::MIS) {
+                        pgloss_eval_pdf(&m, wo, wil, m.lobes, &f, &pdf_brdf);
+                        w = power_heuristic(pdf_light, pdf_brdf);
+                    } else {
+                        pgloss_eval(&m, wo, wil, m.lobes, &f);
+                    }
+                    glm::vec3 c = beta * rgb(f) * Le * (wil.z * w / pdf_light);
+                    if (max3(c) > 0 && !occluded(p, wi, tmax, rays)) L += c;
+                }
+            }
+
+            // Continue the path by BRDF sampling.
+            float u[3] = {rng.uniform(), rng.uniform(), rng.uniform()};
+            pgloss_sample_record rec;
+            pgloss_sample(&m, wo, u, m.lobes, &rec);
+            if (!(rec.pdf > 0)) break;
+            beta *= rgb(rec.weight);
+            prev = strat;
+            prev_pdf = rec.pdf;
+            prev_p = p;
+            prev_n = n;
+            o = p;
+            d = glm::normalize(frame.to_world(rec.wi));
+            if (depth >= 3) {  // Russian roulette
+                float q = std::min(0.95f, max3(beta));
+                if (!(rng.uniform() < q)) break;
+                beta /= q;
+            }
+        }
+        return L;
+    }
+};
+
+Renderer::Renderer(const Scene &scene) : impl_(std::make_unique<Impl>(scene)) {}
+Renderer::~Renderer() = default;
+
+Image Renderer::render(const RenderSettings &s, const RenderOptions &opt, RenderStats *stats_out) const {
+    using clock = std::chrono::steady_clock;
+    const int w = s.width, h = s.height;
+    const int tile = 16;
+    const int tiles_x = (w + tile - 1) / tile, tiles_y = (h + tile - 1) / tile;
+    const int ntiles = tiles_x * tiles_y;
+    int nthreads = opt.threads > 0 ? opt.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+    std::vector<double> sum(size_t(w) * size_t(h) * 3, 0.0);
+    std::vector<double> sum2(opt.variance ? sum.size() : 0, 0.0);
+    Image img;
+    img.width = w, img.height = h;
+    img.rgb.assign(sum.size(), 0.0f);
+    RenderStats st;
+    auto t0 = clock::now();
+    auto elapsed = [&] { return std::chrono::duration<double>(clock::now() - t0).count(); };
+    const bool tty = opt.progress && isatty(2);
+    std::atomic<std::uint64_t> rays{0}, done_samples{0};
+    double last_print = -1;
+    std::mutex print_mutex;
+
+    auto print_progress = [&](bool final) {
+        double t = elapsed();
+        std::lock_guard<std::mutex> lock(print_mutex);
+        if (!final && t - last_print < 0.25) return;
+        last_print = t;
+        double frac_spp = double(done_samples.load()) / (double(w) * h * s.spp);
+        double frac = frac_spp;
+        if (s.time_budget_s > 0) frac = std::max(frac, std::min(1.0, t / s.time_budget_s));
+        frac = std::min(1.0, frac);
+        double eta = frac > 0 ? t * (1 - frac) / frac : 0;
+        int bar = int(frac * 30);
+        std::fprintf(stderr, "\r%-18.18s [%.*s%*s] %3d%% %6.1fs ETA %5.1fs %6.2f Mrays/s%s",
+                     opt.label.c_str(), bar, "##############################", 30 - bar, "", int(frac * 100),
+                     t, final ? 0.0 : eta, t > 0 ? double(rays.load()) / t * 1e-6 : 0.0, final ? "\n" : "");
+        std::fflush(stderr);
+    };
+
+    int spp_done = 0;
+    int pass_spp = 1;
+    while (spp_done < s.spp) {
+        double t = elapsed();
+        if (s.time_budget_s > 0 && spp_done > 0) {
+            if (t >= s.time_budget_s) break;
+            double per_spp = t / spp_done;  // fit the next pass into what is left of the budget
+            int fit = int((s.time_budget_s - t) / std::max(per_spp, 1e-9));
+            if (fit < 1) break;
+            pass_spp = std::min(pass_spp, fit);
+        }
+        pass_spp = std::max(1, std::min({pass_spp, s.spp - spp_done, opt.max_pass_spp}));
+        const int s0 = spp_done, s1 = spp_done + pass_spp;
+        std::atomic<int> next_tile{0};
+        auto worker = [&](int id) {
+            std::uint64_t local_rays = 0;
+            for (;;) {
+                int ti = next_tile.fetch_add(1);
+                if (ti >= ntiles) break;
+                int x0 = (ti % tiles_x) * tile, y0 = (ti / tiles_x) * tile;
+                int x1 = std::min(w, x0 + tile), y1 = std::min(h, y0 + tile);
+                for (int y = y0; y < y1; ++y)
+                    for (int x = x0; x < x1; ++x) {
+                        std::uint64_t pix = std::uint64_t(y) * std::uint64_t(w) + std::uint64_t(x);
+                        double *acc = &sum[3 * pix];
+                        double *acc2 = sum2.empty() ? nullptr : &sum2[3 * pix];
+                        for (int k = s0; k < s1; ++k) {
+                            Rng rng(s.seed, pix, std::uint64_t(k));
+                            float jx = rng.uniform(), jy = rng.uniform();
+                            glm::vec3 c = impl_->trace(float(x) + jx, float(y) + jy, w, h, s.mode, s.max_depth, rng, local_rays);
+                            if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z))) c = glm::vec3(0);
+                            acc[0] += c.x, acc[1] += c.y, acc[2] += c.z;
+                            if (acc2) acc2[0] += double(c.x) * c.x, acc2[1] += double(c.y) * c.y, acc2[2] += double(c.z) * c.z;
+                        }
+                    }
+                rays += local_rays;
+                local_rays = 0;
+                done_samples += std::uint64_t(x1 - x0) * std::uint64_t(y1 - y0) * std::uint64_t(s1 - s0);
+                if (id == 0 && tty) print_progress(false);
+            }
+        };
+        std::vector<std::thread> pool;
+        for (int i = 1; i < nthreads; ++i) pool.emplace_back(worker, i);
+        worker(0);
+        for (auto &th : pool) th.join();
+        spp_done = s1;
+        pass_spp *= 2;
+        st.seconds = elapsed();
+        st.rays = rays.load();
+        st.samples = std::uint64_t(w) * std::uint64_t(h) * std::uint64_t(spp_done);
+        st.spp = spp_done;
+        if (opt.on_pass) {
+            for (size_t i = 0; i < sum.size(); ++i) img.rgb[i] = float(sum[i] / spp_done);
+            if (!opt.on_pass(img, st)) break;
+        }
+    }
+    for (size_t i = 0; i < sum.size(); ++i) img.rgb[i] = spp_done > 0 ? float(sum[i] / spp_done) : 0.0f;
+    if (opt.variance) {
+        Image &v = *opt.variance;
+        v.width = w, v.height = h;
+        v.rgb.assign(sum.size(), 0.0f);
+        if (spp_done > 1)
+            for (size_t i = 0; i < sum.size(); ++i) {
+                double n = spp_done, m = sum[i] / n;
+                v.rgb[i] = float(std::max(0.0, (sum2[i] / n - m * m)) / (n - 1));
+            }
+    }
+    st.seconds = elapsed();
+    if (tty) print_progress(true);
+    if (stats_out) *stats_out = st;
+    return img;
+}
+
+std::vector<int> Renderer::regions(int w, int h) const {
+    const Impl &I = *impl_;
+    std::vector<int> out(size_t(w) * size_t(h), REGION_NONE);
+    std::uint64_t rays = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            glm::vec3 o = I.scene.camera.position;
+            glm::vec3 d = I.camera_dir(float(x) + 0.5f, float(y) + 0.5f, w, h);
+            Hit hit = I.intersect(o, d, rays);
+            int r = REGION_NONE;
+            if (hit.hit) {
+                if (hit.ref.kind == GeomKind::LIGHT) r = REGION_LIGHT;
+                else if (hit.ref.kind == GeomKind::SPHERE) r = REGION_SPHERE;
+                else if (I.scene.meshes[size_t(hit.ref.index)].label == "box") {
+                    glm::vec3 n = glm::dot(hit.n, d) < 0 ? hit.n : -hit.n;
+                    r = n.y > 0.5f ? REGION_FLOOR : n.y < -0.5f ? REGION_CEILING : REGION_WALL;
+                } else r = REGION_OTHER;
+            }
+            if (r == REGION_FLOOR && !I.scene.lights.empty()) {  // fraction of the light visible
+                const AreaLight &l = I.scene.lights[0];
+                glm::vec3 p = hit.p + I.eps * glm::vec3(0, 1, 0);
+                int visible = 0, n = 8;
+                for (int i = 0; i < n; ++i)
+                    for (int j = 0; j < n; ++j) {
+                        glm::vec3 yl = l.corner + (float(i) + 0.5f) / float(n) * l.edge1 + (float(j) + 0.5f) / float(n) * l.edge2;
+                        glm::vec3 dv = yl - p;
+                        float dist = glm::length(dv);
+                        visible += I.occluded(p, dv / dist, dist * (1 - 1e-4f), rays) ? 0 : 1;
+                    }
+                if (visible * 2 < n * n) r = REGION_SHADOW;
+            }
+            out[size_t(y) * size_t(w) + size_t(x)] = r;
+        }
+    return out;
+}
+
+}  // namespace pgt

@@ -1,0 +1,119 @@
+// scene.hpp — the tracer's scene description and its small text format.
+//
+// A scene file is a list of lines "KEYWORD [NAME] key=value key=value …"; '#' starts a comment.
+// Vectors are written "x,y,z". Every error names the file, the line and the field.
+//
+//   image       width=256 height=192
+//   camera      position=0,1.6,1.9 look_at=0,0.5,-0.3 up=0,1,0 fov=45        (vertical fov, degrees)
+//   render      spp=64 max_depth=8 seed=1 mode=mis|brdf|light
+//   tonemap     exposure=1 limit=1 sharpness=2                                   (see image.hpp)
+//   material NAME diffuse=ρd | diffuse=r,g,b                                   (Lambertian)
+//   material NAME physical rho_d=ρd|r,g,b rho_s=ρs alpha=α [alpha_y=αy] [norm=ward|ward-dur|bounded]
+//   material NAME perceptual L=L* a=a* b=b* c=c d=d [norm=…]                   (paper Fig. 13)
+//   material NAME checker a=MATERIAL b=MATERIAL size=s [offset=x,y,z]            (3-D checkerboard)
+//   sphere      center=x,y,z radius=r material=NAME
+//   box         min=x,y,z max=x,y,z material=NAME                  (6 quads; all shading is two-sided)
+//   quad        corner=p edge1=u edge2=v material=NAME
+//   mesh        file=thing.obj material=NAME [scale=s] [translate=x,y,z]         (OBJ v/f, relative path)
+//   light       corner=p edge1=u edge2=v radiance=L|r,g,b [emission=cosine|isotropic]
+//   environment radiance=L|r,g,b                                                 (uniform, infinitely far)
+//
+// The area light emits from the side of edge1 × edge2. emission=cosine is a physical
+// Lambertian emitter (constant radiance L); emission=isotropic makes each element an isotropic
+// point source of intensity L·dA (radiance L / cosθ), which is what a POV-Ray area_light is.
+#pragma once
+#include <pgloss/pgloss.h>
+
+#include <glm/glm.hpp>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace pgt {
+
+struct SceneError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+enum class Mode { MIS, BRDF, LIGHT };
+
+struct Material {
+    std::string name;
+    bool checker = false;
+    pgloss_material ward{};      // when !checker
+    pgloss_physical physical{};  // what ward was built from (for labels)
+    int check_a = -1, check_b = -1;  // material indices, when checker
+    float check_size = 1.0f;
+    glm::vec3 check_offset{0.0f};
+};
+
+struct Sphere {
+    glm::vec3 center;
+    float radius;
+    int material;
+};
+
+struct Triangle {
+    glm::vec3 p0, p1, p2;
+};
+
+struct Mesh {  // triangles sharing a material (boxes and quads become meshes too)
+    std::vector<glm::vec3> vertices;
+    std::vector<glm::uvec3> faces;
+    int material;
+    std::string label;  // "box", "quad", "mesh:FILE"
+};
+
+struct AreaLight {
+    glm::vec3 corner, edge1, edge2;
+    glm::vec3 radiance;
+    bool isotropic = false;
+    // derived
+    glm::vec3 normal;  // unit, emitting side
+    float area;
+};
+
+struct Camera {
+    glm::vec3 position{0, 1, 3}, look_at{0, 0, 0}, up{0, 1, 0};
+    float fov_deg = 45.0f;
+};
+
+struct ToneMap {
+    float exposure = 1.0f;
+    float limit = 1.0f;
+    float sharpness = 2.0f;
+};
+
+struct RenderSettings {
+    int width = 256, height = 192;
+    int spp = 64;
+    int max_depth = 8;
+    unsigned seed = 1;
+    Mode mode = Mode::MIS;
+    double time_budget_s = 0;  // 0: no budget, stop at spp
+};
+
+struct Scene {
+    std::string path;  // for messages
+    Camera camera;
+    RenderSettings settings;
+    ToneMap tonemap;
+    std::vector<Material> materials;
+    std::vector<Sphere> spheres;
+    std::vector<Mesh> meshes;
+    std::vector<AreaLight> lights;
+    bool has_environment = false;
+    glm::vec3 environment{0.0f};
+
+    int find_material(const std::string &name) const;
+    // Replaces (or adds) a Ward material by name.
+    void set_material(const std::string &name, const pgloss_physical &p);
+};
+
+Scene load_scene(const std::string &path);
+Scene parse_scene(const std::string &text, const std::string &path_for_messages,
+                  const std::string &base_dir);
+const char *mode_name(Mode m);
+Mode parse_mode(const std::string &s);  // throws SceneError
+
+}  // namespace pgt
