@@ -33,6 +33,9 @@ if [[ "$(cat "$venv/.pgloss-installed" 2>/dev/null)" != "$sources" ]] || ! (cd /
   echo "$sources" >"$venv/.pgloss-installed"
 fi
 
+# bench/run.sh needs the installed package only.
+[[ ${PGLOSS_PY_SETUP_ONLY:-0} == 1 ]] && exit 0
+
 echo "== pytest tests/python"
 export MPLBACKEND=Agg MPLCONFIGDIR="$PWD/build-py/mplconfig"
 "$py" -m pytest -q -p no:cacheprovider -rs tests/python
