@@ -344,7 +344,7 @@ static void row(const char *material, ctx *c, const char *path, const char *tier
     printf("| %-8s | %-8s | %-6s | %-9s | %-8s | %8.2f | %9.2e | %9.2e |\n", fn_name[c->fn], path,
            tier, isa, material, t, emax, emean);
     if (g_csv)
-        fprintf(g_csv, "%s,%s,%s,%s,%s,%.4f,%.4e,%.4e\n", fn_name[c->fn], path, tier, isa, material,
+        fprintf(g_csv, "%s,%s,%s,%s,\"%s\",%.4f,%.4e,%.4e\n", fn_name[c->fn], path, tier, isa, material,
                 t, emax, emean);
 }
 
@@ -500,7 +500,7 @@ int main(int argc, char **argv)
         row("specular", &c, "batch", "float", "auto");
         c.m = &glossy;
         c.lobes = PGLOSS_LOBE_DIFFUSE;
-        row("both,mask=D", &c, "batch", "float", "auto");
+        row("both, mask D", &c, "batch", "float", "auto");
         c.fn = FN_SAMPLE;
         c.lobes = PGLOSS_LOBE_ALL;
         row("both", &c, "batch", "float", "auto");

@@ -90,6 +90,8 @@ def mitsuba_row(wo: np.ndarray, wi: np.ndarray, repeat: int):
     mi.set_variant("llvm_ad_rgb")
     import drjit as dr  # noqa: PLC0415
 
+    dr.set_thread_count(1)  # one core, like every other row
+
     bsdf = mi.load_dict({"type": "roughplastic", "distribution": "beckmann", "alpha": ALPHA,
                          "diffuse_reflectance": {"type": "rgb", "value": [RHO_D] * 3}})
     n = wo.shape[0]
@@ -166,7 +168,7 @@ def main(argv=None) -> int:
         rows.append(("C pgloss_eval_batch alone (the binding's callee)", statistics.median(ts) / n * 1e9, float("nan"), float("nan")))
     if not a.no_mitsuba:
         try:
-            rows.append(("Mitsuba 3 llvm_ad_rgb roughplastic (Beckmann; other model)", mitsuba_row(wo, wi, a.repeat), float("nan"), float("nan")))
+            rows.append(("Mitsuba 3 llvm_ad_rgb roughplastic (Beckmann; other model), 1 thread", mitsuba_row(wo, wi, a.repeat), float("nan"), float("nan")))
         except Exception as e:  # noqa: BLE001
             rows.append((f"Mitsuba 3: unavailable ({type(e).__name__}: {e})", float("nan"), float("nan"), float("nan")))
     if not a.no_glsl:

@@ -120,15 +120,6 @@ PGLOSS_INLINE float pgloss__pow2_scale(float m)
     return pgloss__bits_to_float((s < 1 ? 1 : s) << 23);
 }
 
-/* 1/sqrt(x) for normal x > 0: the bit-level first guess (Lomont's constant, relative error
- * 3.4e-2) and two Newton steps (1.75e-3, then <= 4.6e-6). The fast tier's rsqrt. */
-PGLOSS_INLINE float pgloss__rsqrt_fast(float x)
-{
-    float y = pgloss__bits_to_float(0x5f375a86 - (pgloss__float_to_bits(x) >> 1));
-    y = y * (1.5f - 0.5f * x * y * y);
-    return y * (1.5f - 0.5f * x * y * y);
-}
-
 /* exp(x) for x <= 0 in the fast tier: the reduction of pgloss__exp_neg with a degree-5
  * Taylor polynomial, relative error <= 2.5e-6 (|r| <= ln2/2: r^6/720). */
 PGLOSS_INLINE float pgloss__exp_neg_fast(float x)
@@ -155,8 +146,7 @@ PGLOSS_INLINE int pgloss__finite_f(float x)
 }
 
 /* Normalises (x, y, z) in place after an exact power-of-two scaling by the largest component;
- * returns 0 (and leaves zeros) for a zero or non-finite vector. RSQRT is 1/sqrt or its fast
- * approximation. */
+ * returns 0 (and leaves zeros) for a zero or non-finite vector. */
 #define PGLOSS__NORMALIZE_F(name, RSQRT)                                                           \
     PGLOSS_INLINE int name(float *x, float *y, float *z)                                           \
     {                                                                                              \
@@ -175,13 +165,6 @@ PGLOSS_INLINE int pgloss__finite_f(float x)
     }
 #define PGLOSS__RSQRT_IEEE(v) (1.0f / sqrtf(v))
 PGLOSS__NORMALIZE_F(pgloss__normalize_f, PGLOSS__RSQRT_IEEE)
-/* Directions feed tan²δ/α², whose error grows as 1/α: the fast tier normalises them with a
- * third Newton step (float rounding, as sqrt + division) and saves only the division. */
-PGLOSS_INLINE float pgloss__rsqrt_fast2(float x)
-{
-    const float y = pgloss__rsqrt_fast(x);
-    return y * (1.5f - 0.5f * x * y * y);
-}
-PGLOSS__NORMALIZE_F(pgloss__normalize_fast, pgloss__rsqrt_fast2)
+
 
 #endif

@@ -56,8 +56,7 @@ pgloss_status pgloss_sample_batch(const pgloss_material *m, unsigned lobes, size
  * in BENCHMARKS.md:
  *   FLOAT      float arithmetic, IEEE division and square root, an exp within 2 ulp (the
  *              default; about 5e-7 on eval and pdf);
- *   FAST       float arithmetic with a degree-5 exp and Newton-refined reciprocal square
- *              roots in place of division and sqrt (about 3e-5);
+ *   FAST       as FLOAT with a degree-5 exp (a few 1e-6 more; a few per cent faster);
  *   REFERENCE  the scalar functions (double arithmetic, libm) element by element: the
  *              slowest, the most accurate (float rounding of the result). */
 typedef enum pgloss_precision {
