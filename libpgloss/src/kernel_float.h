@@ -25,15 +25,24 @@ PGLOSS_INLINE float pgloss__minf(float a, float b) { return a < b ? a : b; }
 PGLOSS_INLINE float pgloss__maxf(float a, float b) { return a > b ? a : b; }
 PGLOSS_INLINE float pgloss__absf(float a) { return a < 0.0f ? -a : a; }
 
-/* exp(x) for x <= 0; 0 below ln(FLT_MIN) (results that would be subnormal flush to 0). */
-PGLOSS_INLINE float pgloss__exp_neg(float x)
+/* Range reduction of exp(x), x <= 0: x = n ln2 + r, |r| <= ln2/2, with xc = max(x, ln FLT_MIN);
+ * returns 2^n (the bits of the exponent field). */
+PGLOSS_INLINE float pgloss__exp_reduce(float x, float *r)
 {
-    const float lo = -87.33654f;
-    const float xc = x < lo ? lo : x;
+    const float xc = x < -87.33654f ? -87.33654f : x;
     /* round(x / ln2) by the 1.5·2^23 trick: exact for |x| < 2^22, no rint() call. */
     const float shifter = 12582912.0f;
     const float n = (xc * 1.44269504088896341f + shifter) - shifter;
-    const float r = (xc - n * 0.693145751953125f) - n * 1.428606765330187e-06f; /* Cody–Waite */
+    *r = (xc - n * 0.693145751953125f) - n * 1.428606765330187e-06f; /* Cody–Waite */
+    return pgloss__bits_to_float(((int32_t)n + 127) << 23);
+}
+
+/* exp(x) for x <= 0; 0 below ln(FLT_MIN) (results that would be subnormal flush to 0).
+ * Degree-7 Taylor polynomial on the reduced argument: within 2 ulp. */
+PGLOSS_INLINE float pgloss__exp_neg(float x)
+{
+    float r;
+    const float scale = pgloss__exp_reduce(x, &r);
     float p = 1.0f / 5040.0f;
     p = p * r + 1.0f / 720.0f;
     p = p * r + 1.0f / 120.0f;
@@ -42,8 +51,21 @@ PGLOSS_INLINE float pgloss__exp_neg(float x)
     p = p * r + 0.5f;
     p = p * r + 1.0f;
     p = p * r + 1.0f;
-    const float scale = pgloss__bits_to_float(((int32_t)n + 127) << 23);
-    return x < lo ? 0.0f : p * scale;
+    return x < -87.33654f ? 0.0f : p * scale;
+}
+
+/* exp(x) for x <= 0 in the fast tier: degree 5, relative error <= 2.5e-6 (r^6/720). */
+PGLOSS_INLINE float pgloss__exp_neg_fast(float x)
+{
+    float r;
+    const float scale = pgloss__exp_reduce(x, &r);
+    float p = 1.0f / 120.0f;
+    p = p * r + 1.0f / 24.0f;
+    p = p * r + 1.0f / 6.0f;
+    p = p * r + 0.5f;
+    p = p * r + 1.0f;
+    p = p * r + 1.0f;
+    return x < -87.33654f ? 0.0f : p * scale;
 }
 
 /* log(w) for normal w > 0. */
@@ -118,25 +140,6 @@ PGLOSS_INLINE float pgloss__pow2_scale(float m)
     const int32_t e = (pgloss__float_to_bits(m) >> 23) & 0xff;
     const int32_t s = 254 - e;
     return pgloss__bits_to_float((s < 1 ? 1 : s) << 23);
-}
-
-/* exp(x) for x <= 0 in the fast tier: the reduction of pgloss__exp_neg with a degree-5
- * Taylor polynomial, relative error <= 2.5e-6 (|r| <= ln2/2: r^6/720). */
-PGLOSS_INLINE float pgloss__exp_neg_fast(float x)
-{
-    const float lo = -87.33654f;
-    const float xc = x < lo ? lo : x;
-    const float shifter = 12582912.0f;
-    const float n = (xc * 1.44269504088896341f + shifter) - shifter;
-    const float r = (xc - n * 0.693145751953125f) - n * 1.428606765330187e-06f;
-    float p = 1.0f / 120.0f;
-    p = p * r + 1.0f / 24.0f;
-    p = p * r + 1.0f / 6.0f;
-    p = p * r + 0.5f;
-    p = p * r + 1.0f;
-    p = p * r + 1.0f;
-    const float scale = pgloss__bits_to_float(((int32_t)n + 127) << 23);
-    return x < lo ? 0.0f : p * scale;
 }
 
 /* Whether x is finite, by its bits (robust under any floating-point flags). */
