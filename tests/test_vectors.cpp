@@ -765,6 +765,23 @@ TEST(Vectors, eval_pdf_batch) {
             }
             EXPECT_EQ(fr.buf[0], -1.0f) << fn << ": wrote before the array";
         }
+        // One case per call: a chunk whose directions are all of moderate length takes the
+        // loops' short normalisation, one with an extreme direction the careful one; grouped
+        // calls above mostly meet the latter, single calls meet each case's own path.
+        for (size_t k = 0; k < n; ++k) {
+            const json &c = *cs[k];
+            const pgloss_vec3_array wo1{ox.p() + k, oy.p() + k, oz.p() + k}, wi1{ix.p() + k, iy.p() + k, iz.p() + k};
+            float r = -1, g = -1, b = -1, p1 = -1;
+            const pgloss_status st = pgloss_eval_pdf_batch(&m, lobes, 1, wo1, wi1, pgloss_rgb_out{&r, &g, &b}, &p1);
+            EXPECT_EQ(std::string(pgloss_status_name(st)), c["status"].get<std::string>()) << case_id(c) << " n=1";
+            const bool s = sanity_float(*doc, c);
+            const double got[3] = {r, g, b};
+            for (int j = 0; j < 3; ++j)
+                check("eval_pdf_batch (n=1)", "f", c, got[j], c["expected"]["f"][static_cast<size_t>(j)],
+                      sens_at(c, "f", j), tolerance(*doc, "eval_pdf", "f"), s, true);
+            check("eval_pdf_batch (n=1)", "pdf", c, p1, c["expected"]["pdf"], sens_at(c, "pdf", -1),
+                  tolerance(*doc, "eval_pdf", "pdf"), s, true);
+        }
         ++groups;
     }
     EXPECT_GT(groups, 0);
@@ -862,6 +879,17 @@ TEST(Vectors, sample_batch) {
                 check_sample(*doc, "sample_batch", *cs[k], wi, pdf.p()[k], w, lobe[k + 1]);
             }
             EXPECT_EQ(lobe[0], 77) << "sample_batch wrote before the lobe array";
+        }
+        // One case per call, as in eval_pdf_batch: each case meets its own normalisation path.
+        for (size_t k = 0; k < n; ++k) {
+            float x = kNaN, y = kNaN, z = kNaN, p1 = -1, r = -1, g = -1, b = -1;
+            unsigned char lb = 77;
+            const pgloss_status st = pgloss_sample_batch(
+                &m, lobes, 1, pgloss_vec3_array{ox.p() + k, oy.p() + k, oz.p() + k}, u0.p() + k, u1.p() + k,
+                u2.p() + k, pgloss_vec3_out{&x, &y, &z}, &p1, pgloss_rgb_out{&r, &g, &b}, &lb);
+            EXPECT_EQ(std::string(pgloss_status_name(st)), (*cs[k])["status"].get<std::string>()) << case_id(*cs[k]) << " n=1";
+            const double wi[3] = {x, y, z}, w[3] = {r, g, b};
+            check_sample(*doc, "sample_batch (n=1)", *cs[k], wi, p1, w, lb);
         }
         ++groups;
     }
