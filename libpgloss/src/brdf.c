@@ -8,7 +8,8 @@ void pgloss__eval_pdf_d(const pgloss_material *m, unsigned active, const double 
 {
     double fd[3] = {0.0, 0.0, 0.0}, fs = 0.0, p = 0.0;
     if (o[2] > 0.0 && i[2] > 0.0 && active) {
-        const double ps = pgloss__specular_probability_d(m, active);
+        /* The lobe-selection probability only matters to the pdf: skip it for eval alone. */
+        const double ps = pdf ? pgloss__specular_probability_d(m, active) : 0.0;
         if (active & PGLOSS_LOBE_DIFFUSE) {
             for (int k = 0; k < 3; ++k)
                 fd[k] = m->rho_d[k] * PGLOSS_INV_PI;
@@ -23,15 +24,18 @@ void pgloss__eval_pdf_d(const pgloss_material *m, unsigned active, const double 
             const double co = fmax(o[2], (double)PGLOSS_COS_MIN);
             const double hzc = ci + co;
             const double hh = hx * hx + hy * hy + hz * hz;
-            double norm;
-            switch (m->normalization) {
-            case PGLOSS_NORM_WARD_DUR: norm = 1.0 / (ci * co); break;          /* Dür 2006 */
-            case PGLOSS_NORM_BOUNDED: norm = hh / ((hzc * hzc) * (hzc * hzc)); break; /* GM&D 2010 */
-            default: norm = 1.0 / sqrt(ci * co); break;                         /* eq. 2 */
+            if (f) {
+                double norm;
+                switch (m->normalization) {
+                case PGLOSS_NORM_WARD_DUR: norm = 1.0 / (ci * co); break;          /* Dür 2006 */
+                case PGLOSS_NORM_BOUNDED: norm = hh / ((hzc * hzc) * (hzc * hzc)); break; /* GM&D 2010 */
+                default: norm = 1.0 / sqrt(ci * co); break;                         /* eq. 2 */
+                }
+                fs = m->spec_scale * e * norm;
             }
-            fs = m->spec_scale * e * norm;
             /* Walter 2005: p(wi) = D(h) / (4 (wo·h)), and for unit wo, wi: wo·ĥ ĥz³ = hz³ / (2 h·h). */
-            p += ps * 2.0 * m->pdf_scale * e * hh / (hzc * hzc * hzc);
+            if (pdf)
+                p += ps * 2.0 * m->pdf_scale * e * hh / (hzc * hzc * hzc);
         }
     }
     if (f)
