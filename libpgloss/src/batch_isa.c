@@ -8,7 +8,8 @@
  * Semantics mirror the scalar functions of brdf.c and sample.c.
  *
  * Tiers. float: IEEE division and square root, the exp of kernel_float.h (<= 2 ulp).
- * fast: the same, with a degree-5 exp (relative error <= 2.5e-6 on its own). */
+ * fast: the same, with a degree-5 exp (relative error <= 2.5e-6 on its own); on AVX-512 the
+ * eval/pdf loop is batch_avx512_fast.h (hardware reciprocal estimates, no division). */
 #include "batch_internal.h"
 #include "kernel_float.h"
 
@@ -22,10 +23,10 @@
 #define PGLOSS__CAT3(a, b, c) a##_##b##_##c
 #define PGLOSS__NAME(fn, isa, tier) PGLOSS__CAT3(fn, isa, tier)
 #if PGLOSS_TIER_FAST
-/* The fast tier differs only by its exp. A variant with bit-level rsqrt/reciprocal guesses and
- * Newton steps in place of IEEE division and sqrt was measured slower on AVX2 and AVX-512
- * (3.1 against 2.6 ns per eval on an AMD EPYC; BENCHMARKS.md): hardware division and square
- * root are cheaper than the extra multiplies, so it was dropped. */
+/* In portable C the fast tier differs only by its exp: a variant with bit-level rsqrt and
+ * reciprocal guesses plus Newton steps in place of IEEE division and sqrt was measured slower
+ * (3.1 against 2.6 ns per eval on an AMD EPYC), so it was dropped. The hardware estimates of
+ * AVX-512 do pay off: see batch_avx512_fast.h. */
 #define TIER fast
 #define EXP_NEG pgloss__exp_neg_fast
 #define RSQRT(v) (1.0f / sqrtf(v))
@@ -164,10 +165,43 @@ PGLOSS_INLINE size_t eval_pdf_loop(const pgloss__batch_consts *restrict k, const
     return bad;
 }
 
+#if PGLOSS_TIER_FAST && defined(__AVX512F__)
+#include "batch_avx512_fast.h"
+/* Blocks of 16 in intrinsics where they qualify, the generic loop elsewhere. */
+PGLOSS_INLINE size_t eval_pdf_loop_v(const pgloss__batch_consts *restrict k, const unsigned active,
+                                     const int norm, size_t n, const float *oxs, const float *oys,
+                                     const float *ozs, const float *ixs, const float *iys,
+                                     const float *izs, float *fr, float *fg, float *fb,
+                                     float *pdf, const int want_f, const int want_p)
+{
+    size_t bad = 0, j = 0;
+    for (; j + 16 <= n; j += 16) {
+        float *r = fr ? fr + j : NULL, *g = fr ? fg + j : NULL, *b = fr ? fb + j : NULL;
+        float *p = pdf ? pdf + j : NULL;
+        if (!v_eval_pdf16(k, active, norm, oxs + j, oys + j, ozs + j, ixs + j, iys + j, izs + j,
+                          r, g, b, p, want_f, want_p))
+            bad += eval_pdf_loop(k, active, norm, 16, oxs + j, oys + j, ozs + j, ixs + j,
+                                 iys + j, izs + j, r, g, b, p);
+    }
+    if (j < n)
+        bad += eval_pdf_loop(k, active, norm, n - j, oxs + j, oys + j, ozs + j, ixs + j, iys + j,
+                             izs + j, fr ? fr + j : NULL, fr ? fg + j : NULL, fr ? fb + j : NULL,
+                             pdf ? pdf + j : NULL);
+    return bad;
+}
+/* Specialised on the outputs wanted too: the block skips the pdf for eval and f for pdf. */
+#define EVAL_PDF_LOOP(k, A, N, n, ox, oy, oz, ix, iy, iz, r, g, b, p)                              \
+    ((r) && (p) ? eval_pdf_loop_v(k, A, N, n, ox, oy, oz, ix, iy, iz, r, g, b, p, 1, 1)            \
+                : ((r) ? eval_pdf_loop_v(k, A, N, n, ox, oy, oz, ix, iy, iz, r, g, b, p, 1, 0)     \
+                       : eval_pdf_loop_v(k, A, N, n, ox, oy, oz, ix, iy, iz, r, g, b, p, 0, 1)))
+#else
+#define EVAL_PDF_LOOP eval_pdf_loop
+#endif
+
 size_t EVAL_PDF_FN(const pgloss__batch_consts *k, unsigned active, int norm, size_t n,
                    pgloss_vec3_array wo, pgloss_vec3_array wi, pgloss_rgb_out f, float *pdf)
 {
-#define LOOP(A, N) eval_pdf_loop(k, A, N, n, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, f.r, f.g, f.b, pdf)
+#define LOOP(A, N) EVAL_PDF_LOOP(k, A, N, n, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, f.r, f.g, f.b, pdf)
 #define BY_NORM(A)                                                                                 \
     (norm == PGLOSS_NORM_WARD_DUR                                                                  \
          ? LOOP(A, PGLOSS_NORM_WARD_DUR)                                                           \
