@@ -90,7 +90,7 @@ operations, of which 5 divisions and 3 square roots**. This CPU's AVX-512 is two
 halves: about 32 single-precision operations per cycle at best, so the arithmetic alone bounds
 an evaluation at ≈ 3.3 cycles; the divider/square-root unit (16 lanes,
 several cycles each per vector; 8 per evaluation) bounds it at ≈ 4–5 cycles, ≈ 1.5 ns at 3 GHz. The FLOAT
-tier measures {best[0]:.2f} ns. The FAST tier on AVX-512 (`batch_avx512_fast.h`, intrinsics)
+tier measures {best[0]:.2f} ns. The FAST tier on AVX-512 (`batch_avx512_fast.h`, intrinsics; `batch_avx2_fast.h` on AVX2)
 replaces every division and square root by vrcp14ps/vrsqrt14ps plus one Newton step, uses FMA
 and vscalefps: about 90 vector operations per 16 evaluations, and measures {bestfast[0]:.2f} ns
 with the same mean error. (A portable FAST variant with bit-level guesses and Newton steps was

@@ -12,6 +12,8 @@
 
 #include <immintrin.h>
 
+#define PGLOSS_VW 16
+
 #define V1(x) _mm512_set1_ps(x)
 
 /* 1/sqrt(x), x normal: estimate + one Newton step y (1.5 - 0.5 x y²). */
@@ -48,8 +50,8 @@ PGLOSS_INLINE __m512 v_exp_neg(__m512 x)
     return _mm512_maskz_mov_ps((__mmask16)~under, _mm512_scalef_ps(p, n));
 }
 
-/* 16 evaluations at j; returns 0 (nothing written) if the block needs the generic path. */
-PGLOSS_INLINE int v_eval_pdf16(const pgloss__batch_consts *restrict k, const unsigned active,
+/* PGLOSS_VW = 16 evaluations at j; returns 0 (nothing written) if the block needs the generic path. */
+PGLOSS_INLINE int v_eval_pdf_block(const pgloss__batch_consts *restrict k, const unsigned active,
                                const int norm, const float *ox_, const float *oy_,
                                const float *oz_, const float *ix_, const float *iy_,
                                const float *iz_, float *fr_, float *fg_, float *fb_, float *pdf_,

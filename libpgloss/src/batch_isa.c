@@ -8,8 +8,9 @@
  * Semantics mirror the scalar functions of brdf.c and sample.c.
  *
  * Tiers. float: IEEE division and square root, the exp of kernel_float.h (<= 2 ulp).
- * fast: the same, with a degree-5 exp (relative error <= 2.5e-6 on its own); on AVX-512 the
- * eval/pdf loop is batch_avx512_fast.h (hardware reciprocal estimates, no division). */
+ * fast: the same, with a degree-5 exp (relative error <= 2.5e-6 on its own); on AVX-512 and
+ * AVX2 the eval/pdf loop is batch_avx512_fast.h / batch_avx2_fast.h (hardware reciprocal
+ * estimates, no division). */
 #include "batch_internal.h"
 #include "kernel_float.h"
 
@@ -26,7 +27,7 @@
 /* In portable C the fast tier differs only by its exp: a variant with bit-level rsqrt and
  * reciprocal guesses plus Newton steps in place of IEEE division and sqrt was measured slower
  * (3.1 against 2.6 ns per eval on an AMD EPYC), so it was dropped. The hardware estimates of
- * AVX-512 do pay off: see batch_avx512_fast.h. */
+ * AVX2 and AVX-512 do pay off: see batch_avx2_fast.h and batch_avx512_fast.h. */
 #define TIER fast
 #define EXP_NEG pgloss__exp_neg_fast
 #define RSQRT(v) (1.0f / sqrtf(v))
@@ -167,7 +168,11 @@ PGLOSS_INLINE size_t eval_pdf_loop(const pgloss__batch_consts *restrict k, const
 
 #if PGLOSS_TIER_FAST && defined(__AVX512F__)
 #include "batch_avx512_fast.h"
-/* Blocks of 16 in intrinsics where they qualify, the generic loop elsewhere. */
+#elif PGLOSS_TIER_FAST && defined(__AVX2__) && defined(__FMA__)
+#include "batch_avx2_fast.h"
+#endif
+#if defined(PGLOSS_VW)
+/* Blocks of PGLOSS_VW in intrinsics where they qualify, the generic loop elsewhere. */
 PGLOSS_INLINE size_t eval_pdf_loop_v(const pgloss__batch_consts *restrict k, const unsigned active,
                                      const int norm, size_t n, const float *oxs, const float *oys,
                                      const float *ozs, const float *ixs, const float *iys,
@@ -175,12 +180,12 @@ PGLOSS_INLINE size_t eval_pdf_loop_v(const pgloss__batch_consts *restrict k, con
                                      float *pdf, const int want_f, const int want_p)
 {
     size_t bad = 0, j = 0;
-    for (; j + 16 <= n; j += 16) {
+    for (; j + PGLOSS_VW <= n; j += PGLOSS_VW) {
         float *r = fr ? fr + j : NULL, *g = fr ? fg + j : NULL, *b = fr ? fb + j : NULL;
         float *p = pdf ? pdf + j : NULL;
-        if (!v_eval_pdf16(k, active, norm, oxs + j, oys + j, ozs + j, ixs + j, iys + j, izs + j,
-                          r, g, b, p, want_f, want_p))
-            bad += eval_pdf_loop(k, active, norm, 16, oxs + j, oys + j, ozs + j, ixs + j,
+        if (!v_eval_pdf_block(k, active, norm, oxs + j, oys + j, ozs + j, ixs + j, iys + j,
+                              izs + j, r, g, b, p, want_f, want_p))
+            bad += eval_pdf_loop(k, active, norm, PGLOSS_VW, oxs + j, oys + j, ozs + j, ixs + j,
                                  iys + j, izs + j, r, g, b, p);
     }
     if (j < n)

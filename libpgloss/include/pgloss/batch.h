@@ -56,9 +56,9 @@ pgloss_status pgloss_sample_batch(const pgloss_material *m, unsigned lobes, size
  * in BENCHMARKS.md:
  *   FLOAT      float arithmetic, IEEE division and square root, an exp within 2 ulp (the
  *              default; about 5e-7 on eval and pdf);
- *   FAST       as FLOAT with a degree-5 exp (a few 1e-6 more); on AVX-512 also hardware
- *              reciprocal and rsqrt estimates refined by a Newton step instead of division
- *              and sqrt (about 1.8x faster there);
+ *   FAST       as FLOAT with a degree-5 exp (a few 1e-6 more); on AVX2 and AVX-512 the
+ *              eval/pdf loops also use hardware reciprocal and rsqrt estimates refined by a
+ *              Newton step instead of division and sqrt (1.6x to 1.9x faster there);
  *   REFERENCE  the scalar functions (double arithmetic, libm) element by element: the
  *              slowest, the most accurate (float rounding of the result). */
 typedef enum pgloss_precision {
