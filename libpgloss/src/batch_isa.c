@@ -9,8 +9,8 @@
  *
  * Tiers. float: IEEE division and square root, the exp of kernel_float.h (<= 2 ulp).
  * fast: the same, with a degree-5 exp (relative error <= 2.5e-6 on its own); on AVX-512 and
- * AVX2 the eval/pdf loop is batch_avx512_fast.h / batch_avx2_fast.h (hardware reciprocal
- * estimates, no division). */
+ * AVX2 the eval/pdf loop runs batch_fast_block.h (hardware reciprocal estimates, no division)
+ * over the primitives of batch_avx512_fast.h / batch_avx2_fast.h. */
 #include "batch_internal.h"
 #include "kernel_float.h"
 
@@ -23,23 +23,19 @@
 
 #define PGLOSS__CAT3(a, b, c) a##_##b##_##c
 #define PGLOSS__NAME(fn, isa, tier) PGLOSS__CAT3(fn, isa, tier)
-#if PGLOSS_TIER_FAST
 /* In portable C the fast tier differs only by its exp: a variant with bit-level rsqrt and
  * reciprocal guesses plus Newton steps in place of IEEE division and sqrt was measured slower
  * (3.1 against 2.6 ns per eval on an AMD EPYC), so it was dropped. The hardware estimates of
- * AVX2 and AVX-512 do pay off: see batch_avx2_fast.h and batch_avx512_fast.h. */
+ * AVX2 and AVX-512 do pay off: see batch_fast_block.h. */
+#if PGLOSS_TIER_FAST
 #define TIER fast
 #define EXP_NEG pgloss__exp_neg_fast
-#define RSQRT(v) (1.0f / sqrtf(v))
-#define NORMALIZE pgloss__normalize_f
-#define RCP(v) (1.0f / (v))
 #else
 #define TIER float
 #define EXP_NEG pgloss__exp_neg
-#define RSQRT(v) (1.0f / sqrtf(v))
-#define NORMALIZE pgloss__normalize_f
-#define RCP(v) (1.0f / (v))
 #endif
+#define RSQRT(v) (1.0f / sqrtf(v))
+#define RCP(v) (1.0f / (v))
 #define EVAL_PDF_FN PGLOSS__NAME(pgloss__eval_pdf, PGLOSS_ISA, TIER)
 #define SAMPLE_FN PGLOSS__NAME(pgloss__sample, PGLOSS_ISA, TIER)
 
@@ -121,7 +117,7 @@ PGLOSS_INLINE size_t normalize_chunk(size_t n, const float *restrict xs, const f
     size_t bad = 0;
     for (size_t j = 0; j < n; ++j) {
         float x = xs[j], y = ys[j], z = zs[j];
-        const int v = NORMALIZE(&x, &y, &z);
+        const int v = pgloss__normalize_f(&x, &y, &z);
         nx[j] = x;
         ny[j] = y;
         nz[j] = z;
@@ -172,6 +168,7 @@ PGLOSS_INLINE size_t eval_pdf_loop(const pgloss__batch_consts *restrict k, const
 #include "batch_avx2_fast.h"
 #endif
 #if defined(PGLOSS_VW)
+#include "batch_fast_block.h"
 /* Blocks of PGLOSS_VW in intrinsics where they qualify, the generic loop elsewhere. */
 PGLOSS_INLINE size_t eval_pdf_loop_v(const pgloss__batch_consts *restrict k, const unsigned active,
                                      const int norm, size_t n, const float *oxs, const float *oys,

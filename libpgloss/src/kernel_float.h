@@ -150,24 +150,19 @@ PGLOSS_INLINE int pgloss__finite_f(float x)
 
 /* Normalises (x, y, z) in place after an exact power-of-two scaling by the largest component;
  * returns 0 (and leaves zeros) for a zero or non-finite vector. */
-#define PGLOSS__NORMALIZE_F(name, RSQRT)                                                           \
-    PGLOSS_INLINE int name(float *x, float *y, float *z)                                           \
-    {                                                                                              \
-        const float m =                                                                            \
-            pgloss__maxf(pgloss__absf(*x), pgloss__maxf(pgloss__absf(*y), pgloss__absf(*z)));      \
-        const int finite = pgloss__finite_f(*x) & pgloss__finite_f(*y) & pgloss__finite_f(*z);    \
-        const int ok = finite & (m > 0.0f);                                                        \
-        const float s = pgloss__pow2_scale(ok ? m : 1.0f);                                         \
-        const float a = *x * s, b = *y * s, c = *z * s;                                            \
-        const float l2 = a * a + b * b + c * c;                                                    \
-        const float inv = RSQRT(ok ? l2 : 1.0f);                                                   \
-        *x = ok ? a * inv : 0.0f;                                                                  \
-        *y = ok ? b * inv : 0.0f;                                                                  \
-        *z = ok ? c * inv : 0.0f;                                                                  \
-        return ok;                                                                                 \
-    }
-#define PGLOSS__RSQRT_IEEE(v) (1.0f / sqrtf(v))
-PGLOSS__NORMALIZE_F(pgloss__normalize_f, PGLOSS__RSQRT_IEEE)
+PGLOSS_INLINE int pgloss__normalize_f(float *x, float *y, float *z)
+{
+    const float m = pgloss__maxf(pgloss__absf(*x), pgloss__maxf(pgloss__absf(*y), pgloss__absf(*z)));
+    const int finite = pgloss__finite_f(*x) & pgloss__finite_f(*y) & pgloss__finite_f(*z);
+    const int ok = finite & (m > 0.0f);
+    const float s = pgloss__pow2_scale(ok ? m : 1.0f);
+    const float a = *x * s, b = *y * s, c = *z * s;
+    const float inv = 1.0f / sqrtf(ok ? a * a + b * b + c * c : 1.0f);
+    *x = ok ? a * inv : 0.0f;
+    *y = ok ? b * inv : 0.0f;
+    *z = ok ? c * inv : 0.0f;
+    return ok;
+}
 
 
 #endif
