@@ -185,28 +185,44 @@ TEST(Isa, EveryPathIsFiniteOnEdges)
 
 // FAST within its stated error of the double reference (the scalar functions) on regular
 // inputs where the specular exponent is moderate (the error of any float exp grows with it).
+// Unit directions (every renderer's) take the intrinsics blocks and the cancellation-free
+// half vector: ~2.5e-7 per unit of exponent, below 4e-6 here (BENCHMARKS.md). Directions of
+// other lengths are normalised first, and their rounding is amplified near the mirror
+// direction by ~1/α (batch_isa.c): 1e-4 for them.
 TEST(Isa, FastTierWithinStatedError)
 {
-    const Data d = make_data(20000, false);
+    const Data unit = make_data(20000, false);
+    Data scaled = unit;
+    std::mt19937 rng(99);
+    std::uniform_real_distribution<float> len(0.25f, 4.0f);
+    for (std::size_t j = 0; j < scaled.n; ++j) {
+        const float a = len(rng), b = len(rng);
+        scaled.ox[j] *= a, scaled.oy[j] *= a, scaled.oz[j] *= a;
+        scaled.ix[j] *= b, scaled.iy[j] *= b, scaled.iz[j] *= b;
+    }
     for (const auto &m : materials()) {
         if (m.alpha_x > 1.0f)
             continue; // the degenerate α = 3e38 material has no regular range
-        const Out ref = run(d, m, {PGLOSS_PRECISION_REFERENCE, PGLOSS_ISA_AUTO}, false);
-        for (pgloss_isa isa : kIsas) {
-            if (!pgloss_isa_supported(isa))
-                continue;
-            const Out o = run(d, m, {PGLOSS_PRECISION_FAST, isa}, false);
-            double worst = 0;
-            for (std::size_t j = 0; j < d.n; ++j) {
-                const double want = ref.fr[j];
-                if (!(want > 1e-3 * (m.rho_d[0] + m.spec_scale)))
-                    continue; // the far tail of the lobe: conditioning, not the tier
-                worst = std::fmax(worst, std::fabs(o.fr[j] - want) / want);
-                worst = std::fmax(worst, std::fabs(o.pdf[j] - ref.pdf[j]) / ref.pdf[j]);
+        for (const Data *d : std::initializer_list<const Data *>{&unit, &scaled}) {
+            const double bound = d == &unit ? 4e-6 : 1e-4;
+            const Out ref = run(*d, m, {PGLOSS_PRECISION_REFERENCE, PGLOSS_ISA_AUTO}, false);
+            for (pgloss_isa isa : kIsas) {
+                if (!pgloss_isa_supported(isa))
+                    continue;
+                const Out o = run(*d, m, {PGLOSS_PRECISION_FAST, isa}, false);
+                double worst = 0;
+                for (std::size_t j = 0; j < d->n; ++j) {
+                    const double want = ref.fr[j];
+                    if (!(want > 1e-3 * (m.rho_d[0] + m.spec_scale)))
+                        continue; // the far tail of the lobe: conditioning, not the tier
+                    worst = std::fmax(worst, std::fabs(o.fr[j] - want) / want);
+                    worst = std::fmax(worst, std::fabs(o.pdf[j] - ref.pdf[j]) / ref.pdf[j]);
+                }
+                EXPECT_LT(worst, bound) << pgloss_isa_name(isa);
+                std::printf("fast tier, %s directions, %s, alpha %.3g/%.3g: max rel err %.2e\n",
+                            d == &unit ? "unit" : "non-unit", pgloss_isa_name(isa), m.alpha_x,
+                            m.alpha_y, worst);
             }
-            EXPECT_LT(worst, 1e-4) << pgloss_isa_name(isa);
-            std::printf("fast tier, %s, alpha %.3g/%.3g: max rel err %.2e\n",
-                        pgloss_isa_name(isa), m.alpha_x, m.alpha_y, worst);
         }
     }
 }

@@ -1,6 +1,7 @@
 /* AVX2 + FMA primitives of the FAST tier's eval/pdf block (batch_fast_block.h): 8 lanes,
  * vrcpps / vrsqrtps estimates (relative error <= 1.5·2^-12) refined by one Newton step (then
- * about 2e-7), masks as all-ones lanes, and 2^n built in the exponent bits. */
+ * about 2e-7), masks as all-ones lanes, and the power of two of exp2 built in the exponent
+ * bits. */
 #ifndef PGLOSS_BATCH_AVX2_FAST_H
 #define PGLOSS_BATCH_AVX2_FAST_H
 
@@ -22,14 +23,36 @@ typedef __m256 pgloss__m;
 #define VFNMADD _mm256_fnmadd_ps
 #define VCMP(a, b, op) _mm256_cmp_ps(a, b, op)
 #define MAND(a, b) _mm256_and_ps(a, b)
-#define MALL(m) (_mm256_movemask_ps(m) == 0xFF)
 #define VKEEP(m, v) _mm256_and_ps(m, v) /* v where m, else 0 */
 #define VRSQRT_EST _mm256_rsqrt_ps
 #define VRCP_EST _mm256_rcp_ps
-#define VROUND(v) _mm256_round_ps(v, _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC)
-/* p · 2^n for integral n in [-126, 0]: 2^n is the normal float with biased exponent n + 127. */
-#define VSCALE2(p, n)                                                                              \
+/* g - floor(g), and p · 2^floor(g) for g >= -127: the float whose biased exponent is
+ * floor(g) + 127, which is 0 (so the product is 0) at floor(g) = -127. */
+#define VFRAC(g) _mm256_sub_ps(g, _mm256_floor_ps(g))
+#define VSCALE_FLOOR(p, g, frac)                                                                   \
     _mm256_mul_ps(p, _mm256_castsi256_ps(_mm256_slli_epi32(                                        \
-                         _mm256_add_epi32(_mm256_cvtps_epi32(n), _mm256_set1_epi32(127)), 23)))
+                         _mm256_add_epi32(_mm256_cvtps_epi32(_mm256_sub_ps(g, frac)),              \
+                                          _mm256_set1_epi32(127)),                                 \
+                         23)))
+/* max(g, -127), with NaN to -127 too (maxps returns its second operand when one is NaN). */
+#define VEXP2_CLAMP(g) _mm256_max_ps(g, V1(-127.0f))
+/* a > 0 and b > 0, for floats that are not NaN: on the bits, a positive float is a positive
+ * integer and -0 or a negative one is negative. */
+#define VBOTH_POSITIVE(a, b)                                                                       \
+    _mm256_castsi256_ps(_mm256_cmpgt_epi32(                                                        \
+        _mm256_min_epi32(_mm256_castps_si256(a), _mm256_castps_si256(b)), _mm256_setzero_si256()))
+#define VADD_KEEP(m, a, b) _mm256_and_ps(m, _mm256_add_ps(a, b)) /* a + b where m, else 0 */
+
+/* Whether every squared length of two blocks lies in [lo, hi] (positive normals): on the
+ * bits, as signed integers, so that NaN and Inf fail too. */
+PGLOSS_INLINE int v_all_in(pgloss__v a, pgloss__v b, float lo, float hi)
+{
+    const __m256i ia = _mm256_castps_si256(a), ib = _mm256_castps_si256(b);
+    const __m256i mn = _mm256_min_epi32(ia, ib), mx = _mm256_max_epi32(ia, ib);
+    const __m256i bad = _mm256_or_si256(
+        _mm256_cmpgt_epi32(_mm256_castps_si256(V1(lo)), mn),
+        _mm256_cmpgt_epi32(mx, _mm256_castps_si256(V1(hi))));
+    return _mm256_testz_si256(bad, bad);
+}
 
 #endif

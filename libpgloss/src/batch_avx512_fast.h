@@ -1,6 +1,6 @@
 /* AVX-512 primitives of the FAST tier's eval/pdf block (batch_fast_block.h): 16 lanes,
  * vrcp14ps / vrsqrt14ps estimates (relative error <= 2^-14) refined by one Newton step,
- * and vscalefps for the power of two of exp. */
+ * vreduceps and vscalefps for exp2, and masked adds. */
 #ifndef PGLOSS_BATCH_AVX512_FAST_H
 #define PGLOSS_BATCH_AVX512_FAST_H
 
@@ -22,12 +22,31 @@ typedef __mmask16 pgloss__m;
 #define VFNMADD _mm512_fnmadd_ps
 #define VCMP(a, b, op) _mm512_cmp_ps_mask(a, b, op)
 #define MAND(a, b) ((pgloss__m)((a) & (b)))
-#define MALL(m) ((m) == 0xFFFF)
 #define VKEEP(m, v) _mm512_maskz_mov_ps(m, v) /* v where m, else 0 */
 #define VRSQRT_EST _mm512_rsqrt14_ps
 #define VRCP_EST _mm512_rcp14_ps
-#define VROUND(v) _mm512_roundscale_ps(v, _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC)
-/* p · 2^n for integral n in [-126, 0]. */
-#define VSCALE2(p, n) _mm512_scalef_ps(p, n)
+/* g - floor(g), and p · 2^floor(g) for g >= -126, 0 below: results stay normal, as a
+ * subnormal result costs a microcode assist on some cores (many times the whole block). */
+#define VFRAC(g) _mm512_reduce_ps(g, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC)
+#define VSCALE_FLOOR(p, g, frac)                                                                   \
+    _mm512_maskz_scalef_ps(_mm512_cmp_ps_mask(g, V1(-126.0f), _CMP_GE_OQ), p, g)
+#define VEXP2_CLAMP(g) (g) /* -Inf and NaN fail the mask of VSCALE_FLOOR */
+/* a > 0 and b > 0, for floats that are not NaN: on the bits, a positive float is a positive
+ * integer and -0 or a negative one is negative (integer ops leave the FP multiply pipes free). */
+#define VBOTH_POSITIVE(a, b)                                                                       \
+    _mm512_cmp_epi32_mask(_mm512_min_epi32(_mm512_castps_si512(a), _mm512_castps_si512(b)),       \
+                          _mm512_setzero_si512(), _MM_CMPINT_GT)
+#define VADD_KEEP(m, a, b) _mm512_maskz_add_ps(m, a, b) /* a + b where m, else 0 */
+
+/* Whether every squared length of two blocks lies in [lo, hi] (positive normals): on the
+ * bits, as signed integers, so that NaN and Inf fail too. */
+PGLOSS_INLINE int v_all_in(pgloss__v a, pgloss__v b, float lo, float hi)
+{
+    const __m512i ia = _mm512_castps_si512(a), ib = _mm512_castps_si512(b);
+    const __m512i mn = _mm512_min_epi32(ia, ib), mx = _mm512_max_epi32(ia, ib);
+    const __mmask16 ok = _mm512_cmp_epi32_mask(mn, _mm512_castps_si512(V1(lo)), _MM_CMPINT_GE) &
+                         _mm512_cmp_epi32_mask(mx, _mm512_castps_si512(V1(hi)), _MM_CMPINT_LE);
+    return ok == 0xFFFF;
+}
 
 #endif

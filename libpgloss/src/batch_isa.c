@@ -8,7 +8,7 @@
  * Semantics mirror the scalar functions of brdf.c and sample.c.
  *
  * Tiers. float: IEEE division and square root, the exp of kernel_float.h (<= 2 ulp).
- * fast: the same, with a degree-5 exp (relative error <= 2.5e-6 on its own); on AVX-512 and
+ * fast: the same, with a degree-5 exp (relative error 1.5e-7 on its own); on AVX-512 and
  * AVX2 the eval/pdf loop runs batch_fast_block.h (hardware reciprocal estimates, no division)
  * over the primitives of batch_avx512_fast.h / batch_avx2_fast.h. */
 #include "batch_internal.h"
@@ -42,30 +42,58 @@
 #define ONE_MINUS_EPS_F 0x1.fffffep-1f
 #define COS_MIN_F ((float)PGLOSS_COS_MIN)
 
-/* f and pdf at unit o, i; the float twin of pgloss__eval_pdf_d (eq. 2; Walter 2005's pdf). */
+/* The kernels take near-unit directions: squared length within 2^-20 of 1. Every unit
+ * vector rounded to float is one (|v|² - 1 is a few ulp), so a renderer's directions reach
+ * the kernels as they are; the chunk functions below normalise any other direction first. */
+#define UNIT_L2_LO (1.0f - 0x1p-20f)
+#define UNIT_L2_HI (1.0f + 0x1p-20f)
+
+/* f and pdf at near-unit directions o, i; the float twin of pgloss__eval_pdf_d (eq. 2;
+ * Walter 2005's pdf).
+ *
+ * eq. 2's exponent comes from a half vector free of the rounding of normalised directions.
+ * Near the mirror direction, where the specular lobe lives, the x and y of ô + î are small
+ * differences; rounding ô and î to float would move them by an ulp of 1: a relative error
+ * of ~6e-8/tanδ in tanδ, and ~2√x·6e-8/α in f at exponent x (2e-5 at α = 0.07, x = 10).
+ * Instead, with |o|² = 1 + εo, |i|² = 1 + εi (|ε| <= 2^-20), s = i + o, d = i − o:
+ *   - ô + î = s − (εo o + εi i)/2 + O(ε²), and εo o + εi i = ((εo + εi)/2) s + ((εi − εo)/2) d;
+ *     the part along s only rescales the vector, so ô + î is parallel, to O(ε²) = 2^-40, to
+ *     h = s − (D/4) d,   D = |i|² − |o|² = εi − εo = Σ d_k s_k.
+ *     Near the mirror direction s_x, s_y, d_z and the terms of D are small, and they are
+ *     rounded relative to themselves, not to 1: tan²δ = (hx² + hy²)/hz² comes out within
+ *     ~8 ulp (4.8e-7 measured for α = 0.07, exponent <= 10), where normalising first costs
+ *     ~6e-8/tanδ. h is symmetric in o and i bit for bit (D and d change sign together), so
+ *     f(o, i) = f(i, o) exactly, as in the scalar functions;
+ *   - 1/|v| = 1 − ε/2 + O(ε²) = 1.5 − |v|²/2, within 2^-41, and |ô + î|² = |h|² /|o| /|i| to
+ *     the same order: no square root or division. */
 PGLOSS_INLINE void kernel_eval_pdf(const pgloss__batch_consts *k, const unsigned active,
                                    const int norm, float ox, float oy, float oz, float ix,
                                    float iy, float iz, int valid, float f[3], float *pdf)
 {
-    const int upper = valid & (oz > 0.0f) & (iz > 0.0f);
+    const float ro = 1.5f - 0.5f * (ox * ox + oy * oy + oz * oz);
+    const float ri = 1.5f - 0.5f * (ix * ix + iy * iy + iz * iz);
+    const float cos_o = oz * ro, cos_i = iz * ri;
+    const int upper = valid & (cos_o > 0.0f) & (cos_i > 0.0f);
     float fr = 0.0f, fg = 0.0f, fb = 0.0f, p = 0.0f;
     if (active & PGLOSS_LOBE_DIFFUSE) {
         fr = k->fd[0];
         fg = k->fd[1];
         fb = k->fd[2];
-        p = k->pd * iz * PGLOSS_INV_PI_F;
+        p = k->pd * cos_i * PGLOSS_INV_PI_F;
     }
     if (active & PGLOSS_LOBE_SPECULAR) {
-        /* The unnormalised half vector h = o + i: tan²δ·(cos²φ/αx² + sin²φ/αy²) is
-         * ((hx/αx)² + (hy/αy)²)/hz², with hz = cosθi + cosθo. */
-        const float hx = ox + ix, hy = oy + iy, hz = oz + iz;
-        const float ex = hx * k->inv_ax, ey = hy * k->inv_ay;
+        const float sx = ix + ox, sy = iy + oy, sz = iz + oz;
+        const float dx = ix - ox, dy = iy - oy, dz = iz - oz;
+        const float q = 0.25f * (dx * sx + dy * sy + dz * sz); /* (|i|² − |o|²)/4 */
+        const float hx = sx - q * dx, hy = sy - q * dy, hz = sz - q * dz;
+        /* tan²δ·(cos²φ/αx² + sin²φ/αy²) = (hx²/αx² + hy²/αy²)/hz² (Ward 1992) */
         const float hz2 = pgloss__maxf(hz * hz, FLT_MIN);
-        const float e = EXP_NEG(-(ex * ex + ey * ey) * RCP(hz2)); /* eq. 2's exponential */
-        const float ci = pgloss__maxf(iz, COS_MIN_F), co = pgloss__maxf(oz, COS_MIN_F);
-        const float hzc = ci + co;
-        const float hh = hx * hx + hy * hy + hz * hz;
-        const float inv_hzc = RCP(hzc);
+        const float t2 = (hx * hx) * k->inv_ax2 + (hy * hy) * k->inv_ay2;
+        const float e = EXP_NEG(-t2 / hz2); /* eq. 2's exponential */
+        const float ci = pgloss__maxf(cos_i, COS_MIN_F), co = pgloss__maxf(cos_o, COS_MIN_F);
+        /* h·h of the unit half vector ô + î (pdf and BOUNDED only). */
+        const float hh = (hx * hx + hy * hy + hz * hz) * (ro * ri);
+        const float inv_hzc = RCP(ci + co);
         const float inv_hzc2 = inv_hzc * inv_hzc;
         float n;
         if (norm == PGLOSS_NORM_WARD_DUR) /* Ward–Dür 2006: 1/(cosθi cosθo) */
@@ -78,7 +106,7 @@ PGLOSS_INLINE void kernel_eval_pdf(const pgloss__batch_consts *k, const unsigned
         fr += fs;
         fg += fs;
         fb += fs;
-        /* Walter 2005: p = e/(4π αx αy (o·h) cos³δ) = 2·pdf_scale·e·(h·h)/hz³ for h = o + i. */
+        /* Walter 2005: p = e/(4π αx αy (o·h) cos³δ) = 2·pdf_scale·e·(h·h)/hz³ for h = ô + î. */
         p += k->ps * (k->pdf2 * e * hh * (inv_hzc2 * inv_hzc));
     }
     f[0] = upper ? pgloss__minf(fr, FLT_MAX) : 0.0f;
@@ -87,10 +115,47 @@ PGLOSS_INLINE void kernel_eval_pdf(const pgloss__batch_consts *k, const unsigned
     *pdf = upper ? pgloss__minf(p, FLT_MAX) : 0.0f;
 }
 
-/* Directions are normalised chunk by chunk into the stack, then the BRDF loop runs over the
- * chunk: simple loops vectorise where one fused loop defeats GCC's if-conversion. */
+/* The loops work chunk by chunk, with the outputs of a pass kept on the stack: simple loops
+ * vectorise where one fused loop defeats GCC's if-conversion. */
 #define CHUNK 256
 
+/* Whether every direction of a chunk is near-unit (which also rules out NaN and Inf). */
+PGLOSS_INLINE int chunk_near_unit(size_t n, const float *restrict xs, const float *restrict ys,
+                                  const float *restrict zs)
+{
+    size_t out = 0;
+    for (size_t j = 0; j < n; ++j) {
+        const float l2 = xs[j] * xs[j] + ys[j] * ys[j] + zs[j] * zs[j];
+        out += !((l2 >= UNIT_L2_LO) & (l2 <= UNIT_L2_HI));
+    }
+    return out == 0;
+}
+
+/* Copies a chunk's directions for the kernel: near-unit ones as they are, others normalised
+ * (after an exact power-of-two scaling, so that no square overflows or underflows); a zero
+ * or non-finite direction becomes (0, 0, 1) with ok = 0. Returns the number of those. */
+PGLOSS_INLINE size_t unit_chunk(size_t n, const float *restrict xs, const float *restrict ys,
+                                const float *restrict zs, float *restrict nx, float *restrict ny,
+                                float *restrict nz, int *restrict ok)
+{
+    size_t bad = 0;
+    for (size_t j = 0; j < n; ++j) {
+        float x = xs[j], y = ys[j], z = zs[j];
+        const float l2 = x * x + y * y + z * z;
+        if (!((l2 >= UNIT_L2_LO) & (l2 <= UNIT_L2_HI))) {
+            const int v = pgloss__normalize_f(&x, &y, &z);
+            z = v ? z : 1.0f;
+            ok[j] &= v;
+            bad += !v;
+        }
+        nx[j] = x;
+        ny[j] = y;
+        nz[j] = z;
+    }
+    return bad;
+}
+
+/* Unit directions (for the sampler); returns the number of invalid ones. */
 PGLOSS_INLINE size_t normalize_chunk(size_t n, const float *restrict xs, const float *restrict ys,
                                      const float *restrict zs, float *restrict nx,
                                      float *restrict ny, float *restrict nz, int *restrict ok)
@@ -127,8 +192,40 @@ PGLOSS_INLINE size_t normalize_chunk(size_t n, const float *restrict xs, const f
     return bad;
 }
 
-/* Unwanted outputs go to scratch chunks instead of being a specialisation of their own: the
+/* f and pdf of a chunk (ok: validity in and out); returns the number of invalid directions.
+ * Unwanted outputs go to scratch chunks instead of being a specialisation of their own: the
  * loops stay branch-free, and the file compiles in a third of the time. */
+PGLOSS_INLINE size_t eval_chunk(const pgloss__batch_consts *restrict k, const unsigned active,
+                                const int norm, size_t m, const float *oxs, const float *oys,
+                                const float *ozs, const float *ixs, const float *iys,
+                                const float *izs, int *restrict ok, float *restrict r,
+                                float *restrict g, float *restrict b, float *restrict p)
+{
+    float ox[CHUNK], oy[CHUNK], oz[CHUNK], ix[CHUNK], iy[CHUNK], iz[CHUNK];
+    size_t bad = 0;
+    if (!chunk_near_unit(m, oxs, oys, ozs)) {
+        bad += unit_chunk(m, oxs, oys, ozs, ox, oy, oz, ok);
+        oxs = ox;
+        oys = oy;
+        ozs = oz;
+    }
+    if (!chunk_near_unit(m, ixs, iys, izs)) {
+        bad += unit_chunk(m, ixs, iys, izs, ix, iy, iz, ok);
+        ixs = ix;
+        iys = iy;
+        izs = iz;
+    }
+    for (size_t j = 0; j < m; ++j) {
+        float f[3], pj;
+        kernel_eval_pdf(k, active, norm, oxs[j], oys[j], ozs[j], ixs[j], iys[j], izs[j], ok[j], f, &pj);
+        r[j] = f[0];
+        g[j] = f[1];
+        b[j] = f[2];
+        p[j] = pj;
+    }
+    return bad;
+}
+
 PGLOSS_INLINE size_t eval_pdf_loop(const pgloss__batch_consts *restrict k, const unsigned active,
                                    const int norm, size_t n, const float *restrict oxs,
                                    const float *restrict oys, const float *restrict ozs,
@@ -137,27 +234,15 @@ PGLOSS_INLINE size_t eval_pdf_loop(const pgloss__batch_consts *restrict k, const
                                    float *pdf)
 {
     size_t bad = 0;
-    float ox[CHUNK], oy[CHUNK], oz[CHUNK], ix[CHUNK], iy[CHUNK], iz[CHUNK];
     float sr[CHUNK], sg[CHUNK], sb[CHUNK], sp[CHUNK];
     int ok[CHUNK];
     for (size_t base = 0; base < n; base += CHUNK) {
         const size_t m = n - base < CHUNK ? n - base : CHUNK;
-        float *restrict r = fr ? fr + base : sr;
-        float *restrict g = fr ? fg + base : sg;
-        float *restrict b = fr ? fb + base : sb;
-        float *restrict p = pdf ? pdf + base : sp;
         for (size_t j = 0; j < m; ++j)
             ok[j] = 1;
-        bad += normalize_chunk(m, oxs + base, oys + base, ozs + base, ox, oy, oz, ok);
-        bad += normalize_chunk(m, ixs + base, iys + base, izs + base, ix, iy, iz, ok);
-        for (size_t j = 0; j < m; ++j) {
-            float f[3], pj;
-            kernel_eval_pdf(k, active, norm, ox[j], oy[j], oz[j], ix[j], iy[j], iz[j], ok[j], f, &pj);
-            r[j] = f[0];
-            g[j] = f[1];
-            b[j] = f[2];
-            p[j] = pj;
-        }
+        bad += eval_chunk(k, active, norm, m, oxs + base, oys + base, ozs + base, ixs + base,
+                          iys + base, izs + base, ok, fr ? fr + base : sr, fr ? fg + base : sg,
+                          fr ? fb + base : sb, pdf ? pdf + base : sp);
     }
     return bad;
 }
@@ -169,6 +254,28 @@ PGLOSS_INLINE size_t eval_pdf_loop(const pgloss__batch_consts *restrict k, const
 #endif
 #if defined(PGLOSS_VW)
 #include "batch_fast_block.h"
+/* The generic loop, out of line, for the blocks the intrinsics refuse and the tail: the
+ * block loop below keeps its registers to itself. */
+static __attribute__((noinline)) size_t
+eval_pdf_generic(const pgloss__batch_consts *k, unsigned active, int norm, size_t n,
+                 const float *ox, const float *oy, const float *oz, const float *ix,
+                 const float *iy, const float *iz, float *r, float *g, float *b, float *p)
+{
+#define LOOP(A, N) eval_pdf_loop(k, A, N, n, ox, oy, oz, ix, iy, iz, r, g, b, p)
+#define BY_NORM(A)                                                                                 \
+    (norm == PGLOSS_NORM_WARD_DUR                                                                  \
+         ? LOOP(A, PGLOSS_NORM_WARD_DUR)                                                           \
+         : (norm == PGLOSS_NORM_BOUNDED ? LOOP(A, PGLOSS_NORM_BOUNDED) : LOOP(A, PGLOSS_NORM_WARD)))
+    switch (active) {
+    case PGLOSS_LOBE_DIFFUSE: return LOOP(PGLOSS_LOBE_DIFFUSE, PGLOSS_NORM_WARD);
+    case PGLOSS_LOBE_SPECULAR: return BY_NORM(PGLOSS_LOBE_SPECULAR);
+    case PGLOSS_LOBE_ALL: return BY_NORM(PGLOSS_LOBE_ALL);
+    default: return LOOP(PGLOSS_LOBE_NONE, PGLOSS_NORM_WARD);
+    }
+#undef BY_NORM
+#undef LOOP
+}
+
 /* Blocks of PGLOSS_VW in intrinsics where they qualify, the generic loop elsewhere. */
 PGLOSS_INLINE size_t eval_pdf_loop_v(const pgloss__batch_consts *restrict k, const unsigned active,
                                      const int norm, size_t n, const float *oxs, const float *oys,
@@ -178,17 +285,17 @@ PGLOSS_INLINE size_t eval_pdf_loop_v(const pgloss__batch_consts *restrict k, con
 {
     size_t bad = 0, j = 0;
     for (; j + PGLOSS_VW <= n; j += PGLOSS_VW) {
-        float *r = fr ? fr + j : NULL, *g = fr ? fg + j : NULL, *b = fr ? fb + j : NULL;
-        float *p = pdf ? pdf + j : NULL;
+        float *r = want_f ? fr + j : NULL, *g = want_f ? fg + j : NULL;
+        float *b = want_f ? fb + j : NULL, *p = want_p ? pdf + j : NULL;
         if (!v_eval_pdf_block(k, active, norm, oxs + j, oys + j, ozs + j, ixs + j, iys + j,
                               izs + j, r, g, b, p, want_f, want_p))
-            bad += eval_pdf_loop(k, active, norm, PGLOSS_VW, oxs + j, oys + j, ozs + j, ixs + j,
-                                 iys + j, izs + j, r, g, b, p);
+            bad += eval_pdf_generic(k, active, norm, PGLOSS_VW, oxs + j, oys + j, ozs + j,
+                                    ixs + j, iys + j, izs + j, r, g, b, p);
     }
     if (j < n)
-        bad += eval_pdf_loop(k, active, norm, n - j, oxs + j, oys + j, ozs + j, ixs + j, iys + j,
-                             izs + j, fr ? fr + j : NULL, fr ? fg + j : NULL, fr ? fb + j : NULL,
-                             pdf ? pdf + j : NULL);
+        bad += eval_pdf_generic(k, active, norm, n - j, oxs + j, oys + j, ozs + j, ixs + j,
+                                iys + j, izs + j, want_f ? fr + j : NULL, want_f ? fg + j : NULL,
+                                want_f ? fb + j : NULL, want_p ? pdf + j : NULL);
     return bad;
 }
 /* Specialised on the outputs wanted too: the block skips the pdf for eval and f for pdf. */
@@ -309,21 +416,16 @@ PGLOSS_INLINE void sample_loop(const pgloss__batch_consts *restrict k, const uns
                               : PGLOSS_LOBE_NONE;
         }
         /* f and pdf at the float direction handed back, as the scalar function does. */
-        normalize_chunk(m, wx + base, wy + base, wz + base, ix, iy, iz, ok);
-        for (size_t j = 0; j < m; ++j) {
-            float f[3], p;
-            kernel_eval_pdf(k, active, norm, ox[j], oy[j], oz[j], ix[j], iy[j], iz[j], ok[j], f, &p);
-            pdfs[base + j] = p;
-            wr[base + j] = f[0];
-            wg[base + j] = f[1];
-            wb[base + j] = f[2];
-        }
+        eval_chunk(k, active, norm, m, oxs + base, oys + base, ozs + base, wx + base, wy + base,
+                   wz + base, ok, wr + base, wg + base, wb + base, pdfs + base);
         /* weight = f cosθi / pdf, 0 where the sample is rejected (pdf 0). */
         for (size_t j = 0; j < m; ++j) {
             const float p = pdfs[base + j];
             const int good = ok[j] & (p > 0.0f);
             /* Clamped, so that f = 0 at a subnormal pdf gives 0 (not 0·Inf). */
-            const float inv_p = pgloss__minf(iz[j] / (good ? p : 1.0f), FLT_MAX);
+            const float x = wx[base + j], y = wy[base + j], z = wz[base + j];
+            const float cos_i = z / sqrtf(pgloss__maxf(x * x + y * y + z * z, FLT_MIN));
+            const float inv_p = pgloss__minf(cos_i / (good ? p : 1.0f), FLT_MAX);
             pdfs[base + j] = good ? p : 0.0f;
             wr[base + j] = good ? pgloss__minf(wr[base + j] * inv_p, FLT_MAX) : 0.0f;
             wg[base + j] = good ? pgloss__minf(wg[base + j] * inv_p, FLT_MAX) : 0.0f;

@@ -52,13 +52,18 @@ pgloss_status pgloss_sample_batch(const pgloss_material *m, unsigned lobes, size
 /* ---- accuracy tiers and instruction sets --------------------------------------------- */
 
 /* How the batched loops compute. Maximum relative errors against the exact (40-digit)
- * values of the shared vectors, on the regular range, are measured by bench/ and listed
- * in BENCHMARKS.md:
+ * values of the shared vectors, and against a long-double reference in bench/ (listed in
+ * BENCHMARKS.md), on the regular range (specular exponent tan²δ/α² <= 10):
  *   FLOAT      float arithmetic, IEEE division and square root, an exp within 2 ulp (the
- *              default; about 5e-7 on eval and pdf);
- *   FAST       as FLOAT with a degree-5 exp (a few 1e-6 more); on AVX2 and AVX-512 the
- *              eval/pdf loops also use hardware reciprocal and rsqrt estimates refined by a
- *              Newton step instead of division and sqrt (1.6x to 1.9x faster there);
+ *              default). Directions of unit length (within 2^-20 in squared length, as
+ *              every unit vector rounded to float is) enter the formulas as they are, with
+ *              a half vector free of cancellation (about 8e-7 on eval and pdf; the error
+ *              grows as ~2.5e-7 per unit of exponent); others are normalised first, and
+ *              that rounding costs up to ~6e-8/α more near the mirror direction;
+ *   FAST       the same formulas with a degree-5 exp; on AVX2 and AVX-512, blocks of unit
+ *              directions run in intrinsics with hardware reciprocal and rsqrt estimates
+ *              refined by a Newton step and no division or square root (2.5x faster than
+ *              FLOAT there, within 1e-6 of its results);
  *   REFERENCE  the scalar functions (double arithmetic, libm) element by element: the
  *              slowest, the most accurate (float rounding of the result). */
 typedef enum pgloss_precision {
