@@ -380,7 +380,8 @@ class Report:
         """Every expected output of a double-API function (lightness, gloss, colour,
         perceptual/physical, specular_probability) from `got` (output name -> number or
         sequence). values=False (a layer's documented allowance: its input is a different
-        number, or its status legitimately differs): floats are checked for finiteness only."""
+        number, or its status legitimately differs): floats are checked for finiteness only;
+        an integer output (normalization) is exact either way."""
         if fn in STATUS_ONLY:
             self.stat(f"{fn} status").checks += 1
             return
