@@ -1,18 +1,22 @@
 """Executes the shared test vectors (tests/vectors/*.json) through glsl/pgloss.glsl.
 
 One compute shader (GLSL 4.50 core) includes pgloss.glsl and dispatches every case of every
-file to the function it names; inputs and outputs travel through SSBOs; the comparison
-follows tests/test_vectors.cpp and the tolerance model of tests/vectors/README.md:
+file to the function it names; inputs and outputs travel through SSBOs (or, for the GLSL 3.30
+and ESSL 3.00 fragment stages, an RGBA32UI texture in and a render target out). Loading the
+cases, the tolerance model of tests/vectors/README.md and the report are the shared module
+tests/vectors/pgloss_vectors.py (the logic of tests/test_vectors.cpp); what is this layer's:
 
     |got - want| <= abs + rel*|want| + kappa_rel*sens            (the "float" column, always)
-                  + (3 + 2|x|) * 2^-24 * |want|                   (BRDF outputs only)
+                  + exp_ulp_rel(x) * |want|                       (BRDF f, pdf, sample weight)
 
-The last term is the accuracy the GLSL 4.60 and Vulkan specifications allow for the
-built-in exp(x) (3 + 2|x| ULP), through which eq. 2's exponential x = tan²δ/α² reaches f,
-pdf and the sample weight. Files whose C precision is double are held to the float column
-(rel 1e-5, kappa_rel 1e-6: float rounding of inputs and intermediates, amplified by the
-case's sens, is what the port may add), with three documented exceptions for the status
-(see classify()).
+* PRECISION = "float": GLSL floats are 32-bit. Files whose C precision is double are held to
+  the float column (rel 1e-5, kappa_rel 1e-6: float rounding of inputs and intermediates,
+  amplified by the case's sens, is what the port may add), with three documented exceptions
+  for the status (see classify()).
+* exp_ulp_rel(x) = (3 + 2|x|) * 2^-24: the accuracy the GLSL 4.60 and Vulkan specifications
+  allow for the built-in exp(x), through which eq. 2's exponential x = tan²δ/α² reaches f,
+  pdf and the sample weight.
+* Denormal directions a driver flushes to zero (GLSL 4.60 §4.7.1): see compare_file().
 
 Environment:
   PGLOSS_GLSL_DEVICE=llvmpipe (default): Mesa llvmpipe through EGL, headless; the renderer
@@ -22,36 +26,31 @@ Environment:
 """
 from __future__ import annotations
 
-import json
 import math
 import os
 import pathlib
-import struct
+import sys
+from collections import OrderedDict
 from dataclasses import dataclass, field
-from typing import Any, Callable, Iterable
+from typing import Callable, Iterable
 
 import numpy as np
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
-VECTORS = ROOT / "tests" / "vectors"
+sys.path.insert(0, str(ROOT / "tests" / "vectors"))
+import pgloss_vectors as pv  # noqa: E402
+
 GLSL = ROOT / "glsl" / "pgloss.glsl"
 
-FLT_MAX = float(np.finfo(np.float32).max)
-FLT_MIN = float(np.finfo(np.float32).tiny)
-ULP = 2.0**-24
+# GLSL floats are 32-bit: every file is held to the vectors' float tolerance column.
+PRECISION = "float"
 
-STATUS = {
-    "PGLOSS_OK": 0, "PGLOSS_WARN_ALPHA_UNTRUSTED": 1, "PGLOSS_ERR_NULL": -1,
-    "PGLOSS_ERR_NONFINITE": -2, "PGLOSS_ERR_NEGATIVE": -3, "PGLOSS_ERR_ALPHA": -4,
-    "PGLOSS_ERR_ENERGY": -5, "PGLOSS_ERR_ENVELOPE": -6, "PGLOSS_ERR_LIGHTNESS": -7,
-    "PGLOSS_ERR_GAMUT": -8, "PGLOSS_ERR_DIRECTION": -9, "PGLOSS_ERR_NORMALIZATION": -10,
-    "PGLOSS_ERR_ARGUMENT": -11, "PGLOSS_ERR_RANDOM": -12,
-}
-STATUS_NAME = {v: k for k, v in STATUS.items()}
-LOBE = {"PGLOSS_LOBE_NONE": 0, "PGLOSS_LOBE_DIFFUSE": 1, "PGLOSS_LOBE_SPECULAR": 2}
 
-FILES = ["lightness.json", "gloss.json", "color.json", "validity.json",
-         "perceptual_material.json", "material.json", "brdf_eval.json", "brdf_sample.json"]
+def exp_ulp_rel(x: float) -> float:
+    """The relative error the GLSL 4.60 / Vulkan specifications allow the built-in exp(x):
+    3 + 2|x| ULP. Eq. 2's exponential (x = tan²δ/α²) reaches f, pdf and the sample weight."""
+    return (3.0 + 2.0 * abs(x)) * pv.ULP
+
 
 # Function codes of the dispatcher below.
 FN = {name: k for k, name in enumerate([
@@ -59,7 +58,8 @@ FN = {name: k for k, name in enumerate([
     "specular_from_contrast", "gloss_from_physical", "physical_from_gloss", "gloss_distance",
     "envelope_contrast", "match_gloss", "isogloss_contour", "rgb_from_lab", "lab_from_rgb",
     "luminance", "check_physical", "check_perceptual", "physical_from_perceptual",
-    "perceptual_from_physical", "material_init", "specular_probability", "eval_pdf", "sample"])}
+    "perceptual_from_physical", "material_init", "specular_probability", pv.BRDF_EVAL,
+    pv.BRDF_SAMPLE])}
 
 NF_IN, NU_IN, NF_OUT, NI_OUT = 16, 4, 16, 4
 
@@ -201,19 +201,9 @@ def shader_source(defines: Iterable[str] = (), stage: str = "comp") -> str:
     return head + GLSL.read_text() + prelude + DISPATCHER + FRAGMENT_MAIN
 
 
+
 # ---------------------------------------------------------------------------------------
-# Numbers
-
-
-def num(j: Any) -> float:
-    if isinstance(j, str):
-        return {"nan": math.nan, "inf": math.inf, "-inf": -math.inf}[j]
-    return float(j)
-
-
-def f32(x: float) -> float:
-    with np.errstate(over="ignore"):
-        return float(np.float32(x))
+# Jobs: one per case (one per point of an isogloss contour)
 
 
 def u32(x: int) -> int:
@@ -230,28 +220,30 @@ class Job:
 
 
 def physical_floats(p: dict) -> tuple[list[float], int]:
+    num = pv.num
     return ([num(x) for x in p["rho_d"]] + [num(p["rho_s"]), num(p["alpha_x"]), num(p["alpha_y"])],
             u32(int(p["normalization"])))
 
 
-def jobs_of(doc: dict, file: str) -> tuple[list[Job], int]:
-    """Jobs for every case of a file; returns (jobs, number of null_pointer cases skipped)."""
+# Scalar inputs of the simple double-API functions, in argument order.
+SCALAR_INPUTS = {"lightness_from_luminance": ["Y"], "luminance_from_lightness": ["L"],
+                 "contrast_gloss": ["rho_d", "rho_s"], "specular_from_contrast": ["rho_d", "c"],
+                 "gloss_from_physical": ["rho_d", "rho_s", "alpha"], "physical_from_gloss": ["L", "c", "d"],
+                 "gloss_distance": ["c1", "d1", "c2", "d2"], "envelope_contrast": ["L"],
+                 "match_gloss": ["rho_d", "rho_s", "L_target"]}
+
+
+def jobs_of(file: str, rep: pv.Report) -> list[Job]:
+    """Jobs for every case of a file; null_pointer cases are counted on rep as skipped."""
+    num = pv.num
     jobs: list[Job] = []
-    skipped = 0
+    doc = pv.load(file)
     mats = doc.get("materials", {})
-    for c in doc["cases"]:
+    for fn, c in pv.runnable(file, rep):
         inp = c["input"]
-        if "null" in inp:  # README: ports without pointers skip null_pointer cases
-            skipped += 1
-            continue
-        fn = c.get("function")
-        if file == "brdf_eval.json":
-            fn = "eval_pdf"
-        elif file == "brdf_sample.json":
-            fn = "sample"
-        if fn in ("eval_pdf", "sample"):
+        if fn in (pv.BRDF_EVAL, pv.BRDF_SAMPLE):
             pf, norm = physical_floats(mats[inp["material"]])
-            extra = inp["wi"] if fn == "eval_pdf" else inp["u"]
+            extra = inp["wi"] if fn == pv.BRDF_EVAL else inp["u"]
             fin = pf + [num(x) for x in inp["wo"]] + [num(x) for x in extra]
             jobs.append(Job(c, fn, fin, [FN[fn], norm, u32(int(inp["lobes"])), 0]))
         elif fn in ("material_init", "specular_probability", "check_physical", "perceptual_from_physical"):
@@ -267,22 +259,14 @@ def jobs_of(doc: dict, file: str) -> tuple[list[Job], int]:
             n = int(inp["n"])
             for k in range(max(n, 1)):
                 jobs.append(Job(c, fn, fin, [FN[fn], 0, k, n], point=k))
-        else:
-            keys = {"lightness_from_luminance": ["Y"], "luminance_from_lightness": ["L"],
-                    "contrast_gloss": ["rho_d", "rho_s"], "specular_from_contrast": ["rho_d", "c"],
-                    "gloss_from_physical": ["rho_d", "rho_s", "alpha"],
-                    "physical_from_gloss": ["L", "c", "d"],
-                    "gloss_distance": ["c1", "d1", "c2", "d2"], "envelope_contrast": ["L"],
-                    "match_gloss": ["rho_d", "rho_s", "L_target"]}
-            if fn in keys:
-                fin = [num(inp[k]) for k in keys[fn]]
-            elif fn in ("rgb_from_lab", "lab_from_rgb", "luminance"):
-                fin = [num(x) for x in inp["lab" if fn == "rgb_from_lab" else "rgb"]]
-            else:
-                raise ValueError(f"{c['id']}: unknown function {fn}")
+        elif fn in SCALAR_INPUTS:
+            jobs.append(Job(c, fn, [num(inp[k]) for k in SCALAR_INPUTS[fn]], [FN[fn], 0, 0, 0]))
+        elif fn in ("rgb_from_lab", "lab_from_rgb", "luminance"):
+            fin = [num(x) for x in inp["lab" if fn == "rgb_from_lab" else "rgb"]]
             jobs.append(Job(c, fn, fin, [FN[fn], 0, 0, 0]))
-    return jobs, skipped
-
+        else:
+            raise ValueError(f"{c['id']}: unknown function {fn}")
+    return jobs
 
 # ---------------------------------------------------------------------------------------
 # Execution
@@ -371,89 +355,10 @@ def _run_fragment(ctx, fin: np.ndarray, uin: np.ndarray, defines: Iterable[str],
     return fout, iout
 
 
+
 # ---------------------------------------------------------------------------------------
-# Comparison
-
-
-@dataclass
-class Stat:
-    checks: int = 0
-    regular: int = 0
-    sanity: int = 0
-    max_rel: float = 0.0
-    max_ratio: float = 0.0
-    worst_rel: str = ""
-    worst_ratio: str = ""
-
-
-@dataclass
-class Report:
-    stats: dict[str, Stat] = field(default_factory=dict)
-    failures: list[str] = field(default_factory=list)
-    waived: dict[str, list[str]] = field(default_factory=dict)
-    skipped_null: int = 0
-    cases: int = 0
-
-    def fail(self, msg: str) -> None:
-        self.failures.append(msg)
-
-    def waive(self, why: str, cid: str) -> None:
-        self.waived.setdefault(why, []).append(cid)
-
-    def summary(self) -> str:
-        lines = [f"{'function output':34s} {'checks':>7s} {'regular':>7s} {'sanity':>6s} "
-                 f"{'max relerr':>11s} {'(case)':>8s} {'max e/tol':>9s} {'(case)':>8s}"]
-        for k in sorted(self.stats):
-            s = self.stats[k]
-            lines.append(f"{k:34s} {s.checks:7d} {s.regular:7d} {s.sanity:6d} {s.max_rel:11.3e} "
-                         f"{s.worst_rel:>8s} {s.max_ratio:9.3g} {s.worst_ratio:>8s}")
-        lines.append(f"cases run: {self.cases}; null_pointer cases skipped (no pointers in GLSL): "
-                     f"{self.skipped_null}")
-        for why, ids in sorted(self.waived.items()):
-            lines.append(f"status waived ({why}): {len(ids)}: {' '.join(sorted(set(ids))[:12])}"
-                         + (" ..." if len(set(ids)) > 12 else ""))
-        return "\n".join(lines)
-
-
-def check(rep: Report, key: str, cid: str, got: float, want: Any, sens: float, tol: dict,
-          extra_rel: float = 0.0, sanity: bool = False, nonneg: bool = False) -> None:
-    st = rep.stats.setdefault(key, Stat())
-    if not math.isfinite(got):
-        rep.fail(f"{cid} {key}: output not finite: {got}")
-        return
-    if want is None:
-        return
-    w = num(want)
-    if sanity:
-        st.sanity += 1
-        if nonneg and got < 0:
-            rep.fail(f"{cid} {key}: negative {got!r}")
-        return
-    st.checks += 1
-    err = abs(got - w)
-    bound = tol["abs"] + (tol["rel"] + extra_rel) * abs(w) + tol["kappa_rel"] * sens
-    rel = err / abs(w) if w != 0 else 0.0
-    ratio = err / bound if bound > 0 else (0.0 if err == 0 else math.inf)
-    if abs(w) >= 1e-30 and sens <= 10 * abs(w):
-        st.regular += 1
-        if rel > st.max_rel or not st.worst_rel:
-            st.max_rel = max(st.max_rel, rel)
-            st.worst_rel = cid
-    if ratio > st.max_ratio or not st.worst_ratio:
-        st.max_ratio = max(st.max_ratio, ratio)
-        st.worst_ratio = cid
-    if not err <= bound:
-        rep.fail(f"{cid} {key}: got {got!r} want {w!r} |err| {err:.3g} > tol {bound:.3g} (sens {sens})")
-
-
-def sens_at(c: dict, out: str, k: int = -1) -> float:
-    s = c.get("sens", {}).get(out)
-    if s is None:
-        return 0.0
-    if k >= 0:
-        s = s[k]
-    return 0.0 if s is None else float(s)
-
+# Comparison (the checks are pgloss_vectors.Report's; what follows reads the shader's slots
+# and applies this layer's float allowances)
 
 def float_key(job: Job) -> tuple:
     with np.errstate(over="ignore"):
@@ -461,7 +366,7 @@ def float_key(job: Job) -> tuple:
                 tuple(job.uin))
 
 
-def classify(job: Job, file_precision: str, groups: dict) -> str | None:
+def classify(job: Job, groups: dict) -> str | None:
     """Why the float status may legitimately differ from the double one, or None.
 
     - "float-unresolvable": another case of the function has the same float32 inputs and a
@@ -469,14 +374,14 @@ def classify(job: Job, file_precision: str, groups: dict) -> str | None:
       that is not float-exact rounds exactly onto a boundary value of the headers (0, 1, 100,
       0.2, 0.8: e.g. L = 100.00000000000001 becomes 100): no float implementation can tell
       them apart; either status (of the siblings) is accepted.
-    - "beyond float range": a finite input or an expected output exceeds FLT_MAX (the C double
+    - "beyond float range": a finite input or an expected output exceeds pv.FLT_MAX (the C double
       function returns OK; in float the input is Inf): NONFINITE or the C status is accepted.
-    - "below float range": a non-zero input is smaller than FLT_MIN (rounds to 0 or a
+    - "below float range": a non-zero input is smaller than pv.FLT_MIN (rounds to 0 or a
       denormal, which GLSL allows to be flushed): any status is accepted, outputs must be
       finite.
     """
     c = job.case
-    if job.fn in ("eval_pdf", "sample"):
+    if job.fn in (pv.BRDF_EVAL, pv.BRDF_SAMPLE):
         return None  # float API: inputs are float-exact
     vals = [x for x in job.fin if math.isfinite(x)]
     exp = c.get("expected", {})
@@ -485,182 +390,126 @@ def classify(job: Job, file_precision: str, groups: dict) -> str | None:
         for x in (v if isinstance(v, list) else [v]):
             if isinstance(x, (int, float)) and not isinstance(x, bool):
                 outs.append(float(x))
-    if any(abs(x) > FLT_MAX for x in vals + outs):
+    if any(abs(x) > pv.FLT_MAX for x in vals + outs):
         return "beyond float range"
-    if any(0 < abs(x) < FLT_MIN for x in vals):
+    if any(0 < abs(x) < pv.FLT_MIN for x in vals):
         return "below float range"
     if len(groups.get(float_key(job), set())) > 1:
         return "float-unresolvable"
     bounds = (0.0, 1.0, 100.0, 0.2, 0.8)
-    if any(math.isfinite(x) and x not in bounds and f32(x) in {f32(b) for b in bounds}
+    if any(math.isfinite(x) and x not in bounds and pv.f32(x) in {pv.f32(b) for b in bounds}
            for x in job.fin):
         return "float-unresolvable"
     return None
 
 
-def compare_file(rep: Report, file: str, doc: dict, jobs: list[Job], fout: np.ndarray,
+# Output slots (fout columns) of the double-API functions in the dispatcher: a slot, or
+# (first slot, component count) for a vector.
+OUTPUT_SLOTS: dict[str, dict[str, int | tuple[int, int]]] = {
+    "lightness_from_luminance": {"L": 0}, "luminance_from_lightness": {"Y": 0},
+    "contrast_gloss": {"c": 0}, "specular_from_contrast": {"rho_s": 0},
+    "gloss_from_physical": {"L": 0, "c": 1, "d": 2},
+    "physical_from_gloss": {"rho_d": 0, "rho_s": 1, "alpha": 2},
+    "gloss_distance": {"D": 0}, "envelope_contrast": {"c_max": 0},
+    "match_gloss": {"rho_d_out": 0, "rho_s_out": 1}, "luminance": {"Y": 0},
+    "rgb_from_lab": {"rgb": (0, 3)}, "lab_from_rgb": {"lab": (0, 3)},
+    "specular_probability": {"P": 0},
+    "perceptual_from_physical": {"L": 0, "a": 1, "b": 2, "c": 3, "d": 4},
+    "physical_from_perceptual": {"rho_d": (0, 3), "rho_s": 3, "alpha_x": 4, "alpha_y": 5},
+    "check_physical": {}, "check_perceptual": {},
+}
+MATERIAL_SLOTS = {"rho_d": (0, 3), "rho_s": 3, "alpha_x": 4, "alpha_y": 5, "inv_alpha_x": 6, "inv_alpha_y": 7,
+                  "spec_scale": 8, "pdf_scale": 9, "weight_diffuse": 10, "weight_specular": 11}
+
+
+def _read(o: np.ndarray, slots: dict) -> dict:
+    return {k: (list(o[v[0]:v[0] + v[1]]) if isinstance(v, tuple) else o[v]) for k, v in slots.items()}
+
+
+def compare_file(rep: pv.Report, file: str, doc: dict, jobs: list[Job], fout: np.ndarray,
                  iout: np.ndarray) -> None:
-    prec = doc["c_precision"]
-    tolt = doc["tolerance"]
-
-    def tol(fn: str, out: str) -> dict:
-        return tolt[fn][out]["float"]
-
     groups: dict[tuple, set] = {}
     for j in jobs:
         groups.setdefault(float_key(j), set()).add(j.case["status"])
-
-    seen: set[str] = set()
+    rows_of: OrderedDict[str, list[int]] = OrderedDict()
     for row, j in enumerate(jobs):
-        c, fn, cid = j.case, j.fn, j.case["id"]
-        if cid not in seen:
-            seen.add(cid)
-            rep.cases += 1
-        o, io = fout[row], iout[row]
-        exp = c.get("expected", {})
-        want_status = STATUS[c["status"]]
+        rows_of.setdefault(j.case["id"], []).append(row)
+
+    for cid, rows in rows_of.items():
+        j = jobs[rows[0]]
+        c, fn = j.case, j.fn
+        rep.ran(fn)
+        o, io = fout[rows[0]], iout[rows[0]]
         got_status = int(io[0])
-        why = classify(j, prec, groups)
-        if fn in ("eval_pdf", "sample", "specular_probability"):
-            if int(io[3]) != 0:
-                rep.fail(f"{cid}: material_init of the case's material returned {io[3]}")
-                continue
-        if fn in ("eval_pdf", "sample") and flushed_to_zero_direction(j):
+        if len({int(iout[r, 0]) for r in rows}) > 1:  # the points of one isogloss call
+            rep.fail(f"{cid} {fn}: the points disagree on the status: {[int(iout[r, 0]) for r in rows]}")
+        if fn in (pv.BRDF_EVAL, pv.BRDF_SAMPLE, "specular_probability") and int(io[3]) != 0:
+            rep.fail(f"{cid}: material_init of the case's material returned {io[3]}")
+            continue
+        if fn in (pv.BRDF_EVAL, pv.BRDF_SAMPLE) and flushed_to_zero_direction(j):
             # GLSL lets the driver flush denormal inputs to 0 (GLSL 4.60 §4.7.1); a direction
             # made only of denormals then becomes the zero direction: ERR_DIRECTION and 0.
-            statuses = [got_status] + ([int(io[1]), int(io[2])] if fn == "eval_pdf" else [])
-            if all(x == STATUS["PGLOSS_ERR_DIRECTION"] for x in statuses):
-                zeros = o[:8] if fn == "eval_pdf" else np.concatenate([o[3:4], o[4:7]])
+            statuses = [got_status] + ([int(io[1]), int(io[2])] if fn == pv.BRDF_EVAL else [])
+            if all(x == pv.STATUS["PGLOSS_ERR_DIRECTION"] for x in statuses):
+                zeros = o[:8] if fn == pv.BRDF_EVAL else np.concatenate([o[3:4], o[4:7]])
                 if np.all(zeros == 0):
                     rep.waive("denormal direction flushed to 0 by the driver", cid)
                 else:
                     rep.fail(f"{cid} {fn}: flushed direction gave ERR_DIRECTION but non-zero outputs")
                 continue
-        if fn == "eval_pdf":
-            names = [("eval", got_status), ("pdf", int(io[1])), ("eval_pdf", int(io[2]))]
-            for name, s in names:
-                if s != want_status:
-                    rep.fail(f"{cid} {name}: status {STATUS_NAME.get(s, s)}, want {c['status']}")
-            sanity = "ill_conditioned" in c.get("tags", [])
-            x = float(c.get("info", {}).get("exponent", 0.0) or 0.0)
-            extra = (3.0 + 2.0 * abs(x)) * ULP
-            for name, fo, po in (("eval", 0, None), ("pdf", None, 3), ("eval_pdf", 4, 7)):
-                if fo is not None:
-                    for k in range(3):
-                        check(rep, f"{name} f", cid, o[fo + k], exp["f"][k], sens_at(c, "f", k),
-                              tol(name, "f"), extra, sanity, True)
-                if po is not None:
-                    check(rep, f"{name} pdf", cid, o[po], exp["pdf"], sens_at(c, "pdf"),
-                          tol(name, "pdf"), extra, sanity, True)
+        if fn == pv.BRDF_EVAL:
+            for name, s in (("eval", got_status), ("pdf", int(io[1])), ("eval_pdf", int(io[2]))):
+                rep.status(name, c, pv.status_name(s))
+            extra = exp_ulp_rel(float(c.get("info", {}).get("exponent", 0.0) or 0.0))
+            rep.brdf_eval(doc, "eval", c, f=o[0:3], precision=PRECISION, extra_rel=extra)
+            rep.brdf_eval(doc, "pdf", c, pdf=o[3], precision=PRECISION, extra_rel=extra)
+            rep.brdf_eval(doc, "eval_pdf", c, f=o[4:7], pdf=o[7], precision=PRECISION, extra_rel=extra)
             continue
-        if fn == "sample":
-            if got_status != want_status:
-                rep.fail(f"{cid} sample: status {STATUS_NAME.get(got_status, got_status)}, want {c['status']}")
-            x = sample_exponent(doc, c)
-            extra = (3.0 + 2.0 * abs(x)) * ULP
-            for k in range(3):
-                check(rep, "sample wi", cid, o[k], None if exp["wi"] is None else exp["wi"][k],
-                      sens_at(c, "wi", k), tol("sample", "wi"))
-                check(rep, "sample weight", cid, o[4 + k], exp["weight"][k], sens_at(c, "weight", k),
-                      tol("sample", "weight"), extra, False, True)
-            check(rep, "sample pdf", cid, o[3], exp["pdf"], sens_at(c, "pdf"), tol("sample", "pdf"),
-                  extra, False, True)
-            if exp.get("lobe") is not None:
-                rep.stats.setdefault("sample lobe", Stat()).checks += 1
-                if int(io[1]) != LOBE[exp["lobe"]]:
-                    rep.fail(f"{cid} sample lobe {io[1]}, want {exp['lobe']}")
-            if num(exp["pdf"]) == 0:
-                if not (o[3] == 0 and o[4] == 0 and o[5] == 0 and o[6] == 0):
-                    rep.fail(f"{cid} sample: rejected sample must have pdf and weight exactly 0")
-            elif exp["wi"] is not None:
-                if abs(math.sqrt(o[0] ** 2 + o[1] ** 2 + o[2] ** 2) - 1) > 1e-5:
-                    rep.fail(f"{cid} sample: wi not unit length")
+        if fn == pv.BRDF_SAMPLE:
+            rep.status("sample", c, pv.status_name(got_status))
+            rep.sample(doc, "sample", c, o[0:3], o[3], o[4:7], io[1], PRECISION,
+                       exp_ulp_rel(sample_exponent(doc, c)))
             continue
 
-        status_ok = got_status == want_status
+        # A double-API function: the status decided in float may legitimately differ.
+        why = classify(j, groups)
+        got_name = pv.status_name(got_status)
+        status_ok = got_name == c["status"]
         if not status_ok:
-            if why == "float-unresolvable" and (len(groups[float_key(j)]) == 1 or
-                                                STATUS_NAME.get(got_status) in groups[float_key(j)]):
-                rep.waive(why, cid)
-            elif why == "beyond float range" and got_status == STATUS["PGLOSS_ERR_NONFINITE"]:
-                rep.waive(why, cid)
+            siblings = groups[float_key(j)]
+            if why == "float-unresolvable" and (len(siblings) == 1 or got_name in siblings):
+                rep.waive(f"status: {why}", cid)
+            elif why == "beyond float range" and got_name == "PGLOSS_ERR_NONFINITE":
+                rep.waive(f"status: {why}", cid)
             elif why == "below float range":
-                rep.waive(why, cid)
+                rep.waive(f"status: {why}", cid)
             else:
-                rep.fail(f"{cid} {fn}: status {STATUS_NAME.get(got_status, got_status)}, want "
-                         f"{c['status']} (input {c['input']})")
+                rep.status(fn, c, got_name)
         # Values are compared whenever the status agrees, except where an input is outside
-        # float range (there the float input is a different number altogether).
-        compare_values = status_ok and why in (None, "float-unresolvable")
-
-        def chk(out: str, got: float, want: Any, sens: float, t: dict | None = None) -> None:
-            if not compare_values:
-                if not math.isfinite(got):
-                    rep.fail(f"{cid} {fn} {out}: not finite")
-                return
-            check(rep, f"{fn} {out}", cid, got, want, sens, t if t is not None else tol(fn, out))
-
-        if fn in ("check_physical", "check_perceptual"):
-            rep.stats.setdefault(f"{fn} status", Stat()).checks += 1
-            continue
+        # float range (there the float input is a different number altogether); elsewhere
+        # they must be finite.
+        values = status_ok and why in (None, "float-unresolvable")
         if fn == "material_init":
-            if "lobes" not in exp or not compare_values:
-                continue
-            if int(io[1]) != int(exp["lobes"]):
-                rep.fail(f"{cid} material_init lobes {io[1]}, want {exp['lobes']}")
-            if got_status != 0:
-                if not (o[12] == 0 and o[13] == 0 and o[14] == 0):
-                    rep.fail(f"{cid} material_init: a failed init must give a black material")
-                continue
-            if int(io[2]) != int(c["input"]["p"]["normalization"]):
-                rep.fail(f"{cid} material_init normalization {io[2]}")
-            for k in range(3):
-                chk("rho_d", o[k], exp["rho_d"][k], sens_at(c, "rho_d", k))
-            for k, name in enumerate(["rho_s", "alpha_x", "alpha_y", "inv_alpha_x", "inv_alpha_y",
-                                      "spec_scale", "pdf_scale", "weight_diffuse", "weight_specular"]):
-                chk(name, o[3 + k], exp[name], sens_at(c, name))
+            got = _read(o, MATERIAL_SLOTS)
+            got.update(lobes=int(io[1]), normalization=int(io[2]), black=bool(np.all(o[12:15] == 0)))
+            rep.material_init(doc, c, got_name, got, PRECISION, values)
             continue
-        outs: dict[str, list[tuple[int, int]]] = {
-            "lightness_from_luminance": [("L", 0)], "luminance_from_lightness": [("Y", 0)],
-            "contrast_gloss": [("c", 0)], "specular_from_contrast": [("rho_s", 0)],
-            "gloss_from_physical": [("L", 0), ("c", 1), ("d", 2)],
-            "physical_from_gloss": [("rho_d", 0), ("rho_s", 1), ("alpha", 2)],
-            "gloss_distance": [("D", 0)], "envelope_contrast": [("c_max", 0)],
-            "match_gloss": [("rho_d_out", 0), ("rho_s_out", 1)], "luminance": [("Y", 0)],
-            "specular_probability": [("P", 0)],
-            "perceptual_from_physical": [("L", 0), ("a", 1), ("b", 2), ("c", 3), ("d", 4)],
-            "physical_from_perceptual": [("rho_s", 3), ("alpha_x", 4), ("alpha_y", 5)],
-        }.get(fn, [])
         if fn == "isogloss_contour":
-            k = j.point
-            if int(c["input"]["n"]) == 0:
-                continue
-            chk("c", o[0], exp["c"][k], sens_at(c, "c", k))
-            chk("d", o[1], exp["d"][k], sens_at(c, "d", k))
-            continue
-        if fn in ("rgb_from_lab", "lab_from_rgb"):
-            out = "rgb" if fn == "rgb_from_lab" else "lab"
-            for k in range(3):
-                w = exp[out]
-                chk(out, o[k], None if w is None else w[k], sens_at(c, out, k))
-            continue
-        if fn == "physical_from_perceptual":
-            w = exp.get("rho_d")
-            for k in range(3):
-                chk("rho_d", o[k], None if w is None else w[k], sens_at(c, "rho_d", k))
-            if exp.get("normalization") is not None and int(io[1]) != int(exp["normalization"]):
-                rep.fail(f"{cid} physical_from_perceptual normalization {io[1]}")
-        for name, k in outs:
-            if name in exp:
-                chk(name, o[k], exp[name], sens_at(c, name))
+            n = int(c["input"]["n"])  # one job per point (one, unused, for n = 0)
+            got = {"c": [fout[r, 0] for r in rows[:n]], "d": [fout[r, 1] for r in rows[:n]]}
+        else:
+            got = _read(o, OUTPUT_SLOTS[fn])
+            if fn == "physical_from_perceptual":
+                got["normalization"] = int(io[1])
+        rep.outputs(doc, fn, c, got, PRECISION, values)
 
 
 def flushed_to_zero_direction(job: Job) -> bool:
     """True if wo (or wi, for eval) has a denormal component and is all zero after flushing
     denormals to zero."""
-    dirs = [job.fin[6:9]] + ([job.fin[9:12]] if job.fn == "eval_pdf" else [])
+    dirs = [job.fin[6:9]] + ([job.fin[9:12]] if job.fn == pv.BRDF_EVAL else [])
     for d in dirs:
-        if any(0 < abs(x) < FLT_MIN for x in d) and all(abs(x) < FLT_MIN for x in d):
+        if any(0 < abs(x) < pv.FLT_MIN for x in d) and all(abs(x) < pv.FLT_MIN for x in d):
             return True
     return False
 
@@ -668,30 +517,30 @@ def flushed_to_zero_direction(job: Job) -> bool:
 def sample_exponent(doc: dict, c: dict) -> float:
     """x = ((h.x/αx)² + (h.y/αy)²)/h.z² at the expected wi (only scales the exp ULP term)."""
     e = c["expected"]
-    if e.get("wi") is None or num(e["pdf"]) == 0:
+    if e.get("wi") is None or pv.num(e["pdf"]) == 0:
         return 0.0
     m = doc["materials"][c["input"]["material"]]
-    wo = np.array([num(x) for x in c["input"]["wo"]])
+    wo = np.array([pv.num(x) for x in c["input"]["wo"]])
     n = np.linalg.norm(wo)
     if not np.isfinite(n) or n == 0:
         return 0.0
-    h = wo / n + np.array([num(x) for x in e["wi"]])
-    ax, ay = max(num(m["alpha_x"]), 1e-4), max(num(m["alpha_y"]), 1e-4)
+    h = wo / n + np.array([pv.num(x) for x in e["wi"]])
+    ax, ay = max(pv.num(m["alpha_x"]), 1e-4), max(pv.num(m["alpha_y"]), 1e-4)
     if h[2] <= 0:
         return 0.0
     return float(((h[0] / ax) ** 2 + (h[1] / ay) ** 2) / h[2] ** 2)
 
 
-def run_all(ctx, files: Iterable[str] = FILES, defines: Iterable[str] = (),
-            select: Callable[[Job], bool] | None = None, stage: str = "comp") -> Report:
-    rep = Report()
+def run_all(ctx, files: Iterable[str] = pv.FILES, defines: Iterable[str] = (),
+            select: Callable[[Job], bool] | None = None, stage: str = "comp") -> pv.Report:
+    rep = pv.Report()
     for file in files:
-        doc = json.loads((VECTORS / file).read_text())
-        if doc.get("format") != "pgloss-vectors" or doc.get("version") != 1:
-            rep.fail(f"{file}: not a pgloss-vectors version 1 file")
+        try:
+            doc = pv.load(file)
+            jobs = jobs_of(file, rep)
+        except pv.VectorsError as e:
+            rep.fail(str(e))
             continue
-        jobs, skipped = jobs_of(doc, file)
-        rep.skipped_null += skipped
         if select is not None:
             jobs = [j for j in jobs if select(j)]
         if not jobs:
@@ -705,9 +554,8 @@ def run_all(ctx, files: Iterable[str] = FILES, defines: Iterable[str] = (),
 if __name__ == "__main__":
     ctx = create_context()
     print("renderer:", ctx.info["GL_RENDERER"], "|", ctx.info["GL_VERSION"])
-    import sys
-    r = run_all(ctx, stage=sys.argv[1] if len(sys.argv) > 1 else "comp")
-    print(r.summary())
-    print(f"{len(r.failures)} failures")
+    stage = sys.argv[1] if len(sys.argv) > 1 else "comp"
+    r = run_all(ctx, stage=stage)
+    print(r.summary(f"pgloss vectors (GLSL, {STAGES[stage]} {'compute' if stage == 'comp' else 'fragment'} stage)"))
     for f in r.failures[:60]:
         print("  ", f)

@@ -4,7 +4,8 @@
 * the render readback used by the vector tests is exact (known float32 values, negative,
   tiny and huge ones, come back bit for bit);
 * every shared vector (tests/vectors/*.json) is executed through osl/pgloss.h and meets the
-  vectors' float tolerances (vectors_osl.py); only null_pointer cases are skipped;
+  vectors' float tolerances (vectors_osl.py, judged by tests/vectors/pgloss_vectors.py); only
+  null_pointer cases are skipped;
 * pgloss_params.osl and pgloss_material.osl run: the params shader reproduces Fig. 12's
   physical parameters from the perceptual ones.
 Run with scripts/test-osl.sh (which sets up the venv).
@@ -59,16 +60,16 @@ def test_readback_is_exact() -> None:
 
 
 @pytest.fixture(scope="module")
-def vector_report() -> vo.Report:
-    rep = vo.Report()
+def vector_report() -> vo.pv.Report:
+    rep = vo.pv.Report()
     for f in vo.FILES:
         p = vo.prepare(f)
         vo.check(p, vo.execute(p), rep)
-    print("\n" + vo.summary(rep))
+    print("\n" + rep.summary(vo.TITLE))
     return rep
 
 
-def test_vectors_all_files_and_functions(vector_report: vo.Report) -> None:
+def test_vectors_all_files_and_functions(vector_report: vo.pv.Report) -> None:
     names = {k.split()[0] for k in vector_report.stats}
     for fn in ("lightness_from_luminance", "luminance_from_lightness", "contrast_gloss", "specular_from_contrast",
                "gloss_from_physical", "physical_from_gloss", "gloss_distance", "envelope_contrast", "match_gloss",
@@ -76,10 +77,10 @@ def test_vectors_all_files_and_functions(vector_report: vo.Report) -> None:
                "perceptual_from_physical", "material_init", "specular_probability", "eval", "pdf", "eval_pdf",
                "sample"):
         assert fn in names, f"no checked output for {fn}"
-    assert vector_report.cases > 3900
+    assert vector_report.n_cases > 3900
 
 
-def test_vectors_pass(vector_report: vo.Report) -> None:
+def test_vectors_pass(vector_report: vo.pv.Report) -> None:
     assert not vector_report.failures, "\n".join(vector_report.failures[:50])
 
 

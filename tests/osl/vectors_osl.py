@@ -4,59 +4,43 @@ For each vector file a driver shader is generated: its array parameters hold eve
 inputs (float32, the only precision OSL has; non-finite inputs as codes), and each pixel of
 the render runs one case through the pgloss.h function the case names and emits a slice of
 its results: [status, count of non-finite outputs, outputs...] (Cycles would turn a NaN
-into 0, so non-finiteness is counted in the shader). The results are compared in double with
-the tolerance model of tests/vectors/README.md, in the same way as tests/test_vectors.cpp:
+into 0, so non-finiteness is counted in the shader). The results are judged by the shared
+module tests/vectors/pgloss_vectors.py (loading, the tolerance model of tests/vectors/README.md,
+the logic of tests/test_vectors.cpp, and the report):
 
     |got - want| <= abs + rel |want| + kappa_rel sens
 
-with (rel, kappa_rel, abs) from the file's "float" column (OSL floats are 32-bit; the double
-column, 1e-12, is out of reach of any float implementation), null expected values checked
-for finiteness only, and ill_conditioned cases checked for finiteness and sign only. Cases
-tagged null_pointer are skipped (OSL has no pointers; the README allows it); nothing else is.
+with (rel, kappa_rel, abs) from the file's "float" column (PRECISION: OSL floats are 32-bit;
+the double column, 1e-12, is out of reach of any float implementation), null expected values
+checked for finiteness only, and ill_conditioned cases checked for finiteness and sign only.
+Cases tagged null_pointer are skipped (OSL has no pointers; the README allows it); nothing
+else is. What is this layer's own: the driver shader and its readback, and the cases whose
+status a float input cannot decide (boundary_alternative(): redecided by the C core at the
+float-rounded input).
 """
 from __future__ import annotations
 
-import json
 import math
-import struct
-from dataclasses import dataclass, field
+import sys
+from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Callable
+from typing import Callable
 
 import numpy as np
 
 import cref
 from oslrt import OSL_DIR, REPO, WORK, render_shader
 
-VECTORS = REPO / "tests" / "vectors"
-FLT_MAX = float(np.finfo(np.float32).max)
+sys.path.insert(0, str(REPO / "tests" / "vectors"))
+import pgloss_vectors as pv  # noqa: E402
+from pgloss_vectors import FILES, f32, num  # noqa: E402,F401  (FILES: the files test_osl.py runs)
 
-STATUS = {
-    "PGLOSS_OK": 0, "PGLOSS_WARN_ALPHA_UNTRUSTED": 1, "PGLOSS_ERR_NULL": -1,
-    "PGLOSS_ERR_NONFINITE": -2, "PGLOSS_ERR_NEGATIVE": -3, "PGLOSS_ERR_ALPHA": -4,
-    "PGLOSS_ERR_ENERGY": -5, "PGLOSS_ERR_ENVELOPE": -6, "PGLOSS_ERR_LIGHTNESS": -7,
-    "PGLOSS_ERR_GAMUT": -8, "PGLOSS_ERR_DIRECTION": -9, "PGLOSS_ERR_NORMALIZATION": -10,
-    "PGLOSS_ERR_ARGUMENT": -11, "PGLOSS_ERR_RANDOM": -12,
-}
-STATUS_NAME = {v: k for k, v in STATUS.items()}
-LOBE = {"PGLOSS_LOBE_NONE": 0, "PGLOSS_LOBE_DIFFUSE": 1, "PGLOSS_LOBE_SPECULAR": 2}
+# OSL floats are 32-bit: every file is held to the vectors' float tolerance column.
+PRECISION = "float"
 ISO_MAX = 360  # largest isogloss n in the driver
 # Cycles zeroes a pixel whose |R| + |G| + |B| overflows float (e.g. three values near FLT_MAX):
 # the driver emits its results times 2^-2 (exact) and the reader multiplies by 4.
 SCALE = 0.25
-
-
-def num(v: Any) -> float:
-    """A JSON number or one of the strings "nan", "inf", "-inf"."""
-    if isinstance(v, str):
-        return {"nan": math.nan, "inf": math.inf, "-inf": -math.inf}[v]
-    return float(v)
-
-
-def f32(x: float) -> float:
-    """x rounded to float32 (what an OSL float parameter holds), as a Python float."""
-    with np.errstate(over="ignore"):
-        return float(np.float32(x))
 
 
 def int32(v: int) -> int:
@@ -207,7 +191,7 @@ class Prepared:
     file: str
     doc: dict
     cases: list  # (case dict, function name) actually run
-    skipped: list  # null_pointer cases
+    skipped: list  # (case dict, function name): null_pointer cases
     K: int  # pixels per case
     W: int
     H: int
@@ -217,13 +201,13 @@ class Prepared:
 
 def prepare(file: str) -> Prepared:
     """Writes the driver shader for one vector file."""
-    doc = json.loads((VECTORS / file).read_text())
+    doc = pv.load(file)
     brdf = file.startswith("brdf_")
     run, skipped = [], []
     for c in doc["cases"]:
-        name = "brdf_eval" if file == "brdf_eval.json" else "brdf_sample" if file == "brdf_sample.json" else c["function"]
-        if "null_pointer" in c.get("tags", []) or "null" in c["input"]:
-            skipped.append(c)
+        name = pv.case_function(file, c)  # brdf_*.json: pv.BRDF_EVAL / pv.BRDF_SAMPLE, the FNS names
+        if pv.is_null_case(c):
+            skipped.append((c, name))
             continue
         run.append((c, name))
     nf = max(len(FNS[n].floats(c)) for c, n in run)
@@ -323,179 +307,65 @@ def execute(p: Prepared) -> np.ndarray:
 
 
 # ------------------------------------------------------------------------------------------
-# Checking (the logic of tests/test_vectors.cpp).
+# Checking: the shared pgloss_vectors.Report judges; this reads the driver's result slots.
+
+REDECIDED = ("decided within float resolution of a boundary: status and values of the C core at the float "
+             "input or 4 ulps from it")
 
 
-@dataclass
-class Stat:
-    checks: int = 0
-    regular: int = 0
-    sanity: int = 0
-    max_rel: float = 0.0
-    max_ratio: float = 0.0
-    worst_rel: str = ""
-    worst_ratio: str = ""
+def _outputs(fn: Fn, res: np.ndarray) -> dict:
+    """The driver's result slots of a function, by output name (a list for a vector)."""
+    return {key: (list(res[i0:i0 + n]) if n > 1 else res[i0]) for key, (i0, n) in fn.outs.items()}
 
 
-@dataclass
-class Report:
-    stats: dict = field(default_factory=dict)
-    failures: list = field(default_factory=list)
-    skipped: int = 0
-    cases: int = 0
-    redecided: list = field(default_factory=list)
-
-    def stat(self, key: str) -> Stat:
-        return self.stats.setdefault(key, Stat())
-
-
-def _tol(doc: dict, fn: str, out: str) -> tuple:
-    t = doc["tolerance"][fn][out]["float"]
-    return t["rel"], t["kappa_rel"], t["abs"]
-
-
-def _check(rep: Report, key: str, cid: str, got: float, want: Any, sens: float, tol: tuple,
-           sanity: bool = False, nonneg: bool = False) -> None:
-    st = rep.stat(key)
-    if want is None:
-        return  # finiteness is checked through the shader's non-finite count
-    w = num(want)
-    if sanity:
-        st.sanity += 1
-        if nonneg and got < 0:
-            rep.failures.append(f"{cid} {key}: negative {got!r}")
-        return
-    st.checks += 1
-    rel, kappa, ab = tol
-    err = abs(got - w)
-    lim = ab + rel * abs(w) + kappa * sens
-    r = err / abs(w) if w != 0 else 0.0
-    ratio = err / lim if lim > 0 else (0.0 if err == 0 else math.inf)
-    if abs(w) >= 1e-30 and sens <= 10 * abs(w):
-        st.regular += 1
-        if r > st.max_rel or not st.worst_rel:
-            st.max_rel, st.worst_rel = max(st.max_rel, r), cid
-    if ratio > st.max_ratio or not st.worst_ratio:
-        st.max_ratio, st.worst_ratio = max(st.max_ratio, ratio), cid
-    if not err <= lim:
-        rep.failures.append(f"{cid} {key}: got {got!r} want {w!r} |err| {err:.3g} > tol {lim:.3g} (sens {sens})")
-
-
-def _sens(c: dict, out: str, k: int) -> float:
-    s = c.get("sens", {}).get(out)
-    if s is None:
-        return 0.0
-    if isinstance(s, list):
-        return 0.0 if s[k] is None else float(s[k])
-    return float(s)
-
-
-def check(p: Prepared, results: np.ndarray, rep: Report) -> None:
+def check(p: Prepared, results: np.ndarray, rep: pv.Report) -> None:
     """Compares one file's rendered results with its expected values."""
     doc = p.doc
-    rep.skipped += len(p.skipped)
+    for _, name in p.skipped:
+        rep.skip_null(name)
     for (c, name), r, (fl, it, inexact) in zip(p.cases, results, p.as_float):
-        rep.cases += 1
-        if name in cref_names() and STATUS_NAME.get(int(r[0])) != c["status"]:
+        rep.ran(name)
+        got_status = pv.status_name(r[0])
+        if name in cref_names() and got_status != c["status"]:
             # A status decided within float resolution of a boundary of the header (α = 0.2,
             # L = 100, ρd + ρs = 1, the envelope, float overflow/underflow of a double input):
             # accepted if the C core takes it at the float-rounded input or within 4 float ulps
             # of it; the values are then those of the C core there.
-            alt = boundary_alternative(name, fl, it, STATUS_NAME.get(int(r[0]), "?"))
+            alt = boundary_alternative(name, fl, it, got_status)
             if alt is not None:
                 c = dict(c, status=alt[0], expected={k: v for k, v in alt[1].items() if k in c["expected"]})
-                rep.redecided.append(c["id"])
+                rep.waive(REDECIDED, c["id"])
         cid = c["id"]
         fn = FNS[name]
-        status = int(r[0])
         bad = int(r[1])
         res = r[2:]
-        sanity = "ill_conditioned" in c.get("tags", [])
         if bad:
-            rep.failures.append(f"{cid} {name}: {bad} non-finite output(s)")
-        e = c["expected"]
-        if name == "brdf_eval":
-            for label, st in (("eval", status), ("pdf", int(res[8])), ("eval_pdf", int(res[9]))):
-                if STATUS_NAME.get(st) != c["status"]:
-                    rep.failures.append(f"{cid} {label}: status {STATUS_NAME.get(st, st)} want {c['status']}")
+            rep.fail(f"{cid} {name}: {bad} non-finite output(s)")
+        if name == pv.BRDF_EVAL:
+            for label, st in (("eval", r[0]), ("pdf", res[8]), ("eval_pdf", res[9])):
+                rep.status(label, c, pv.status_name(st))
             if int(res[10]) != 0:
-                rep.failures.append(f"{cid}: material_init failed ({int(res[10])})")
-            for label, key in (("eval", "f"), ("pdf", "pdf"), ("eval_pdf", "f"), ("eval_pdf", "pdf")):
-                i0, n = fn.outs[f"{label}.{key}"]
-                tol = _tol(doc, label, key)
-                if key == "f":
-                    for k in range(3):
-                        _check(rep, f"{label} f", cid, res[i0 + k], e["f"][k], _sens(c, "f", k), tol, sanity, True)
-                else:
-                    _check(rep, f"{label} pdf", cid, res[i0], e["pdf"], _sens(c, "pdf", -1), tol, sanity, True)
+                rep.fail(f"{cid}: material_init failed ({int(res[10])})")
+            rep.brdf_eval(doc, "eval", c, f=res[0:3], precision=PRECISION)
+            rep.brdf_eval(doc, "pdf", c, pdf=res[3], precision=PRECISION)
+            rep.brdf_eval(doc, "eval_pdf", c, f=res[4:7], pdf=res[7], precision=PRECISION)
             continue
-        label = "sample" if name == "brdf_sample" else name
-        if STATUS_NAME.get(status) != c["status"]:
-            rep.failures.append(f"{cid} {label}: status {STATUS_NAME.get(status, status)} want {c['status']}"
-                                f" input {json.dumps(c['input'])}")
-        if name == "brdf_sample":
+        if name == pv.BRDF_SAMPLE:
+            rep.status("sample", c, got_status)
             if int(res[8]) != 0:
-                rep.failures.append(f"{cid}: material_init failed ({int(res[8])})")
-            tw = _tol(doc, "sample", "wi")
-            for k in range(3):
-                _check(rep, "sample wi", cid, res[k], None if e["wi"] is None else e["wi"][k], _sens(c, "wi", k),
-                       tw, sanity)
-                _check(rep, "sample weight", cid, res[4 + k], e["weight"][k], _sens(c, "weight", k),
-                       _tol(doc, "sample", "weight"), sanity, True)
-            _check(rep, "sample pdf", cid, res[3], e["pdf"], _sens(c, "pdf", -1), _tol(doc, "sample", "pdf"), sanity,
-                   True)
-            if e["lobe"] is not None:
-                rep.stat("sample lobe").checks += 1
-                if int(res[7]) != LOBE[e["lobe"]]:
-                    rep.failures.append(f"{cid} sample lobe: {int(res[7])} want {e['lobe']}")
-            if e["pdf"] is not None and num(e["pdf"]) == 0:
-                if res[3] != 0 or any(res[4 + k] != 0 for k in range(3)):
-                    rep.failures.append(f"{cid} sample: rejected sample must have pdf and weight exactly 0")
+                rep.fail(f"{cid}: material_init failed ({int(res[8])})")
+            rep.sample(doc, "sample", c, res[0:3], res[3], res[4:7], res[7], PRECISION)
             continue
+        rep.status(name, c, got_status)
+        got = _outputs(fn, res)
         if name == "material_init":
-            if "lobes" not in e:
-                continue
-            rep.stat("material_init lobes").checks += 1
-            if int(res[0]) != e["lobes"]:
-                rep.failures.append(f"{cid} material_init lobes {int(res[0])} want {e['lobes']}")
-            if c["status"] != "PGLOSS_OK":
-                if res[14] != 0:
-                    rep.failures.append(f"{cid} material_init: a failed init must give a black material")
-                continue
-            for key, (i0, n) in fn.outs.items():
-                if key in ("lobes", "black", "normalization"):
-                    continue
-                tol = _tol(doc, "material_init", key)
-                for k in range(n):
-                    want = e[key][k] if n > 1 else e[key]
-                    _check(rep, f"material_init {key}", cid, res[i0 + k], want, _sens(c, key, k if n > 1 else -1), tol)
-            rep.stat("material_init normalization").checks += 1
-            if int(res[13]) != int32(c["input"]["p"]["normalization"]):
-                rep.failures.append(f"{cid} material_init normalization {int(res[13])}")
-            continue
-        if name == "isogloss_contour":
-            if "c" not in e:
-                continue
+            got["black"] = got["black"] == 0
+            rep.material_init(doc, c, got_status, got, PRECISION)
+        elif name == "isogloss_contour":
             n = int(c["input"]["n"])
-            for key in ("c", "d"):
-                i0 = fn.outs[key][0]
-                tol = _tol(doc, name, key)
-                for k in range(n):
-                    _check(rep, f"{name} {key}", cid, res[i0 + k], e[key][k], _sens(c, key, k), tol)
-            continue
-        for key, (i0, n) in fn.outs.items():
-            if key not in e:
-                continue
-            if key == "normalization":
-                if e[key] is not None:
-                    rep.stat(f"{name} normalization").checks += 1
-                    if int(res[i0]) != e[key]:
-                        rep.failures.append(f"{cid} {name} normalization {int(res[i0])} want {e[key]}")
-                continue
-            tol = _tol(doc, name, key)
-            for k in range(n):
-                want = (None if e[key] is None else e[key][k]) if n > 1 else e[key]
-                _check(rep, f"{name} {key}", cid, res[i0 + k], want, _sens(c, key, k if n > 1 else -1), tol)
+            rep.outputs(doc, name, c, {"c": list(res[0:n]), "d": list(res[ISO_MAX:ISO_MAX + n])}, PRECISION)
+        else:
+            rep.outputs(doc, name, c, got, PRECISION)
 
 
 def cref_names() -> set:
@@ -520,30 +390,14 @@ def boundary_alternative(name: str, fl: list, it: list, status: str):
     return None
 
 
-FILES = ["lightness.json", "gloss.json", "color.json", "validity.json", "perceptual_material.json",
-         "material.json", "brdf_eval.json", "brdf_sample.json"]
-
-
-def summary(rep: Report) -> str:
-    lines = ["pgloss OSL vectors: largest error per function and output (float tolerance column)",
-             f"{'function output':34s} {'checks':>7s} {'regular':>7s} {'sanity':>6s} {'max relerr':>11s} {'(case)':>8s}"
-             f" {'max e/tol':>9s} {'(case)':>8s}"]
-    for k in sorted(rep.stats):
-        s = rep.stats[k]
-        lines.append(f"{k:34s} {s.checks:7d} {s.regular:7d} {s.sanity:6d} {s.max_rel:11.3e} {s.worst_rel:>8s}"
-                     f" {s.max_ratio:9.3g} {s.worst_ratio:>8s}")
-    lines.append(f"cases decided within float resolution of a boundary (status and values of the C core at the"
-                 f" float input or 4 ulps from it): {len(rep.redecided)} ({' '.join(rep.redecided)})")
-    lines.append(f"cases run: {rep.cases}, skipped (null_pointer, as the vectors README allows): {rep.skipped},"
-                 f" failures: {len(rep.failures)}")
-    return "\n".join(lines)
+TITLE = "pgloss vectors (OSL in Cycles, float tolerance column)"
 
 
 if __name__ == "__main__":
     import sys
     import time
 
-    rep = Report()
+    rep = pv.Report()
     for f in sys.argv[1:] or FILES:
         t0 = time.time()
         p = prepare(f)
@@ -552,4 +406,4 @@ if __name__ == "__main__":
         print(f"{f}: {len(p.cases)} cases, {p.W}x{p.H} px, {time.time() - t0:.1f} s", flush=True)
     for x in rep.failures[:60]:
         print("FAIL", x)
-    print(summary(rep))
+    print(rep.summary(TITLE))

@@ -1,6 +1,7 @@
 """pytest set-up for the Python package's tests.
 
-* ``tests/python`` is put on ``sys.path`` so that the helper module ``vectors`` imports.
+* ``tests/vectors`` is put on ``sys.path`` so that the shared vector module ``pgloss_vectors``
+  (loading, tolerance model and report of the shared test vectors) imports.
 * The package under test is the *installed* one (``pip install .``), never the source tree:
   the source folder has no compiled ``_core``.
 * With PGLOSS_REQUIRE_ALL=1 (set by scripts/test.sh and CI) a skipped test is a failure.
@@ -12,16 +13,30 @@ from __future__ import annotations
 import os
 import sys
 from pathlib import Path
+from typing import Optional
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
+import pytest
 
-import vectors  # noqa: E402
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "vectors"))
+
+import pgloss_vectors as pv  # noqa: E402
+
+_session: Optional[pv.Report] = None
+
+
+@pytest.fixture(scope="session")
+def vector_report() -> pv.Report:
+    """The session's report of the shared vectors; each test checks through a child of it."""
+    global _session
+    if _session is None:
+        _session = pv.Report()
+    return _session
 
 
 def pytest_terminal_summary(terminalreporter, exitstatus, config):  # noqa: D103
-    if vectors.STATS:
+    if _session is not None and _session.stats:
         terminalreporter.write_line("")
-        for line in vectors.summary_lines():
+        for line in _session.summary_lines("pgloss vectors (Python)"):
             terminalreporter.write_line(line)
     if os.environ.get("PGLOSS_REQUIRE_ALL") == "1":
         skipped = terminalreporter.stats.get("skipped", [])

@@ -3,15 +3,15 @@
 Every case of every file goes through the public Python function of the same name, one
 call per case (a scalar call: Python floats in, Python floats out); the BRDF cases are also
 run as arrays, grouped by (material, lobe mask) like the C runner's batches, in float32 (the
-vectorised batched path) and in float64 (the scalar reference path). Tolerances: the C
-runner's (tests/vectors/README.md). A core error is a PglossError whose status must be the
+vectorised batched path) and in float64 (the scalar reference path). Loading, tolerances
+(the file's c_precision column: the package computes in the core's precision) and the report
+are the shared module tests/vectors/pgloss_vectors.py (the logic of the C runner). A core error is a PglossError whose status must be the
 expected one; the outputs the core wrote (its documented fallback, or the computed values
 for GAMUT / ENVELOPE) are on the exception's ``result`` and are checked too.
 """
 
 from __future__ import annotations
 
-import math
 import warnings
 from collections import OrderedDict
 from typing import Any, Callable, Dict, List, Tuple
@@ -20,8 +20,8 @@ import numpy as np
 import pytest
 
 import pgloss
-from vectors import (FILES, SKIPPED_NULL, Checker, cases, has_tag, is_null_case, load, num, sens_at,
-                     tolerance)
+import pgloss_vectors as pv
+from pgloss_vectors import first_error, groups_of, load, num
 
 
 def run(thunk: Callable[[], Any]) -> Tuple[str, Any]:
@@ -49,25 +49,13 @@ def perceptual(q: Dict[str, Any]) -> pgloss.Perceptual:
 
 
 def test_files_present_and_covered() -> None:
-    want = {
-        "lightness.json": ["lightness_from_luminance", "luminance_from_lightness"],
-        "gloss.json": ["contrast_gloss", "specular_from_contrast", "gloss_from_physical", "physical_from_gloss",
-                       "gloss_distance", "envelope_contrast", "match_gloss", "isogloss_contour"],
-        "color.json": ["rgb_from_lab", "lab_from_rgb", "luminance"],
-        "validity.json": ["check_physical", "check_perceptual"],
-        "perceptual_material.json": ["physical_from_perceptual", "perceptual_from_physical"],
-        "material.json": ["material_init", "specular_probability"],
-        "brdf_eval.json": ["eval", "pdf", "eval_pdf", "eval_batch", "pdf_batch", "eval_pdf_batch"],
-        "brdf_sample.json": ["sample", "sample_batch"],
-    }
-    for name in FILES:
-        doc = load(name)
-        for fn in want[name]:
-            assert fn in doc["functions"], f"{name} lacks {fn}"
+    chk = pv.Report()
+    pv.check_coverage(chk)
+    chk.finish("vector files")
+    for fns in pv.FUNCTIONS.values():
+        for fn in fns:
             # Every C function of the vectors has its Python twin (one name across languages).
             assert callable(getattr(pgloss, fn.replace("_batch", ""))), fn
-        ids = [c["id"] for c in doc["cases"]]
-        assert len(ids) == len(set(ids)), f"{name}: duplicate ids"
 
 
 # ------------------------------------------------------------------------------------------------
@@ -117,49 +105,30 @@ DOUBLE_FUNCS: "OrderedDict[str, Tuple[str, Callable, Callable]]" = OrderedDict([
 
 
 @pytest.mark.parametrize("fn", list(DOUBLE_FUNCS))
-def test_double_function(fn: str) -> None:
+def test_double_function(fn: str, vector_report: pv.Report) -> None:
     file, make, outputs = DOUBLE_FUNCS[fn]
     doc = load(file)
-    chk = Checker()
+    chk = vector_report.child()
     n = 0
-    for c in cases(file, fn):
-        if is_null_case(c):
-            SKIPPED_NULL[fn] = SKIPPED_NULL.get(fn, 0) + 1
-            continue
+    for _, c in pv.runnable(file, chk, fn):
         n += 1
+        chk.ran(fn)
         status, res = run(make(c["input"]))
         chk.status(fn, c, status)
-        expected = c["expected"]
         if res is None:
             chk.fail(f"{c['id']} {fn}: no outputs (result None)")
             continue
-        got = outputs(res)
-        for out, want in expected.items():
-            if out == "normalization":
-                if want is not None and got[out] != int(want):
-                    chk.fail(f"{c['id']} {fn}: normalization {got[out]} want {want}")
-                continue
-            tol = tolerance(doc, fn, out) if want is not None else None
-            if isinstance(want, list) or isinstance(got[out], list):
-                g = got[out]
-                if want is not None and len(g) != len(want):
-                    chk.fail(f"{c['id']} {fn} {out}: {len(g)} values, want {len(want)}")
-                    continue
-                for k in range(len(g)):
-                    chk.value(fn, out, c, g[k], None if want is None else want[k], sens_at(c, out, k), tol)
-            else:
-                chk.value(fn, out, c, got[out], want, sens_at(c, out), tol)
+        chk.outputs(doc, fn, c, outputs(res))
     assert n > 0
     chk.finish(fn)
 
 
 @pytest.mark.parametrize("fn", ["check_physical", "check_perceptual"])
-def test_validity(fn: str) -> None:
-    chk = Checker()
-    for c in cases("validity.json", fn):
-        if is_null_case(c):
-            SKIPPED_NULL[fn] = SKIPPED_NULL.get(fn, 0) + 1
-            continue
+def test_validity(fn: str, vector_report: pv.Report) -> None:
+    doc = load("validity.json")
+    chk = vector_report.child()
+    for _, c in pv.runnable("validity.json", chk, fn):
+        chk.ran(fn)
         with warnings.catch_warnings():
             warnings.simplefilter("error")  # the check functions report, they never warn or raise
             if fn == "check_physical":
@@ -170,6 +139,7 @@ def test_validity(fn: str) -> None:
                 assert st == perceptual(c["input"]["q"]).check()
         assert isinstance(st, pgloss.Status)
         chk.status(fn, c, st.c_name)
+        chk.outputs(doc, fn, c, {})
     chk.finish(fn)
 
 
@@ -181,110 +151,71 @@ def _material_is_black(m: pgloss.Material) -> bool:
     return bool(np.all(f == 0))
 
 
-def test_material_init() -> None:
+MATERIAL_FIELDS = ("rho_d", "rho_s", "alpha_x", "alpha_y", "inv_alpha_x", "inv_alpha_y", "spec_scale",
+                   "pdf_scale", "weight_diffuse", "weight_specular")
+
+
+def test_material_init(vector_report: pv.Report) -> None:
     fn = "material_init"
     doc = load("material.json")
-    chk = Checker()
-    for c in cases("material.json", fn):
-        if is_null_case(c):
-            SKIPPED_NULL[fn] = SKIPPED_NULL.get(fn, 0) + 1
-            continue
+    chk = vector_report.child()
+    for _, c in pv.runnable("material.json", chk, fn):
+        chk.ran(fn)
         status, m = run(lambda: pgloss.material_init(physical(c["input"]["p"])))
         chk.status(fn, c, status)
-        e = c["expected"]
-        if m.lobes != e["lobes"]:
-            chk.fail(f"{c['id']}: lobes {m.lobes} want {e['lobes']}")
-        if not status.startswith("PGLOSS_OK"):
-            if not _material_is_black(m):
-                chk.fail(f"{c['id']}: a failed init must give a black material")
-            continue
-        for k in range(3):
-            chk.value(fn, "rho_d", c, m.rho_d[k], e["rho_d"][k], sens_at(c, "rho_d", k), tolerance(doc, fn, "rho_d"))
-        for out in ("rho_s", "alpha_x", "alpha_y", "inv_alpha_x", "inv_alpha_y", "spec_scale", "pdf_scale",
-                    "weight_diffuse", "weight_specular"):
-            chk.value(fn, out, c, getattr(m, out), e[out], sens_at(c, out), tolerance(doc, fn, out))
-        if m.normalization != c["input"]["p"]["normalization"]:
-            chk.fail(f"{c['id']}: normalization {m.normalization}")
+        got = {out: getattr(m, out) for out in MATERIAL_FIELDS}
+        got.update(lobes=m.lobes, normalization=int(m.normalization), black=_material_is_black(m))
+        chk.material_init(doc, c, status, got)
     chk.finish(fn)
 
 
-def test_specular_probability() -> None:
+def test_specular_probability(vector_report: pv.Report) -> None:
     fn = "specular_probability"
     doc = load("material.json")
-    chk = Checker()
-    for c in cases("material.json", fn):
+    chk = vector_report.child()
+    for _, c in pv.runnable("material.json", chk, fn):
+        chk.ran(fn)
         p = physical(c["input"]["p"])
         P = pgloss.specular_probability(p, c["input"]["lobes"])
         assert isinstance(P, float)
         assert P == pgloss.specular_probability(p.material(), c["input"]["lobes"])
-        chk.value(fn, "P", c, P, c["expected"]["P"], sens_at(c, "P"), tolerance(doc, fn, "P"))
+        chk.outputs(doc, fn, c, {"P": P})
     chk.finish(fn)
 
 
 # ------------------------------------------------------------------------------------------------
 # BRDF
 
+
 def materials_of(doc: dict) -> Dict[str, pgloss.Material]:
     return {k: physical(v).material() for k, v in doc["materials"].items()}
 
 
-def sanity_float(doc: dict, c: dict) -> bool:
-    return has_tag(c, "ill_conditioned") and doc["c_precision"] == "float"
-
-
-def check_f(chk: Checker, doc: dict, fn: str, tolfn: str, c: dict, f) -> None:
-    t = tolerance(doc, tolfn, "f")
-    s = sanity_float(doc, c)
-    for k in range(3):
-        chk.value(fn, "f", c, f[k], c["expected"]["f"][k], sens_at(c, "f", k), t, s, True)
-
-
-def check_pdf(chk: Checker, doc: dict, fn: str, tolfn: str, c: dict, p) -> None:
-    chk.value(fn, "pdf", c, p, c["expected"]["pdf"], sens_at(c, "pdf"), tolerance(doc, tolfn, "pdf"),
-              sanity_float(doc, c), True)
-
-
-def test_eval_pdf_scalar() -> None:
+def test_eval_pdf_scalar(vector_report: pv.Report) -> None:
     """One call per case, float64 (the scalar reference path), through eval, pdf and eval_pdf."""
     doc = load("brdf_eval.json")
     mats = materials_of(doc)
-    chk = Checker()
-    for c in doc["cases"]:
+    chk = vector_report.child()
+    for _, c in pv.runnable("brdf_eval.json", chk):
+        chk.ran("brdf_eval (eval, pdf, eval_pdf)")
         i = c["input"]
         m = mats[i["material"]]
         wo, wi, lobes = [num(x) for x in i["wo"]], [num(x) for x in i["wi"]], i["lobes"]
         st, f = run(lambda: pgloss.eval(m, wo, wi, lobes))
         chk.status("eval", c, st)
-        check_f(chk, doc, "eval", "eval", c, f)
+        chk.brdf_eval(doc, "eval", c, f=f)
         st, p = run(lambda: pgloss.pdf(m, wo, wi, lobes))
         chk.status("pdf", c, st)
         if not isinstance(p, float):
             chk.fail(f"{c['id']}: pdf of one pair must be a Python float, got {type(p)}")
-        check_pdf(chk, doc, "pdf", "pdf", c, p)
+        chk.brdf_eval(doc, "pdf", c, pdf=p)
         st, fp = run(lambda: pgloss.eval_pdf(m, wo, wi, lobes))
         chk.status("eval_pdf", c, st)
-        check_f(chk, doc, "eval_pdf", "eval_pdf", c, fp[0])
-        check_pdf(chk, doc, "eval_pdf", "eval_pdf", c, fp[1])
+        chk.brdf_eval(doc, "eval_pdf", c, f=fp[0], pdf=fp[1])
     chk.finish("eval/pdf/eval_pdf scalar")
 
 
-def groups_of(doc: dict) -> "OrderedDict[Tuple[str, int], List[dict]]":
-    g: "OrderedDict[Tuple[str, int], List[dict]]" = OrderedDict()
-    for c in doc["cases"]:
-        if "null" in c["input"]:
-            continue
-        g.setdefault((c["input"]["material"], c["input"]["lobes"]), []).append(c)
-    return g
-
-
-def first_error(cs: List[dict]) -> Tuple[str, int]:
-    for k, c in enumerate(cs):
-        if c["status"] != "PGLOSS_OK":
-            return c["status"], k
-    return "PGLOSS_OK", -1
-
-
-def run_array(chk: Checker, label: str, cs: List[dict], thunk: Callable[[], Any]) -> Any:
+def run_array(chk: pv.Report, label: str, cs: List[dict], thunk: Callable[[], Any]) -> Any:
     """An array call over a group: the error (if any) must be the group's first, at its index."""
     want, index = first_error(cs)
     try:
@@ -293,18 +224,21 @@ def run_array(chk: Checker, label: str, cs: List[dict], thunk: Callable[[], Any]
         if e.status.c_name != want or e.index != (index,):
             chk.fail(f"{label}: raised {e.status.c_name} at {e.index}, want {want} at ({index},)")
         return e.result
-    finally:
-        pass
+
+
+# The function names of the array calls in the statistics: float32 arrays take the batched
+# path (eval_batch ... of batch.h), float64 arrays the scalar path looped in C.
+ARRAY_SUFFIX = {"float32": "_batch", "float64": "_array64"}
 
 
 @pytest.mark.parametrize("dtype", ["float32", "float64"])
-def test_eval_pdf_arrays(dtype: str) -> None:
+def test_eval_pdf_arrays(dtype: str, vector_report: pv.Report) -> None:
     """Each (material, lobes) group as one array call: float32 = the batched path (eval_batch,
     pdf_batch, eval_pdf_batch), float64 = the scalar path looped in C."""
     doc = load("brdf_eval.json")
     mats = materials_of(doc)
-    chk = Checker()
-    tag = "_batch" if dtype == "float32" else "_array64"
+    chk = vector_report.child()
+    tag = ARRAY_SUFFIX[dtype]
     groups = groups_of(doc)
     assert groups
     for (mk, lobes), cs in groups.items():
@@ -322,61 +256,42 @@ def test_eval_pdf_arrays(dtype: str) -> None:
             with warnings.catch_warnings():
                 warnings.simplefilter("error")
                 pgloss.eval(m, wo, wi, lobes)
+        chk.ran(f"brdf_eval {dtype} arrays (*{tag})", len(cs))
         for k, c in enumerate(cs):
-            check_f(chk, doc, "eval" + tag, "eval", c, f[k])
-            check_pdf(chk, doc, "pdf" + tag, "pdf", c, p[k])
-            check_f(chk, doc, "eval_pdf" + tag, "eval_pdf", c, fp[0][k])
-            check_pdf(chk, doc, "eval_pdf" + tag, "eval_pdf", c, fp[1][k])
+            chk.brdf_eval(doc, "eval" + tag, c, f=f[k], tol_fn="eval")
+            chk.brdf_eval(doc, "pdf" + tag, c, pdf=p[k], tol_fn="pdf")
+            chk.brdf_eval(doc, "eval_pdf" + tag, c, f=fp[0][k], pdf=fp[1][k], tol_fn="eval_pdf")
     chk.finish(f"eval/pdf arrays {dtype}")
 
 
-LOBE_NAMES = {"PGLOSS_LOBE_NONE": 0, "PGLOSS_LOBE_DIFFUSE": 1, "PGLOSS_LOBE_SPECULAR": 2}
-
-
-def check_sample(chk: Checker, doc: dict, fn: str, c: dict, wi, pdf_, weight, lobe) -> None:
-    e = c["expected"]
-    s = sanity_float(doc, c)
-    twi, tpdf, tw = tolerance(doc, "sample", "wi"), tolerance(doc, "sample", "pdf"), tolerance(doc, "sample", "weight")
-    for k in range(3):
-        chk.value(fn, "wi", c, wi[k], None if e["wi"] is None else e["wi"][k], sens_at(c, "wi", k), twi, s)
-        chk.value(fn, "weight", c, weight[k], e["weight"][k], sens_at(c, "weight", k), tw, s, True)
-    chk.value(fn, "pdf", c, pdf_, e["pdf"], sens_at(c, "pdf"), tpdf, s, True)
-    if e["lobe"] is not None and int(lobe) != LOBE_NAMES[e["lobe"]]:
-        chk.fail(f"{c['id']} {fn}: lobe {int(lobe)} want {e['lobe']}")
-    if num(e["pdf"]) == 0:
-        if pdf_ != 0 or any(w != 0 for w in weight):
-            chk.fail(f"{c['id']} {fn}: rejected sample must have pdf 0 and weight 0")
-    elif e["wi"] is not None:
-        if abs(math.sqrt(sum(float(x) ** 2 for x in wi)) - 1.0) > 1e-5:
-            chk.fail(f"{c['id']} {fn}: wi not unit length")
-
-
-def test_sample_scalar() -> None:
+def test_sample_scalar(vector_report: pv.Report) -> None:
     doc = load("brdf_sample.json")
     mats = materials_of(doc)
-    chk = Checker()
-    for c in doc["cases"]:
+    chk = vector_report.child()
+    for _, c in pv.runnable("brdf_sample.json", chk):
+        chk.ran("brdf_sample (sample)")
         i = c["input"]
         st, r = run(lambda: pgloss.sample(mats[i["material"]], [num(x) for x in i["wo"]], [num(x) for x in i["u"]],
                                           i["lobes"]))
         chk.status("sample", c, st)
         if not isinstance(r.pdf, float) or not isinstance(r.lobe, pgloss.Lobe):
             chk.fail(f"{c['id']}: one sample must give a float pdf and a Lobe")
-        check_sample(chk, doc, "sample", c, r.wi, r.pdf, r.weight, r.lobe)
+        chk.sample(doc, "sample", c, r.wi, r.pdf, r.weight, r.lobe)
     chk.finish("sample scalar")
 
 
 @pytest.mark.parametrize("dtype", ["float32", "float64"])
-def test_sample_arrays(dtype: str) -> None:
+def test_sample_arrays(dtype: str, vector_report: pv.Report) -> None:
     doc = load("brdf_sample.json")
     mats = materials_of(doc)
-    chk = Checker()
-    fn = "sample_batch" if dtype == "float32" else "sample_array64"
+    chk = vector_report.child()
+    fn = "sample" + ARRAY_SUFFIX[dtype]
     for (mk, lobes), cs in groups_of(doc).items():
         wo = np.array([[num(x) for x in c["input"]["wo"]] for c in cs], dtype=dtype)
         u = np.array([[num(x) for x in c["input"]["u"]] for c in cs], dtype=dtype)
         r = run_array(chk, f"{dtype} sample group {mk}/{lobes}", cs, lambda: pgloss.sample(mats[mk], wo, u, lobes))
         assert r.wi.dtype == r.pdf.dtype == r.weight.dtype == np.dtype(dtype) and r.lobe.dtype == np.uint8
+        chk.ran(f"brdf_sample {dtype} arrays ({fn})", len(cs))
         for k, c in enumerate(cs):
-            check_sample(chk, doc, fn, c, r.wi[k], float(r.pdf[k]), r.weight[k], r.lobe[k])
+            chk.sample(doc, fn, c, r.wi[k], float(r.pdf[k]), r.weight[k], r.lobe[k])
     chk.finish(f"sample arrays {dtype}")
