@@ -23,12 +23,12 @@ static pgloss__batch_consts make_consts(const pgloss_material *m, unsigned activ
     k.ps = (float)pgloss__specular_probability_d(m, active);
     k.pd = 1.0f - k.ps;
     /* The largest f and pdf over all directions: e <= 1, h·h <= 4, cosines >= COS_MIN. */
-    const double cm = PGLOSS_COS_MIN;
-    const double nn_max = m->normalization == PGLOSS_NORM_WARD_DUR ? 1.0 / (cm * cm)
-                          : m->normalization == PGLOSS_NORM_BOUNDED ? 4.0 / pow(2.0 * cm, 4.0)
+    const double cm = PGLOSS_COS_MIN, cm2 = cm * cm;
+    const double nn_max = m->normalization == PGLOSS_NORM_WARD_DUR ? 1.0 / cm2
+                          : m->normalization == PGLOSS_NORM_BOUNDED ? 0.25 / (cm2 * cm2) /* 4/(2cm)⁴ */
                                                                     : 1.0 / cm;
     const double f_max = fmax(k.fd[0], fmax(k.fd[1], k.fd[2])) + (double)k.spec_scale * nn_max;
-    const double pdf_max = k.pd * PGLOSS_INV_PI + (double)k.ps * k.pdf2 * 4.0 / pow(2.0 * cm, 3.0);
+    const double pdf_max = k.pd * PGLOSS_INV_PI + (double)k.ps * k.pdf2 * (0.5 / (cm2 * cm)); /* 4/(2cm)³ */
     k.may_overflow = !(f_max <= 0.5 * FLT_MAX && pdf_max <= 0.5 * FLT_MAX);
     return k;
 }
