@@ -488,7 +488,8 @@ int main(int argc, char **argv)
             }
     }
 
-    printf("\nLobe masks (batched float eval_pdf, best ISA; materials with both lobes, or one):\n\n");
+    printf("\nLobe masks (batched eval_pdf, eval and sample, best ISA; materials with both lobes, or "
+           "one):\n\n");
     printf("| function | path | tier | ISA | material | ns/call | max rel err | mean rel err |\n");
     printf("|---|---|---|---|---|---:|---:|---:|\n");
     {
@@ -501,6 +502,21 @@ int main(int argc, char **argv)
         c.m = &glossy;
         c.lobes = PGLOSS_LOBE_DIFFUSE;
         row("both, mask D", &c, "batch", "float", "auto");
+        /* eval in both tiers: the specular-only material shows the lobe's own error, which
+         * the diffuse term hides in the tails of the material with both lobes. */
+        c.fn = FN_EVAL;
+        c.lobes = PGLOSS_LOBE_ALL;
+        for (int t = 0; t < 2; ++t) {
+            c.opt.precision = t ? PGLOSS_PRECISION_FAST : PGLOSS_PRECISION_FLOAT;
+            const pgloss_material *ms[] = {&glossy, &diffuse, &specular};
+            const char *names[] = {"both", "diffuse", "specular"};
+            for (int k = 0; k < 3; ++k) {
+                c.m = ms[k];
+                row(names[k], &c, "batch", t ? "fast" : "float", "auto");
+            }
+        }
+        c.opt.precision = PGLOSS_PRECISION_FLOAT;
+        c.m = &glossy;
         c.fn = FN_SAMPLE;
         c.lobes = PGLOSS_LOBE_ALL;
         row("both", &c, "batch", "float", "auto");
