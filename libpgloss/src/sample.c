@@ -100,13 +100,12 @@ pgloss_status pgloss_sample(const pgloss_material *m, pgloss_vec3 wo, const floa
     if (!(o[2] > 0.0))
         return PGLOSS_OK;
 
-    /* Density and weight at the float direction handed back, so that they agree with
-     * pgloss_pdf(wo, s->wi) and pgloss_eval(wo, s->wi) to rounding. */
-    double i[3];
-    if (!pgloss__normalize(s->wi, i) || !(i[2] > 0.0))
+    /* Density and weight at the float direction handed back, computed exactly as
+     * pgloss_eval_pdf(wo, s->wi) computes them, so that they agree with pgloss_pdf and
+     * pgloss_eval bit for bit. wi at or below the horizon gives p = 0 (rejected below). */
+    double f[3], p, ci = 0.0;
+    if (pgloss__eval_pdf_raw(m, active, wo, s->wi, f, &p, &ci) != PGLOSS_OK)
         return PGLOSS_OK;
-    double f[3], p;
-    pgloss__eval_pdf_d(m, active, o, i, f, &p);
     /* Decide rejection on the float pdf that is stored, not on the double one: a density in
      * (0, FLT_TRUE_MIN/2) rounds to 0, and a sample with pdf 0 must be a rejected sample
      * (weight 0), never one with a finite weight and a zero pdf (found by test_stress). */
@@ -114,8 +113,9 @@ pgloss_status pgloss_sample(const pgloss_material *m, pgloss_vec3 wo, const floa
     if (!(pf > 0.0f))
         return PGLOSS_OK;
     s->pdf = pf;
-    s->weight.r = pgloss__to_float(f[0] * i[2] / p);
-    s->weight.g = pgloss__to_float(f[1] * i[2] / p);
-    s->weight.b = pgloss__to_float(f[2] * i[2] / p);
+    const double ci_p = ci / p; /* weight = f cosθi / pdf */
+    s->weight.r = pgloss__to_float(f[0] * ci_p);
+    s->weight.g = pgloss__to_float(f[1] * ci_p);
+    s->weight.b = pgloss__to_float(f[2] * ci_p);
     return PGLOSS_OK;
 }
