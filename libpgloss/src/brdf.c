@@ -17,10 +17,13 @@
  *     their product. The ranges above keep every intermediate product within 2^±900, so
  *     nothing overflows or underflows; the result differs from the general path's only by
  *     rounding (a few double ulps).
- * Both paths use exp_nonpositive below instead of libm's exp. */
+ * Both paths use exp_parts below instead of libm's exp. */
 #include <stdint.h>
 #include <string.h>
 #include "internal.h"
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #if defined(__GNUC__) || defined(__clang__)
 #define BRDF_INLINE static inline __attribute__((always_inline))
@@ -43,29 +46,44 @@ static const double exp2_j32[32] = {
     0x1.d5818dcfba487p+0, 0x1.dfc97337b9b5fp+0, 0x1.ea4afa2a490dap+0, 0x1.f50765b6e4540p+0,
 };
 
-/* exp(x) = scale · poly for x <= 0 (x = -tan²δ/α², the specular exponent), inline and free of
- * libm's call and special cases; returns poly and sets *scale (the caller multiplies its
- * constant into the scale while the polynomial is evaluated: one step off the latency chain).
- * With y = x·32/ln2 rounded to double (an error like a half-ulp change of x, i.e. relative
- * |x|·2^-53 in the result) and n = round(y) = 32 m + j: exp(x) = 2^m · 2^(j/32) · 2^((y-n)/32),
- * y - n in [-1/2, 1/2] exact, 2^(t/32) = e^(t ln2/32) from its degree-5 Taylor polynomial
- * (truncation < 0.0109^6/720 < 2.3e-15).
- * Below -708 the scale is 0 instead of exp(x) < 3.3e-308: no output can tell, since e enters
- * them multiplied by at most spec_scale·norm < FLT_MAX·2.5e35 (f) or 2 pdf_scale·(h·h)/hzc³
- * < 1e34 (pdf), so the specular term stays below 1e-233, which is 0 in float and leaves any
- * nonzero diffuse term (>= 1e-168) unchanged in double. Without a branch: that tail is
- * common (diffuse-sampled wi on a narrow lobe) and unpredictable. */
-BRDF_INLINE double exp_nonpositive_parts(double x, double *scale)
+/* max(x, lo) for x not NaN; with SSE2 one maxsd that the compiler cannot turn into a branch
+ * (GCC makes `x > lo ? x : lo` a branch here, which mispredicts on the exponent's tail). */
+BRDF_INLINE double max_no_branch(double x, double lo)
 {
-    const uint64_t keep = (uint64_t)0 - (uint64_t)(x >= -708.0); /* all ones, or 0 in the tail */
-    x = x > -708.0 ? x : -708.0;                                     /* maxsd */
+#if defined(__SSE2__)
+    return _mm_cvtsd_f64(_mm_max_sd(_mm_set_sd(x), _mm_set_sd(lo)));
+#else
+    return x > lo ? x : lo;
+#endif
+}
+
+/* -32/ln2: the specular exponent is scaled by it before the exponential (folded into
+ * the numerator, off the latency chain). */
+#define NEG_32_OVER_LN2 (-0x1.71547652b82fep+5)
+
+/* exp(x) = scale · poly, given y = x·32/ln2 <= 0 (x = -tan²δ/α², the specular exponent),
+ * inline and free of libm's call and special cases; returns poly and sets *scale (the caller
+ * multiplies its constant into the scale while the polynomial is evaluated: one step off the
+ * latency chain). With n = round(y) = 32 m + j: exp(x) = 2^m · 2^(j/32) · 2^((y-n)/32),
+ * y - n in [-1/2, 1/2] exact, 2^(t/32) = e^(t ln2/32) from its degree-5 Taylor polynomial
+ * (truncation < 0.0109^6/720 < 2.3e-15). Rounding y (its product with 32/ln2) is like a
+ * half-ulp change of x: relative error |x|·2^-53 in the result, as the rounding of x itself.
+ * Below y = -32686 (x < -707.99) the scale is 0 instead of exp(x) < 3.4e-308: no output can
+ * tell, since e enters them multiplied by at most spec_scale·norm < FLT_MAX·2.5e35 (f) or
+ * 2 pdf_scale·(h·h)/hzc³ < 1e34 (pdf), so the specular term stays below 1e-233, which is 0
+ * in float and leaves any nonzero diffuse term (>= 1e-168) unchanged in double. Without a
+ * branch: that tail is common (diffuse-sampled wi on a narrow lobe) and unpredictable. */
+BRDF_INLINE double exp_parts(double y, double *scale)
+{
+    const double y_min = -32686.0; /* n >= -32686: m >= -1022 and 2^m 2^(j/32) e^t normal */
+    const uint64_t keep = (uint64_t)0 - (uint64_t)(y >= y_min); /* all ones, or 0 in the tail */
+    y = max_no_branch(y, y_min);
     const double shift = 0x1.8p52; /* (y + shift) - shift = round(y) */
-    const double y = x * 0x1.71547652b82fep+5;
     const double nd0 = y + shift;
     const double t = y - (nd0 - shift);
     uint64_t nbits;
     memcpy(&nbits, &nd0, sizeof nbits);
-    /* The low bits of nd0's mantissa are n in [-32687, 0] (two's complement below the 2^51
+    /* The low bits of nd0's mantissa are n in [-32686, 0] (two's complement below the 2^51
      * bit); biased by 32·1100 it is non-negative. */
     const uint64_t nb = (nbits - 0x4338000000000000ull) + 32u * 1100u;
     uint64_t sbits;
@@ -79,13 +97,6 @@ BRDF_INLINE double exp_nonpositive_parts(double x, double *scale)
                  c5 = 0x1.5d87fe78a6731p-35;
     const double t2 = t * t;
     return (1.0 + t * c1) + t2 * (c2 + t * c3) + (t2 * t2) * (c4 + t * c5);
-}
-
-BRDF_INLINE double exp_nonpositive(double x)
-{
-    double scale;
-    const double poly = exp_nonpositive_parts(x, &scale);
-    return scale * poly;
 }
 
 void pgloss__eval_pdf_d(const pgloss_material *m, unsigned active, const double o[3],
@@ -104,7 +115,9 @@ void pgloss__eval_pdf_d(const pgloss_material *m, unsigned active, const double 
             const double hx = o[0] + i[0], hy = o[1] + i[1], hz = o[2] + i[2];
             const double ex = hx * m->inv_alpha_x, ey = hy * m->inv_alpha_y;
             /* exp(-tan²δ/α²) of eq. 2, anisotropic form (Ward 1992). */
-            const double e = exp_nonpositive(-(ex * ex + ey * ey) / (hz * hz));
+            double scale;
+            const double poly = exp_parts(((ex * ex + ey * ey) * NEG_32_OVER_LN2) / (hz * hz), &scale);
+            const double e = scale * poly;
             const double ci = fmax(i[2], (double)PGLOSS_COS_MIN);
             const double co = fmax(o[2], (double)PGLOSS_COS_MIN);
             const double hzc = ci + co;
@@ -204,7 +217,7 @@ BRDF_INLINE pgloss_status eval_pdf_body(const pgloss_material *m, unsigned activ
     const double inv_hz2 = rcp * b;
     const double ex = hx * m->inv_alpha_x, ey = hy * m->inv_alpha_y;
     double scale; /* exp(-tan²δ/α²) = scale · poly: eq. 2, anisotropic form (Ward 1992) */
-    const double poly = exp_nonpositive_parts(-((ex * ex + ey * ey) * inv_hz2), &scale);
+    const double poly = exp_parts(((ex * ex + ey * ey) * (NEG_32_OVER_LN2 * b)) * rcp, &scale);
     const int bounded = m->normalization == PGLOSS_NORM_BOUNDED;
     const double hh = (pdf || bounded) ? hx * hx + hy * hy + hz2 : 0.0;
 
