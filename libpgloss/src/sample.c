@@ -12,16 +12,20 @@ static float clamp_u(float u)
 }
 
 /* sin u and cos u for |u| <= π/4, from their Taylor series (to u^15 and u^16: truncation below
- * 0.786^17/17! < 5e-17 and 0.786^18/18! < 3e-18): within a few ulps, inline, where libm's
- * sincos would reduce an argument that needs no reduction. */
+ * 0.786^17/17! < 5e-17 and 0.786^18/18! < 3e-18), in Estrin's scheme (short dependency
+ * chains): within a few ulps, inline, where libm's sincos would reduce an argument that needs
+ * no reduction. */
 static inline void sincos_quarter(double u, double *s, double *c)
 {
-    const double v = u * u;
-    *s = u + u * v * (-1.0 / 6.0 + v * (1.0 / 120.0 + v * (-1.0 / 5040.0 + v * (1.0 / 362880.0 +
-         v * (-1.0 / 39916800.0 + v * (1.0 / 6227020800.0 + v * (-1.0 / 1307674368000.0)))))));
-    *c = 1.0 + v * (-0.5 + v * (1.0 / 24.0 + v * (-1.0 / 720.0 + v * (1.0 / 40320.0 +
-         v * (-1.0 / 3628800.0 + v * (1.0 / 479001600.0 + v * (-1.0 / 87178291200.0 +
-         v * (1.0 / 20922789888000.0))))))));
+    const double v = u * u, v2 = v * v, v4 = v2 * v2;
+    const double s01 = 1.0 - v * (1.0 / 6.0), s23 = 1.0 / 120.0 - v * (1.0 / 5040.0),
+                 s45 = 1.0 / 362880.0 - v * (1.0 / 39916800.0),
+                 s67 = 1.0 / 6227020800.0 - v * (1.0 / 1307674368000.0);
+    *s = u * ((s01 + v2 * s23) + v4 * (s45 + v2 * s67));
+    const double c01 = 1.0 - v * 0.5, c23 = 1.0 / 24.0 - v * (1.0 / 720.0),
+                 c45 = 1.0 / 40320.0 - v * (1.0 / 3628800.0),
+                 c67 = 1.0 / 479001600.0 - v * (1.0 / 87178291200.0);
+    *c = (c01 + v2 * c23) + v4 * ((c45 + v2 * c67) + v4 * (1.0 / 20922789888000.0));
 }
 
 /* Shirley & Chiu's concentric map of [0,1)² onto the unit disk, lifted to the hemisphere
