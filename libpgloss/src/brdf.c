@@ -213,6 +213,9 @@ BRDF_INLINE pgloss_status eval_pdf_body(const pgloss_material *m, unsigned activ
     const double s = sqrt(l2o * l2i); /* |wo| |wi| */
     const double hx = ox * s + ix * l2o, hy = oy * s + iy * l2o, hz = oz * s + iz * l2o;
     const double hz2 = hz * hz, b = oz * iz;
+    /* WARD's sqrt(S wo.z wi.z), ahead of the division in program order (it waits for S only) */
+    const int ward = m->normalization != PGLOSS_NORM_WARD_DUR && m->normalization != PGLOSS_NORM_BOUNDED;
+    const double root_sb = (f && ward) ? sqrt(s * b) : 0.0;
     const double rcp = 1.0 / (hz2 * b);     /* 1/(Hz² wo.z wi.z) */
     const double inv_hz2 = rcp * b;
     const double ex = hx * m->inv_alpha_x, ey = hy * m->inv_alpha_y;
@@ -231,7 +234,7 @@ BRDF_INLINE pgloss_status eval_pdf_body(const pgloss_material *m, unsigned activ
             norm = (hh * inv_hz2) * ((l2o * l2o * l2i) * inv_hz2);
             break;
         default: /* eq. 2: 1/sqrt(ci co) = sqrt(S wo.z wi.z) / (wo.z wi.z) */
-            norm = sqrt(s * b) * (rcp * hz2);
+            norm = root_sb * (rcp * hz2);
             break;
         }
         const double fs = ((m->spec_scale * norm) * scale) * poly;
