@@ -68,28 +68,27 @@ BRDF_INLINE double max_no_branch(double x, double lo)
  * y - n in [-1/2, 1/2] exact, 2^(t/32) = e^(t ln2/32) from its degree-5 Taylor polynomial
  * (truncation < 0.0109^6/720 < 2.3e-15). Rounding y (its product with 32/ln2) is like a
  * half-ulp change of x: relative error |x|·2^-53 in the result, as the rounding of x itself.
- * Below y = -32686 (x < -707.99) the scale is 0 instead of exp(x) < 3.4e-308: no output can
- * tell, since e enters them multiplied by at most spec_scale·norm < FLT_MAX·2.5e35 (f) or
- * 2 pdf_scale·(h·h)/hzc³ < 1e34 (pdf), so the specular term stays below 1e-233, which is 0
- * in float and leaves any nonzero diffuse term (>= 1e-168) unchanged in double. Without a
- * branch: that tail is common (diffuse-sampled wi on a narrow lobe) and unpredictable. */
+ * Below y = -32686 (x < -708.0) y is raised to -32686, so the result is exp(-708.0) = 3.3e-308
+ * instead of a smaller number (or a subnormal, or 0): no output can tell, since e enters them
+ * multiplied by at most spec_scale·norm < FLT_MAX·2.5e35 (f) or 2 pdf_scale·(h·h)/hzc³ < 1e34
+ * (pdf), so the specular term stays below 1e-233, which is 0 in float and leaves any nonzero
+ * diffuse term (>= 1e-168) unchanged in double (and a pdf that small is a rejected sample's).
+ * Without a branch: that tail is common (diffuse-sampled wi on a narrow lobe) and
+ * unpredictable. */
 BRDF_INLINE double exp_parts(double y, double *scale)
 {
-    const double y_min = -32686.0; /* n >= -32686: m >= -1022 and 2^m 2^(j/32) e^t normal */
-    const uint64_t keep = (uint64_t)0 - (uint64_t)(y >= y_min); /* all ones, or 0 in the tail */
-    y = max_no_branch(y, y_min);
+    /* n >= -32686: m >= -1022, so 2^m 2^(j/32) e^t stays normal */
+    y = max_no_branch(y, -32686.0);
     const double shift = 0x1.8p52; /* (y + shift) - shift = round(y) */
     const double nd0 = y + shift;
     const double t = y - (nd0 - shift);
-    uint64_t nbits;
+    uint64_t nbits, sbits;
     memcpy(&nbits, &nd0, sizeof nbits);
-    /* The low bits of nd0's mantissa are n in [-32686, 0] (two's complement below the 2^51
-     * bit); biased by 32·1100 it is non-negative. */
-    const uint64_t nb = (nbits - 0x4338000000000000ull) + 32u * 1100u;
-    uint64_t sbits;
-    memcpy(&sbits, &exp2_j32[nb & 31u], sizeof sbits);
-    sbits += ((nb >> 5) << 52) - (1100ull << 52); /* times 2^m, m >= -1022: stays normal */
-    sbits &= keep;                                /* scale 0 in the tail */
+    /* nbits = bits(shift) + n, n = 32 m + j (two's complement below the 2^51 bit; bits(shift)
+     * is a multiple of 2^51), so j = nbits mod 32 and (nbits - j) << 47 = m << 52 mod 2^64:
+     * adding it to the bits of 2^(j/32) multiplies by 2^m. */
+    memcpy(&sbits, &exp2_j32[nbits & 31u], sizeof sbits);
+    sbits += (nbits & ~(uint64_t)31) << 47;
     memcpy(scale, &sbits, sizeof *scale);
     /* (ln2/32)^i / i!, i = 1..5 */
     const double c1 = 0x1.62e42fefa39efp-6, c2 = 0x1.ebfbdff82c58fp-13,
