@@ -7,16 +7,20 @@
  *     applies the COS_MIN clamps literally; it takes every input;
  *   - the fast path takes "regular" inputs — squared lengths in [2^-100, 2^100] and both
  *     cosines >= PGLOSS_COS_MIN (so no clamp is active) — and evaluates the same
- *     expressions with one division and one to three square roots instead of five
- *     divisions and three roots, using that everything but the diffuse pdf is a ratio
- *     of homogeneous polynomials in the unnormalised half vector:
+ *     expressions without normalising the directions, using that everything but the
+ *     diffuse pdf is a ratio of homogeneous polynomials in the unnormalised half vector:
  *       with S = |wo| |wi| = sqrt(|wo|² |wi|²) and H = wo S + wi |wo|² = |wo|² |wi| h,
  *       (h = wo/|wo| + wi/|wi|, the h of brdf.h), tan²δ = (Hx² + Hy²)/Hz², ci co = wo.z wi.z/S,
  *       (h·h)/hz⁴ = (H·H) |wo|⁴|wi|² / Hz⁴, (h·h)/hz³ = (H·H) |wo|²|wi|² / (Hz³ |wi|).
- *     The reciprocals it needs (1/Hz², 1/(wo.z wi.z), 1/(Hz³|wi|)) come from one division of
- *     their product. The ranges above keep every intermediate product within 2^±900, so
- *     nothing overflows or underflows; the result differs from the general path's only by
- *     rounding (a few double ulps).
+ *     f takes one division (1/(Hz² wo.z wi.z) gives both 1/Hz² and 1/(wo.z wi.z)) and the
+ *     root S (plus sqrt(S wo.z wi.z) for eq. 2's normalisation); the pdf adds |wi| and a
+ *     second division, 1/(Hz |wi| W) (W the lobe weights' sum). The general path takes four
+ *     divisions and three roots for f, six and three for f and pdf. The ranges above keep
+ *     every intermediate product within 2^±900, so nothing overflows or underflows; the
+ *     result differs from the general path's only by rounding. Against a long-double
+ *     transcription (2·10^6 random cases, tan²δ/α² <= 20) both are within 1e-15 typically;
+ *     the worst case, grazing directions whose half vector's horizontal part cancels, is
+ *     1.5e-12 here and 6e-13 in the general path.
  * Both paths use exp_parts below instead of libm's exp. */
 #include <stdint.h>
 #include <string.h>
@@ -213,7 +217,8 @@ BRDF_INLINE pgloss_status eval_pdf_body(const pgloss_material *m, unsigned activ
     const double hx = ox * s + ix * l2o, hy = oy * s + iy * l2o, hz = oz * s + iz * l2o;
     const double hz2 = hz * hz, b = oz * iz;
     /* WARD's sqrt(S wo.z wi.z), ahead of the division in program order (it waits for S only) */
-    const int ward = m->normalization != PGLOSS_NORM_WARD_DUR && m->normalization != PGLOSS_NORM_BOUNDED;
+    const int ward =
+        m->normalization != PGLOSS_NORM_WARD_DUR && m->normalization != PGLOSS_NORM_BOUNDED;
     const double root_sb = (f && ward) ? sqrt(s * b) : 0.0;
     const double rcp = 1.0 / (hz2 * b);     /* 1/(Hz² wo.z wi.z) */
     const double inv_hz2 = rcp * b;
