@@ -1,7 +1,106 @@
 /* Scalar evaluation of the Ward BRDF (paper eq. 2 and its two later normalisations) and of
  * the sampling density. Double internally: this is the reference the float batches and the
- * shader ports are held to. */
+ * shader ports are held to.
+ *
+ * Two paths compute the same formulas:
+ *   - the general path (eval_pdf_general, pgloss__eval_pdf_d) normalises both directions and
+ *     applies the COS_MIN clamps literally; it takes every input;
+ *   - the fast path takes "regular" inputs — squared lengths in [2^-100, 2^100] and both
+ *     cosines >= PGLOSS_COS_MIN (so no clamp is active) — and evaluates the same
+ *     expressions without normalising the directions, using that everything but the
+ *     diffuse pdf is a ratio of homogeneous polynomials in the unnormalised half vector:
+ *       with S = |wo| |wi| = sqrt(|wo|² |wi|²) and H = wo S + wi |wo|² = |wo|² |wi| h,
+ *       (h = wo/|wo| + wi/|wi|, the h of brdf.h), tan²δ = (Hx² + Hy²)/Hz², ci co = wo.z wi.z/S,
+ *       (h·h)/hz⁴ = (H·H) |wo|⁴|wi|² / Hz⁴, (h·h)/hz³ = (H·H) |wo|²|wi|² / (Hz³ |wi|).
+ *     f takes one division (1/(Hz² wo.z wi.z) gives both 1/Hz² and 1/(wo.z wi.z)) and the
+ *     root S (plus sqrt(S wo.z wi.z) for eq. 2's normalisation); the pdf adds |wi| and a
+ *     second division, 1/(Hz |wi| W) (W the lobe weights' sum). The general path takes four
+ *     divisions and three roots for f, six and three for f and pdf. The ranges above keep
+ *     every intermediate product within 2^±900, so nothing overflows or underflows; the
+ *     result differs from the general path's only by rounding. Against a long-double
+ *     transcription (2·10^6 random cases, tan²δ/α² <= 20) both are within 1e-15 typically;
+ *     the worst case, grazing directions whose half vector's horizontal part cancels, is
+ *     1.5e-12 here and 6e-13 in the general path.
+ * Both paths use exp_parts below instead of libm's exp. */
+#include <stdint.h>
+#include <string.h>
 #include "internal.h"
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+#if defined(__GNUC__) || defined(__clang__)
+#define BRDF_INLINE static inline __attribute__((always_inline))
+#define BRDF_NOINLINE static __attribute__((noinline))
+#else
+#define BRDF_INLINE static inline
+#define BRDF_NOINLINE static
+#endif
+
+/* 2^(j/32), j = 0..31, correctly rounded (Python: float(Decimal(2) ** (Decimal(j) / 32)) at
+ * 60 digits). */
+static const double exp2_j32[32] = {
+    0x1.0000000000000p+0, 0x1.059b0d3158574p+0, 0x1.0b5586cf9890fp+0, 0x1.11301d0125b51p+0,
+    0x1.172b83c7d517bp+0, 0x1.1d4873168b9aap+0, 0x1.2387a6e756238p+0, 0x1.29e9df51fdee1p+0,
+    0x1.306fe0a31b715p+0, 0x1.371a7373aa9cbp+0, 0x1.3dea64c123422p+0, 0x1.44e086061892dp+0,
+    0x1.4bfdad5362a27p+0, 0x1.5342b569d4f82p+0, 0x1.5ab07dd485429p+0, 0x1.6247eb03a5585p+0,
+    0x1.6a09e667f3bcdp+0, 0x1.71f75e8ec5f74p+0, 0x1.7a11473eb0187p+0, 0x1.82589994cce13p+0,
+    0x1.8ace5422aa0dbp+0, 0x1.93737b0cdc5e5p+0, 0x1.9c49182a3f090p+0, 0x1.a5503b23e255dp+0,
+    0x1.ae89f995ad3adp+0, 0x1.b7f76f2fb5e47p+0, 0x1.c199bdd85529cp+0, 0x1.cb720dcef9069p+0,
+    0x1.d5818dcfba487p+0, 0x1.dfc97337b9b5fp+0, 0x1.ea4afa2a490dap+0, 0x1.f50765b6e4540p+0,
+};
+
+/* max(x, lo) for x not NaN; with SSE2 one maxsd that the compiler cannot turn into a branch
+ * (GCC makes `x > lo ? x : lo` a branch here, which mispredicts on the exponent's tail). */
+BRDF_INLINE double max_no_branch(double x, double lo)
+{
+#if defined(__SSE2__)
+    return _mm_cvtsd_f64(_mm_max_sd(_mm_set_sd(x), _mm_set_sd(lo)));
+#else
+    return x > lo ? x : lo;
+#endif
+}
+
+/* -32/ln2: the specular exponent is scaled by it before the exponential (folded into
+ * the numerator, off the latency chain). */
+#define NEG_32_OVER_LN2 (-0x1.71547652b82fep+5)
+
+/* exp(x) = scale · poly, given y = x·32/ln2 <= 0 (x = -tan²δ/α², the specular exponent),
+ * inline and free of libm's call and special cases; returns poly and sets *scale (the caller
+ * multiplies its constant into the scale while the polynomial is evaluated: one step off the
+ * latency chain). With n = round(y) = 32 m + j: exp(x) = 2^m · 2^(j/32) · 2^((y-n)/32),
+ * y - n in [-1/2, 1/2] exact, 2^(t/32) = e^(t ln2/32) from its degree-5 Taylor polynomial
+ * (truncation < 0.0109^6/720 < 2.3e-15). Rounding y (its product with 32/ln2) is like a
+ * half-ulp change of x: relative error |x|·2^-53 in the result, as the rounding of x itself.
+ * Below y = -32686 (x < -708.0) y is raised to -32686, so the result is exp(-708.0) = 3.3e-308
+ * instead of a smaller number (or a subnormal, or 0): no output can tell, since e enters them
+ * multiplied by at most spec_scale·norm < FLT_MAX·2.5e35 (f) or 2 pdf_scale·(h·h)/hzc³ < 1e34
+ * (pdf), so the specular term stays below 1e-233, which is 0 in float and leaves any nonzero
+ * diffuse term (>= 1e-168) unchanged in double (and a pdf that small is a rejected sample's).
+ * Without a branch: that tail is common (diffuse-sampled wi on a narrow lobe) and
+ * unpredictable. */
+BRDF_INLINE double exp_parts(double y, double *scale)
+{
+    /* n >= -32686: m >= -1022, so 2^m 2^(j/32) e^t stays normal */
+    y = max_no_branch(y, -32686.0);
+    const double shift = 0x1.8p52; /* (y + shift) - shift = round(y) */
+    const double nd0 = y + shift;
+    const double t = y - (nd0 - shift);
+    uint64_t nbits, sbits;
+    memcpy(&nbits, &nd0, sizeof nbits);
+    /* nbits = bits(shift) + n, n = 32 m + j (two's complement below the 2^51 bit; bits(shift)
+     * is a multiple of 2^51), so j = nbits mod 32 and (nbits - j) << 47 = m << 52 mod 2^64:
+     * adding it to the bits of 2^(j/32) multiplies by 2^m. */
+    memcpy(&sbits, &exp2_j32[nbits & 31u], sizeof sbits);
+    sbits += (nbits & ~(uint64_t)31) << 47;
+    memcpy(scale, &sbits, sizeof *scale);
+    /* (ln2/32)^i / i!, i = 1..5 */
+    const double c1 = 0x1.62e42fefa39efp-6, c2 = 0x1.ebfbdff82c58fp-13,
+                 c3 = 0x1.c6b08d704a0c0p-20, c4 = 0x1.3b2ab6fba4e77p-27,
+                 c5 = 0x1.5d87fe78a6731p-35;
+    const double t2 = t * t;
+    return (1.0 + t * c1) + t2 * (c2 + t * c3) + (t2 * t2) * (c4 + t * c5);
+}
 
 void pgloss__eval_pdf_d(const pgloss_material *m, unsigned active, const double o[3],
                         const double i[3], double f[3], double *pdf)
@@ -19,7 +118,9 @@ void pgloss__eval_pdf_d(const pgloss_material *m, unsigned active, const double 
             const double hx = o[0] + i[0], hy = o[1] + i[1], hz = o[2] + i[2];
             const double ex = hx * m->inv_alpha_x, ey = hy * m->inv_alpha_y;
             /* exp(-tan²δ/α²) of eq. 2, anisotropic form (Ward 1992). */
-            const double e = exp(-(ex * ex + ey * ey) / (hz * hz));
+            double scale;
+            const double poly = exp_parts(((ex * ex + ey * ey) * NEG_32_OVER_LN2) / (hz * hz), &scale);
+            const double e = scale * poly;
             const double ci = fmax(i[2], (double)PGLOSS_COS_MIN);
             const double co = fmax(o[2], (double)PGLOSS_COS_MIN);
             const double hzc = ci + co;
@@ -45,13 +146,130 @@ void pgloss__eval_pdf_d(const pgloss_material *m, unsigned active, const double 
         *pdf = p;
 }
 
-static pgloss_status prepare(const pgloss_material *m, pgloss_vec3 wo, pgloss_vec3 wi,
-                             double o[3], double i[3])
+/* Every input: normalise, then the literal formulas. */
+BRDF_NOINLINE pgloss_status eval_pdf_general(const pgloss_material *m, unsigned active,
+                                             pgloss_vec3 wo, pgloss_vec3 wi, double f[3],
+                                             double *pdf, double *cos_i)
 {
+    double o[3], i[3];
     const int ok_o = pgloss__normalize(wo, o);
     const int ok_i = pgloss__normalize(wi, i);
-    (void)m;
-    return (ok_o && ok_i) ? PGLOSS_OK : PGLOSS_ERR_DIRECTION;
+    if (!(ok_o && ok_i)) {
+        if (f) f[0] = f[1] = f[2] = 0.0;
+        if (pdf) *pdf = 0.0;
+        return PGLOSS_ERR_DIRECTION;
+    }
+    pgloss__eval_pdf_d(m, active, o, i, f, pdf);
+    if (cos_i)
+        *cos_i = i[2];
+    return PGLOSS_OK;
+}
+
+/* Squared lengths of the fast path (see the top of the file). */
+#define LEN2_MIN 0x1p-100
+#define LEN2_MAX 0x1p100
+
+/* f and pdf of the active lobes at the directions wo, wi as given (not yet normalised);
+ * either output may be NULL (inlined with constant NULLs, the unused work disappears), and
+ * each output is computed the same way whether or not the other one is asked for, so that
+ * eval_pdf = (eval, pdf) and a sample's record = pdf/eval at its wi, bit for bit.
+ * *cos_i (if cos_i and pdf are not NULL) receives wi.z/|wi| when the pdf is computed.
+ * PGLOSS_ERR_DIRECTION (outputs 0) for a zero or non-finite direction. */
+BRDF_INLINE pgloss_status eval_pdf_body(const pgloss_material *m, unsigned active,
+                                        pgloss_vec3 wo, pgloss_vec3 wi, double f[3],
+                                        double *pdf, double *cos_i)
+{
+    const double ox = wo.x, oy = wo.y, oz = wo.z, ix = wi.x, iy = wi.y, iz = wi.z;
+    const double l2o = ox * ox + oy * oy + oz * oz, l2i = ix * ix + iy * iy + iz * iz;
+    /* Also false for zero, NaN and Inf: the general path sorts those out. */
+    if (!(l2o >= LEN2_MIN && l2o <= LEN2_MAX && l2i >= LEN2_MIN && l2i <= LEN2_MAX))
+        return eval_pdf_general(m, active, wo, wi, f, pdf, cos_i);
+    /* One-sided BRDF: wo.z, wi.z <= 0 (the sign survives normalisation) give 0. */
+    if (!(oz > 0.0 && iz > 0.0) || !active) {
+        if (f) f[0] = f[1] = f[2] = 0.0;
+        if (pdf) *pdf = 0.0;
+        return PGLOSS_OK;
+    }
+    /* Cosine below COS_MIN: the clamps apply; the general path has them. */
+    const double cos_min2 = (double)PGLOSS_COS_MIN * (double)PGLOSS_COS_MIN;
+    if (!(oz * oz >= cos_min2 * l2o && iz * iz >= cos_min2 * l2i))
+        return eval_pdf_general(m, active, wo, wi, f, pdf, cos_i);
+
+    const int diffuse = (active & PGLOSS_LOBE_DIFFUSE) != 0;
+    double fd[3] = {0.0, 0.0, 0.0};
+    if (f && diffuse)
+        for (int k = 0; k < 3; ++k)
+            fd[k] = m->rho_d[k] * PGLOSS_INV_PI;
+    if (!(active & PGLOSS_LOBE_SPECULAR)) { /* diffuse alone: f = ρd/π, pdf = ci/π */
+        if (f)
+            for (int k = 0; k < 3; ++k)
+                f[k] = fd[k];
+        if (pdf) {
+            const double ci = iz / sqrt(l2i);
+            *pdf = ci * PGLOSS_INV_PI;
+            if (cos_i)
+                *cos_i = ci;
+        }
+        return PGLOSS_OK;
+    }
+
+    const double s = sqrt(l2o * l2i); /* |wo| |wi| */
+    const double hx = ox * s + ix * l2o, hy = oy * s + iy * l2o, hz = oz * s + iz * l2o;
+    const double hz2 = hz * hz, b = oz * iz;
+    /* WARD's sqrt(S wo.z wi.z), ahead of the division in program order (it waits for S only) */
+    const int ward =
+        m->normalization != PGLOSS_NORM_WARD_DUR && m->normalization != PGLOSS_NORM_BOUNDED;
+    const double root_sb = (f && ward) ? sqrt(s * b) : 0.0;
+    const double rcp = 1.0 / (hz2 * b);     /* 1/(Hz² wo.z wi.z) */
+    const double inv_hz2 = rcp * b;
+    const double ex = hx * m->inv_alpha_x, ey = hy * m->inv_alpha_y;
+    double scale; /* exp(-tan²δ/α²) = scale · poly: eq. 2, anisotropic form (Ward 1992) */
+    const double poly = exp_parts(((ex * ex + ey * ey) * (NEG_32_OVER_LN2 * b)) * rcp, &scale);
+    const int bounded = m->normalization == PGLOSS_NORM_BOUNDED;
+    const double hh = (pdf || bounded) ? hx * hx + hy * hy + hz2 : 0.0;
+
+    if (f) {
+        double norm;
+        switch (m->normalization) {
+        case PGLOSS_NORM_WARD_DUR: /* Dür 2006: 1/(ci co) = S/(wo.z wi.z) */
+            norm = s * (rcp * hz2);
+            break;
+        case PGLOSS_NORM_BOUNDED: /* GM&D 2010: (h·h)/hz⁴ = (H·H)/Hz² · |wo|⁴|wi|²/Hz² */
+            norm = (hh * inv_hz2) * ((l2o * l2o * l2i) * inv_hz2);
+            break;
+        default: /* eq. 2: 1/sqrt(ci co) = sqrt(S wo.z wi.z) / (wo.z wi.z) */
+            norm = root_sb * (rcp * hz2);
+            break;
+        }
+        const double fs = ((m->spec_scale * norm) * scale) * poly;
+        for (int k = 0; k < 3; ++k)
+            f[k] = fd[k] + fs;
+    }
+    if (pdf) {
+        const double li = sqrt(l2i);
+        /* Second division: 1/(Hz |wi| W), W = wd + ws the lobe weights (1 for one lobe). */
+        const double wd = m->weight_diffuse, ws = m->weight_specular;
+        const double w = diffuse ? wd + ws : 1.0;
+        const double rcp2 = 1.0 / (hz * li * w);
+        const double inv_hzli = rcp2 * w;                 /* 1/(Hz |wi|) */
+        const double ci = iz * (inv_hzli * hz);           /* wi.z / |wi| */
+        /* Walter 2005: p(wi) = D(h) / (4 (wo·h)), and for unit wo, wi: wo·ĥ ĥz³ = hz³ / (2 h·h);
+         * (h·h)/hz³ = (H·H)/Hz² · 1/(Hz |wi|) · |wo|²|wi|². */
+        const double g = ((hh * inv_hz2) * inv_hzli) * (l2o * l2i);
+        double p = ((2.0 * m->pdf_scale * g) * scale) * poly;
+        if (diffuse) /* (1 - Ps) ci/π + Ps p_spec, Ps = ws/W (pgloss_specular_probability) */
+            p = (wd * (ci * PGLOSS_INV_PI) + ws * p) * (rcp2 * (hz * li));
+        if (cos_i)
+            *cos_i = ci;
+        *pdf = p;
+    }
+    return PGLOSS_OK;
+}
+
+pgloss_status pgloss__eval_pdf_raw(const pgloss_material *m, unsigned active, pgloss_vec3 wo,
+                                   pgloss_vec3 wi, double f[3], double *pdf, double *cos_i)
+{
+    return eval_pdf_body(m, active, wo, wi, f, pdf, cos_i);
 }
 
 static void store_rgb(pgloss_rgb *out, const double f[3])
@@ -68,11 +286,17 @@ pgloss_status pgloss_eval_pdf(const pgloss_material *m, pgloss_vec3 wo, pgloss_v
     if (pdf) *pdf = 0.0f;
     if (!m || (!f && !pdf))
         return PGLOSS_ERR_NULL;
-    double o[3], i[3], fv[3], p;
-    const pgloss_status st = prepare(m, wo, wi, o, i);
+    double fv[3], p;
+    const unsigned active = lobes & m->lobes & PGLOSS_LOBE_ALL;
+    pgloss_status st;
+    if (f && pdf)
+        st = eval_pdf_body(m, active, wo, wi, fv, &p, NULL);
+    else if (f)
+        st = eval_pdf_body(m, active, wo, wi, fv, NULL, NULL);
+    else
+        st = eval_pdf_body(m, active, wo, wi, NULL, &p, NULL);
     if (st != PGLOSS_OK)
         return st;
-    pgloss__eval_pdf_d(m, lobes & m->lobes & PGLOSS_LOBE_ALL, o, i, f ? fv : NULL, pdf ? &p : NULL);
     if (f) store_rgb(f, fv);
     if (pdf) *pdf = pgloss__to_float(p);
     return PGLOSS_OK;
@@ -83,7 +307,15 @@ pgloss_status pgloss_eval(const pgloss_material *m, pgloss_vec3 wo, pgloss_vec3 
 {
     if (!f)
         return PGLOSS_ERR_NULL;
-    return pgloss_eval_pdf(m, wo, wi, lobes, f, NULL);
+    f->r = f->g = f->b = 0.0f;
+    if (!m)
+        return PGLOSS_ERR_NULL;
+    double fv[3];
+    const pgloss_status st =
+        eval_pdf_body(m, lobes & m->lobes & PGLOSS_LOBE_ALL, wo, wi, fv, NULL, NULL);
+    if (st == PGLOSS_OK)
+        store_rgb(f, fv);
+    return st;
 }
 
 pgloss_status pgloss_pdf(const pgloss_material *m, pgloss_vec3 wo, pgloss_vec3 wi,
@@ -91,5 +323,13 @@ pgloss_status pgloss_pdf(const pgloss_material *m, pgloss_vec3 wo, pgloss_vec3 w
 {
     if (!pdf)
         return PGLOSS_ERR_NULL;
-    return pgloss_eval_pdf(m, wo, wi, lobes, NULL, pdf);
+    *pdf = 0.0f;
+    if (!m)
+        return PGLOSS_ERR_NULL;
+    double p;
+    const pgloss_status st =
+        eval_pdf_body(m, lobes & m->lobes & PGLOSS_LOBE_ALL, wo, wi, NULL, &p, NULL);
+    if (st == PGLOSS_OK)
+        *pdf = pgloss__to_float(p);
+    return st;
 }
