@@ -32,6 +32,14 @@ def machine() -> str:
             f"{platform.system()} {platform.release()}, {cc[0] if cc else 'cc'}; one core used")
 
 
+def clock_ghz(d: Path) -> float:
+    """The core clock bench_core measured with a dependent-add loop (core.md), or 3.0."""
+    for line in (d / "core.md").read_text().splitlines():
+        if line.startswith("Core clock:"):
+            return float(line.split()[2])
+    return 3.0
+
+
 def pareto(d: Path) -> str:
     import matplotlib.pyplot as plt  # noqa: PLC0415
 
@@ -65,39 +73,57 @@ def main() -> int:
     peers = (d / "peers.md").read_text() if (d / "peers.md").exists() else "(peers not run)\n"
     plot = pareto(d)
     rows = list(csv.DictReader(open(d / "core.csv")))
-    def ns(fn, path, tier, isa):
+    def ns(fn, path, tier, isa, material="both"):
         for r in rows:
-            if (r["function"], r["path"], r["tier"], r["isa"], r["material"]) == (fn, path, tier, isa, "both"):
+            if (r["function"], r["path"], r["tier"], r["isa"], r["material"]) == (fn, path, tier, isa, material):
                 return float(r["ns"]), float(r["max_rel_err"] or "nan"), float(r["mean_rel_err"] or "nan")
         return float("nan"), float("nan"), float("nan")
-    best = min((ns("eval", "batch", "float", i) for i in ("baseline", "avx2", "avx512")), key=lambda v: v[0] if v[0] == v[0] else 1e9)
-    bestfast = min((ns("eval", "batch", "fast", i) for i in ("baseline", "avx2", "avx512")), key=lambda v: v[0] if v[0] == v[0] else 1e9)
+    def best_of(tier):
+        return min((ns("eval", "batch", tier, i) for i in ("baseline", "avx2", "avx512")),
+                   key=lambda v: v[0] if v[0] == v[0] else 1e9)
+    best, bestfast = best_of("float"), best_of("fast")
+    spec_float = ns("eval", "batch", "float", "auto", "specular")
+    spec_fast = ns("eval", "batch", "fast", "auto", "specular")
     scalar = ns("eval", "scalar", "double", "-")
+    ghz = clock_ghz(d)
+    yes = lambda ok: "**yes**" if ok else "no"
     targets = f"""## Against the targets (issue 7)
 
 | target | measured here | met? |
 |---|---|---|
-| batched float `eval` ≤ 1 ns/eval | FLOAT tier {best[0]:.2f} ns; FAST tier {bestfast[0]:.2f} ns (max {bestfast[1]:.1e}, mean {bestfast[2]:.1e}) (best ISA) | no (FAST is closest) |
-| … with max rel. error ≤ 2e-6 (regular range) | max {best[1]:.1e} / mean {best[2]:.1e} (see Errors above: the max is the conditioning of float input directions; the shared vectors' conditioning-aware tolerance is met: max 3.1e-7 on the vectors) | max: no; arithmetic: yes |
-| scalar `eval` ≤ 10 ns | {scalar[0]:.1f} ns (double arithmetic, libm exp) | no |
+| batched float `eval` <= 1 ns/eval | FAST tier {bestfast[0]:.2f} ns; FLOAT tier {best[0]:.2f} ns (best ISA) | {yes(bestfast[0] <= 1.0)} (FAST) |
+| ... with max rel. error <= 2e-6 on the regular range | FAST: max {bestfast[1]:.1e}, mean {bestfast[2]:.1e}; FLOAT: max {best[1]:.1e}, mean {best[2]:.1e} (material of Experiment 1). Specular lobe alone: FAST {spec_fast[1]:.1e}, FLOAT {spec_float[1]:.1e} | {yes(bestfast[1] <= 2e-6)} (Experiment 1); {yes(spec_fast[1] <= 2e-6)} for the specular lobe alone near x = 10 |
+| scalar `eval` <= 10 ns | {scalar[0]:.1f} ns (double arithmetic inside) | {yes(scalar[0] <= 10.0)} |
 
-**Operation count** of one batched `eval_pdf` (both lobes, eq. 2), counted in
-`libpgloss/src/batch_isa.c` and `kernel_float.h`: normalising wo and wi ≈ 2 × 18 operations
-(abs, max, exact power-of-two scale, squares, one sqrt and one division each); the lobe
-kernel ≈ 71 (half vector 3, exponent 8 with one division, exp 24, normalisation factor 4 with
-sqrt and division, pdf 8 with one division, sums, clamps and selects 24): about **107 float
-operations, of which 5 divisions and 3 square roots**. This CPU's AVX-512 is two 256-bit
-halves: about 32 single-precision operations per cycle at best, so the arithmetic alone bounds
-an evaluation at ≈ 3.3 cycles; the divider/square-root unit (16 lanes,
-several cycles each per vector; 8 per evaluation) bounds it at ≈ 4–5 cycles, ≈ 1.5 ns at 3 GHz. The FLOAT
-tier measures {best[0]:.2f} ns. The FAST tier on AVX-512 (`batch_avx512_fast.h`, intrinsics; `batch_avx2_fast.h` on AVX2)
-replaces every division and square root by vrcp14ps/vrsqrt14ps plus one Newton step, uses FMA
-and vscalefps: about 90 vector operations per 16 evaluations, and measures {bestfast[0]:.2f} ns
-with the same mean error. (A portable FAST variant with bit-level guesses and Newton steps was
-*slower* than IEEE division, 3.1 against 2.6 ns, and was dropped.) The scalar functions are the double-precision reference
-(two normalisations, libm exp, five divisions, one rounding); their latency chain is ≈ 120
-cycles. For single evaluations at float speed, call the batch with n ≥ 16 (see the size table:
-per-call overhead dominates below that).
+**Where the error comes from.** Every float kernel here computes eq. 2's exponent x =
+tan²δ/α² from a half vector that is free of cancellation (`kernel_eval_pdf` in
+`libpgloss/src/batch_isa.c`): for unit directions as every renderer passes them, the only
+roundings left are relative to the small quantities themselves, and the error of f grows as
+about 2.5e-7 per unit of x, as it must for exp(-x) evaluated from a float x: merely rounding h
+and x to float, with every other step exact, costs 1.6-1.9e-6 at x = 10 (measured). The
+diffuse term dominates the tails of the material with both lobes, so its max is lower; the
+specular-only rows show the lobe's own error. (Before this kernel, normalising the directions
+first cost ~2√x·6e-8/α: 1.85e-5 at α = 0.07.)
+
+**Operation count and the arithmetic limit.** The FAST eval block on AVX-512
+(`libpgloss/src/batch_fast_block.h`, both lobes, eq. 2's normalisation) is 81 instructions per
+16 evaluations: 20 FMA, 16 multiplies, 9 adds, 3 min/max, 2 reciprocal/rsqrt estimates,
+vreduceps + vscalefps for exp2, integer range and sign tests, 6 loads and 3 stores; about
+72 floating-point operations per evaluation (FMA = 2). No division and no square root: unit
+directions need neither (1/|v| = 1.5 - |v|²/2 for |v|² within 2^-20 of 1). On this core
+(Zen 4: 512-bit operations are two halves on 256-bit pipes) the two multiply/FMA pipes are the
+bound: 46 multiply-class instructions, 46 cycles per 16 evaluations by `llvm-mca-19
+-mcpu=znver4`, i.e. 2.9 cycles per evaluation = {2.9 / ghz:.2f} ns at the {ghz:.2f} GHz measured
+by a dependent-add loop: the measured {bestfast[0]:.2f} ns is {100 * 2.9 / ghz / bestfast[0]:.0f} % of that bound.
+The core's peak, 48 single-precision flops per cycle with FMA and adds perfectly balanced,
+would be {72 / 48 / ghz:.2f} ns for 72 flops. The FLOAT tier keeps IEEE division and square root
+(two divisions and one square root per evaluation): the divider bounds it.
+
+The scalar functions are the double-precision reference; their fast path (ordinary inputs)
+needs one square root, one division and an inline exp, but a call is a dependency chain of
+about 70 cycles (root, division, exp) and ~100 instructions, and the call itself with its
+struct arguments costs ~4 ns in this loop. For float speed on single evaluations, batch them:
+n = 16 already amortises the per-call overhead (see the size table).
 
 """
     text = f"""# pgloss benchmarks
@@ -114,9 +140,9 @@ transcription of eq. 2 and Walter's pdf, on the same inputs: wo uniform over the
 (cosθo ≥ 0.05), wi drawn by pgloss_sample (so the specular lobe is exercised where it
 matters), on the *regular range* — specular exponent tan²δ/α² ≤ 10, where 99.995 % of the
 lobe's energy lies (beyond it every float exp loses accuracy in proportion to the exponent).
-The float tiers' max error there (~2e-5 for α = 0.07) is the conditioning of eq. 2 in float
-inputs: a unit direction rounded to float moves tan²δ/α² by about 2√x·6e-8/α; the mean error
-and the shared vectors' tolerance model (rel + kappa·conditioning) show the arithmetic error.
+Directions of non-unit length are normalised first, and that rounding adds up to ~6e-8/α
+near the mirror direction (the shared vectors' tolerance model, rel + kappa·conditioning,
+covers them).
 
 {targets}## The C core (`build-bench/bench/pgloss_bench_core`)
 
