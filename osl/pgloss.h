@@ -29,6 +29,9 @@
 //   - Enums are ints (the same values). Lobe masks are ints; all bits are used as in C
 //     (0xFFFFFFFF is -1 in OSL, and -1 & 3 == 3 as in C).
 //   - pgloss_isogloss_contour writes to output arrays whose length must be >= n.
+//   - eval/pdf/sample take a direction whose squared length is within 2^-20 of 1 (as every
+//     unit vector rounded to float is) as given, like the C core's batched float kernels
+//     (batch.h), and normalise others: see pgloss__eval_pdf_unit.
 //   - Batched functions (batch.h) do not exist: a shader evaluates one point at a time.
 //   - The status strings (pgloss_status_string/name) are not provided.
 //   - PGLOSS_BOUNDARY_TOLERANCE, the slack that lets parameters rounded exactly onto the
