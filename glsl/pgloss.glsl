@@ -31,8 +31,11 @@
  *
  * CONVENTIONS (as the C core; see libpgloss/include/pgloss/brdf.h):
  *   - shading frame: normal = +z; wo towards the viewer, wi towards the light;
- *     directions need not be unit length (normalised after scaling by the largest component);
- *     a zero-length or non-finite direction is PGLOSS_ERR_DIRECTION and yields 0;
+ *     directions need not be unit length (normalised after scaling by the largest component;
+ *     a direction whose squared length is within 2^-20 of 1, as every unit vector rounded
+ *     to float is, is used as given, as in the C core's batched kernels: see
+ *     pgloss_impl_eval_pdf); a zero-length or non-finite direction is PGLOSS_ERR_DIRECTION
+ *     and yields 0;
  *   - one-sided BRDF: wo.z <= 0 or wi.z <= 0 gives 0 with PGLOSS_OK; eval returns f without
  *     the cosine; cosines below PGLOSS_COS_MIN are raised to it in the specular normalisation;
  *     outputs are clamped to at most PGLOSS_FLT_MAX;
@@ -192,19 +195,51 @@ float pgloss_impl_luminance3(vec3 rgb)
     return PGLOSS_LUMA_R * rgb.r + PGLOSS_LUMA_G * rgb.g + PGLOSS_LUMA_B * rgb.b;
 }
 
-/* Normalises v (after scaling by the largest component). false (n = 0) for a zero or
- * non-finite vector. */
-bool pgloss_impl_normalize(vec3 v, out vec3 n)
+/* Normalises finite v (after scaling by the largest component). false (n = 0) for a zero
+ * vector. */
+bool pgloss_impl_normalize_finite(vec3 v, out vec3 n)
 {
     n = vec3(0.0);
-    if (!pgloss_impl_finite3(v))
-        return false;
     float m = max(abs(v.x), max(abs(v.y), abs(v.z)));
     if (!(m > 0.0))
         return false;
     vec3 s = v / m;
     n = s * inversesqrt(dot(s, s));
     return true;
+}
+
+/* Normalises v (after scaling by the largest component). false (n = 0) for a zero or
+ * non-finite vector. */
+bool pgloss_impl_normalize(vec3 v, out vec3 n)
+{
+    n = vec3(0.0);
+    return pgloss_impl_finite3(v) && pgloss_impl_normalize_finite(v, n);
+}
+
+/* Near-unit: squared length within 2^-20 of 1. Every unit vector rounded to float is one
+ * (|v|² - 1 is a few ulp); the C core's UNIT_L2_LO / UNIT_L2_HI (batch_isa.c). */
+#define PGLOSS_IMPL_UNIT_L2_LO 0.99999904632568359375   /* 1 - 2^-20 */
+#define PGLOSS_IMPL_UNIT_L2_HI 1.00000095367431640625   /* 1 + 2^-20 */
+
+/* Whether finite v is near-unit. */
+bool pgloss_impl_near_unit(vec3 v)
+{
+    float l2 = dot(v, v);
+    return l2 >= PGLOSS_IMPL_UNIT_L2_LO && l2 <= PGLOSS_IMPL_UNIT_L2_HI;
+}
+
+/* A direction for pgloss_impl_eval_pdf: v as given if near-unit, else normalised (the C
+ * core's unit_chunk). false (n = 0) for a zero or non-finite vector. */
+bool pgloss_impl_unit(vec3 v, out vec3 n)
+{
+    n = vec3(0.0);
+    if (!pgloss_impl_finite3(v))
+        return false;
+    if (pgloss_impl_near_unit(v)) {
+        n = v;
+        return true;
+    }
+    return pgloss_impl_normalize_finite(v, n);
 }
 
 bool pgloss_impl_valid_normalization(int n)
@@ -311,7 +346,20 @@ float pgloss_specular_probability(pgloss_material m, uint lobes)
 
 /* ---- evaluation (brdf.c) ------------------------------------------------------------- */
 
-/* f and pdf of the active lobes at unit directions o, i. */
+/* f and pdf of the active lobes at near-unit directions o, i (pgloss_impl_unit): the twin
+ * of the C core's batched kernel_eval_pdf (batch_isa.c; eq. 2, Walter 2005's pdf).
+ *
+ * eq. 2's exponent comes from a half vector free of the rounding of normalised directions.
+ * Near the mirror direction, where the lobe lives, the x and y of ô + î are small
+ * differences: normalising o and i in float moves them by an ulp of 1, a relative error of
+ * ~6e-8/tanδ in tanδ (2e-5 of f at α = 0.07). With |o|² = 1 + εo, |i|² = 1 + εi
+ * (|ε| <= 2^-20), s = i + o and d = i − o, ô + î is parallel, to O(ε²) = 2^-40, to
+ *   h = s − (D/4) d,   D = |i|² − |o|² = Σ d_k s_k,
+ * whose small components are rounded relative to themselves: tan²δ = (hx² + hy²)/hz² comes
+ * out within a few ulp. 1/|v| = 1.5 − |v|²/2 to O(ε²), so cosθ = z (1.5 − |v|²/2) and
+ * |ô + î|² = |h|² ro ri, without square root. h is bit for bit symmetric in o and i (d and D
+ * change sign together): f(o, i) = f(i, o) exactly. Whether the driver contracts a*b + c
+ * into an FMA changes only roundings, neither the accuracy nor the symmetry. */
 void pgloss_impl_eval_pdf(pgloss_material m, uint act, vec3 o, vec3 i, out vec3 f, out float pdf)
 {
     vec3 fd = vec3(0.0);
@@ -319,15 +367,22 @@ void pgloss_impl_eval_pdf(pgloss_material m, uint act, vec3 o, vec3 i, out vec3 
     float p = 0.0;
     if (o.z > 0.0 && i.z > 0.0 && act != 0u) {
         float ps = pgloss_impl_specular_probability(m, act);
+        float ro = 1.5 - 0.5 * dot(o, o); /* 1/|o| */
+        float ri = 1.5 - 0.5 * dot(i, i); /* 1/|i| */
+        float cos_o = o.z * ro;
+        float cos_i = i.z * ri;
 #ifndef PGLOSS_NO_DIFFUSE
         if ((act & PGLOSS_LOBE_DIFFUSE) != 0u) {
             fd = m.rho_d * PGLOSS_INV_PI;
-            p += (1.0 - ps) * i.z * PGLOSS_INV_PI;
+            p += (1.0 - ps) * cos_i * PGLOSS_INV_PI;
         }
 #endif
 #ifndef PGLOSS_NO_SPECULAR
         if ((act & PGLOSS_LOBE_SPECULAR) != 0u) {
-            vec3 h = o + i;
+            vec3 s = i + o;
+            vec3 d = i - o;
+            float q = 0.25 * dot(d, s); /* (|i|² − |o|²)/4 */
+            vec3 h = s - q * d;         /* parallel to ô + î */
             float hz2 = max(h.z * h.z, PGLOSS_FLT_MIN);
 #ifdef PGLOSS_NO_ANISOTROPY
             float x = (h.x * h.x + h.y * h.y) * (m.inv_alpha_x * m.inv_alpha_x) / hz2;
@@ -339,10 +394,10 @@ void pgloss_impl_eval_pdf(pgloss_material m, uint act, vec3 o, vec3 i, out vec3 
             /* exp(-tan²δ/α²) of eq. 2 (anisotropic form: Ward 1992); x capped so that no
              * Inf reaches exp (exp(-1e4) is 0 in float anyway). */
             float e = exp(-min(x, 1e4));
-            float ci = max(i.z, PGLOSS_COS_MIN);
-            float co = max(o.z, PGLOSS_COS_MIN);
+            float ci = max(cos_i, PGLOSS_COS_MIN);
+            float co = max(cos_o, PGLOSS_COS_MIN);
             float hzc = ci + co;
-            float hh = dot(h, h);
+            float hh = dot(h, h) * (ro * ri); /* |ô + î|² */
             float norm;
 #if !defined(PGLOSS_NO_NORM_WARD_DUR) || !defined(PGLOSS_NO_NORM_BOUNDED)
             switch (m.normalization) {
@@ -358,7 +413,7 @@ void pgloss_impl_eval_pdf(pgloss_material m, uint act, vec3 o, vec3 i, out vec3 
             norm = inversesqrt(ci * co);                                               /* eq. 2 */
 #endif
             fs = m.spec_scale * e * norm;
-            /* Walter 2005: p(wi) = D(h) / (4 (wo·h)); for unit wo, wi: wo·ĥ ĥz³ = hz³ / (2 h·h). */
+            /* Walter 2005: p(wi) = D(h) / (4 (wo·h)); with H = ô + î: wo·Ĥ Ĥz³ = Hz³ / (2 H·H). */
             p += ps * (2.0 * m.pdf_scale * e * hh / (hzc * hzc * hzc));
         }
 #endif
@@ -373,8 +428,8 @@ int pgloss_eval_pdf(pgloss_material m, vec3 wo, vec3 wi, uint lobes, out vec3 f,
     f = vec3(0.0);
     pdf = 0.0;
     vec3 o, i;
-    bool ok_o = pgloss_impl_normalize(wo, o);
-    bool ok_i = pgloss_impl_normalize(wi, i);
+    bool ok_o = pgloss_impl_unit(wo, o);
+    bool ok_i = pgloss_impl_unit(wi, i);
     if (!ok_o || !ok_i)
         return PGLOSS_ERR_DIRECTION;
     pgloss_impl_eval_pdf(m, lobes & m.lobes & PGLOSS_LOBE_ALL, o, i, f, pdf);
@@ -550,16 +605,20 @@ int pgloss_sample(pgloss_material m, vec3 wo, vec3 u, uint lobes, out pgloss_sam
     s.wi = w;
     if (!(o.z > 0.0))
         return PGLOSS_OK;
+    /* f and pdf at the direction handed back, from wo and wi as pgloss_eval_pdf takes them
+     * (so s.pdf is pgloss_pdf(m, wo, s.wi, lobes)); wo is finite and non-zero here. */
+    vec3 ou = pgloss_impl_near_unit(wo) ? wo : o;
     vec3 i;
-    if (!pgloss_impl_normalize(w, i) || !(i.z > 0.0))
+    if (!pgloss_impl_unit(w, i) || !(i.z > 0.0))
         return PGLOSS_OK;
     vec3 f;
     float p;
-    pgloss_impl_eval_pdf(m, act, o, i, f, p);
+    pgloss_impl_eval_pdf(m, act, ou, i, f, p);
     if (!(p > 0.0))
         return PGLOSS_OK;
     s.pdf = p;
-    s.weight = min(f * (i.z / p), vec3(PGLOSS_FLT_MAX));
+    float cos_i = i.z * (1.5 - 0.5 * dot(i, i)); /* cosθi, as in pgloss_impl_eval_pdf */
+    s.weight = min(f * (cos_i / p), vec3(PGLOSS_FLT_MAX));
     return PGLOSS_OK;
 }
 #endif /* PGLOSS_NO_SAMPLING */

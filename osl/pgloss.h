@@ -29,6 +29,9 @@
 //   - Enums are ints (the same values). Lobe masks are ints; all bits are used as in C
 //     (0xFFFFFFFF is -1 in OSL, and -1 & 3 == 3 as in C).
 //   - pgloss_isogloss_contour writes to output arrays whose length must be >= n.
+//   - eval/pdf/sample take a direction whose squared length is within 2^-20 of 1 (as every
+//     unit vector rounded to float is) as given, like the C core's batched float kernels
+//     (batch.h), and normalise others: see pgloss__eval_pdf_unit.
 //   - Batched functions (batch.h) do not exist: a shader evaluates one point at a time.
 //   - The status strings (pgloss_status_string/name) are not provided.
 //   - PGLOSS_BOUNDARY_TOLERANCE, the slack that lets parameters rounded exactly onto the
@@ -284,6 +287,28 @@ int pgloss__normalize(vector v, output vector o)
     float inv = 1.0 / sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
     o = vector(u[0] * inv, u[1] * inv, u[2] * inv);
     return 1;
+}
+
+// Near-unit: squared length within 2^-20 of 1. Every unit vector rounded to float is one
+// (|v|² - 1 is a few ulp); the C core's UNIT_L2_LO / UNIT_L2_HI (batch_isa.c).
+#define PGLOSS__UNIT_L2_LO 0.99999904632568359375   // 1 - 2^-20
+#define PGLOSS__UNIT_L2_HI 1.00000095367431640625   // 1 + 2^-20
+
+int pgloss__near_unit(vector v)
+{
+    float l2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+    return l2 >= PGLOSS__UNIT_L2_LO && l2 <= PGLOSS__UNIT_L2_HI;
+}
+
+// A direction for pgloss__eval_pdf_unit: v as given if near-unit, else normalised (the C
+// core's unit_chunk). Returns 0 (and o = 0) for a zero-length or non-finite v.
+int pgloss__unit(vector v, output vector o)
+{
+    if (pgloss__isfinite3(v) && pgloss__near_unit(v)) {
+        o = v;
+        return 1;
+    }
+    return pgloss__normalize(v, o);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -687,7 +712,19 @@ float pgloss_specular_probability(pgloss_material m, int lobes)
     return pgloss__specular_probability_active(m, lobes & m.lobes & PGLOSS_LOBE_ALL);
 }
 
-// f and pdf of the active lobes at unit directions o, i.
+// f and pdf of the active lobes at near-unit directions o, i (pgloss__unit): the twin of the
+// C core's batched kernel_eval_pdf (batch_isa.c; eq. 2, Walter 2005's pdf).
+//
+// eq. 2's exponent comes from a half vector free of the rounding of normalised directions.
+// Near the mirror direction, where the lobe lives, the x and y of ô + î are small
+// differences: normalising o and i in float moves them by an ulp of 1, a relative error of
+// ~6e-8/tanδ in tanδ (2e-5 of f at α = 0.07). With |o|² = 1 + εo, |i|² = 1 + εi
+// (|ε| <= 2^-20), s = i + o and d = i − o, ô + î is parallel, to O(ε²) = 2^-40, to
+//   h = s − (D/4) d,   D = |i|² − |o|² = Σ d_k s_k,
+// whose small components are rounded relative to themselves: tan²δ = (hx² + hy²)/hz² comes
+// out within a few ulp. 1/|v| = 1.5 − |v|²/2 to O(ε²), so cosθ = z (1.5 − |v|²/2) and
+// |ô + î|² = |h|² ro ri, without square root. h is bit for bit symmetric in o and i (d and D
+// change sign together): f(o, i) = f(i, o) exactly.
 void pgloss__eval_pdf_unit(pgloss_material m, int active, vector o, vector i,
                            output color f, output float pdf)
 {
@@ -695,25 +732,31 @@ void pgloss__eval_pdf_unit(pgloss_material m, int active, vector o, vector i,
     float fs = 0.0, p = 0.0;
     if (o[2] > 0.0 && i[2] > 0.0 && active != 0) {
         float ps = pgloss__specular_probability_active(m, active);
+        float ro = 1.5 - 0.5 * (o[0] * o[0] + o[1] * o[1] + o[2] * o[2]);  // 1/|o|
+        float ri = 1.5 - 0.5 * (i[0] * i[0] + i[1] * i[1] + i[2] * i[2]);  // 1/|i|
+        float cos_o = o[2] * ro, cos_i = i[2] * ri;
         if (active & PGLOSS_LOBE_DIFFUSE) {
             fd = m.rho_d * PGLOSS__INV_PI;
-            p += (1.0 - ps) * i[2] * PGLOSS__INV_PI;
+            p += (1.0 - ps) * cos_i * PGLOSS__INV_PI;
         }
         if (active & PGLOSS_LOBE_SPECULAR) {
-            float hx = o[0] + i[0], hy = o[1] + i[1], hz = o[2] + i[2];
+            float sx = i[0] + o[0], sy = i[1] + o[1], sz = i[2] + o[2];
+            float dx = i[0] - o[0], dy = i[1] - o[1], dz = i[2] - o[2];
+            float q = 0.25 * (dx * sx + dy * sy + dz * sz);          // (|i|² − |o|²)/4
+            float hx = sx - q * dx, hy = sy - q * dy, hz = sz - q * dz;  // parallel to ô + î
             // exp(-tan²δ/α²) of eq. 2, anisotropic form (Ward 1992). Ratios before squares:
             // hz may be tiny, and OSL's x/0 is 0, not Inf.
             float tx = (hx * m.inv_alpha_x) / hz, ty = (hy * m.inv_alpha_y) / hz;
             float e = pgloss__exp(-(tx * tx + ty * ty));
-            float ci = max(i[2], PGLOSS_COS_MIN), co = max(o[2], PGLOSS_COS_MIN);
+            float ci = max(cos_i, PGLOSS_COS_MIN), co = max(cos_o, PGLOSS_COS_MIN);
             float hzc = ci + co;
-            float hh = hx * hx + hy * hy + hz * hz;
+            float hh = (hx * hx + hy * hy + hz * hz) * (ro * ri);  // |ô + î|²
             float norm;
             if (m.normalization == PGLOSS_NORM_WARD_DUR) norm = 1.0 / (ci * co);                   // Dür 2006
             else if (m.normalization == PGLOSS_NORM_BOUNDED) norm = hh / ((hzc * hzc) * (hzc * hzc)); // GM&D 2010
             else norm = 1.0 / (sqrt(ci) * sqrt(co));                                              // eq. 2
             fs = pgloss__to_float((m.spec_scale * e) * norm);
-            // Walter 2005: D(h)/(4 wo·h), written with the unnormalised h.
+            // Walter 2005: D(H)/(4 wo·Ĥ) with H = ô + î: wo·Ĥ Ĥz³ = Hz³ / (2 H·H).
             p += pgloss__to_float(ps * (2.0 * m.pdf_scale * e) * (hh / (hzc * hzc * hzc)));
         }
     }
@@ -726,8 +769,8 @@ int pgloss_eval_pdf(pgloss_material m, vector wo, vector wi, int lobes, output c
     f = color(0.0);
     pdf = 0.0;
     vector o, i;
-    int ok_o = pgloss__normalize(wo, o);
-    int ok_i = pgloss__normalize(wi, i);
+    int ok_o = pgloss__unit(wo, o);
+    int ok_i = pgloss__unit(wi, i);
     if (!ok_o || !ok_i) return PGLOSS_ERR_DIRECTION;
     pgloss__eval_pdf_unit(m, lobes & m.lobes & PGLOSS_LOBE_ALL, o, i, f, pdf);
     return PGLOSS_OK;
@@ -811,16 +854,19 @@ int pgloss_sample(pgloss_material m, vector wo, float u[3], int lobes, output pg
     }
     s.wi = w;
     if (!(o[2] > 0.0)) return PGLOSS_OK;
-    // Density and weight at the direction handed back.
+    // Density and weight at the direction handed back, from wo and wi as pgloss_eval_pdf
+    // takes them (so s.pdf is pgloss_pdf(m, wo, s.wi, lobes)); wo is finite and non-zero.
+    vector ou = pgloss__near_unit(wo) ? wo : o;
     vector i;
-    if (!pgloss__normalize(w, i) || !(i[2] > 0.0)) return PGLOSS_OK;
+    if (!pgloss__unit(w, i) || !(i[2] > 0.0)) return PGLOSS_OK;
     color f;
     float p;
-    pgloss__eval_pdf_unit(m, active, o, i, f, p);
+    pgloss__eval_pdf_unit(m, active, ou, i, f, p);
     if (!(p > 0.0)) return PGLOSS_OK;
+    float cos_i = i[2] * (1.5 - 0.5 * (i[0] * i[0] + i[1] * i[1] + i[2] * i[2]));  // as in eval
     s.pdf = p;
-    s.weight = color(pgloss__to_float(f[0] * i[2] / p), pgloss__to_float(f[1] * i[2] / p),
-                     pgloss__to_float(f[2] * i[2] / p));
+    s.weight = color(pgloss__to_float(f[0] * cos_i / p), pgloss__to_float(f[1] * cos_i / p),
+                     pgloss__to_float(f[2] * cos_i / p));
     return PGLOSS_OK;
 }
 

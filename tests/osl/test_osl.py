@@ -7,7 +7,9 @@
   vectors' float tolerances (vectors_osl.py, judged by tests/vectors/pgloss_vectors.py); only
   null_pointer cases are skipped;
 * pgloss_params.osl and pgloss_material.osl run: the params shader reproduces Fig. 12's
-  physical parameters from the perceptual ones.
+  physical parameters from the perceptual ones;
+* pgloss_eval_pdf near the mirror direction, on unit directions rounded to float, meets the
+  bound of tests/vectors/near_mirror.py (the cancellation-free half vector), f reciprocal.
 Run with scripts/test-osl.sh (which sets up the venv).
 """
 from __future__ import annotations
@@ -186,3 +188,42 @@ def test_material_specular_closure(tmp_path: Path) -> None:
                    samples=512)
     m = img.mean()
     assert 0.97 < m < 1.03, m
+
+
+def test_near_mirror_accuracy_and_reciprocity() -> None:
+    """tests/vectors/near_mirror.py's cases through pgloss_eval_pdf and pgloss_eval(wi, wo):
+    one pixel per case emits (f, pdf, f swapped), -1 on any non-zero status."""
+    import near_mirror as nm  # tests/vectors, on sys.path through vectors_osl
+
+    c = nm.cases()
+    n = len(c["alpha"])
+    W = 64
+    H = (n + W - 1) // W
+    arr = lambda xs: "{" + ", ".join(vo._lit(float(x)) for x in xs) + "}"  # noqa: E731
+    src = oslrt.WORK / "near_mirror.osl"
+    src.parent.mkdir(parents=True, exist_ok=True)
+    src.write_text(f"""#include "{(oslrt.OSL_DIR / 'pgloss.h').as_posix()}"
+shader near_mirror(float A[{n}] = {arr(c["alpha"])},
+                   float D[{6 * n}] = {arr(np.concatenate([c["wo"], c["wi"]], 1).ravel())},
+                   output closure color Cout = 0)
+{{
+    int k = (int)floor(P[0] + {W // 2}.0) + {W} * (int)floor({H / 2!r} - P[1]);
+    if (k >= {n}) {{ Cout = 0; return; }}
+    pgloss_physical p;
+    p.rho_d = color(0.0); p.rho_s = {vo._lit(float(np.float32(nm.RHO_S)))};
+    p.alpha_x = A[k]; p.alpha_y = A[k]; p.normalization = PGLOSS_NORM_WARD;
+    pgloss_material m;
+    int st = pgloss_material_init(m, p);
+    vector wo = vector(D[6 * k], D[6 * k + 1], D[6 * k + 2]);
+    vector wi = vector(D[6 * k + 3], D[6 * k + 4], D[6 * k + 5]);
+    color f, g;
+    float pdf;
+    st = st != 0 ? st : pgloss_eval_pdf(m, wo, wi, PGLOSS_LOBE_ALL, f, pdf);
+    st = st != 0 ? st : pgloss_eval(m, wi, wo, PGLOSS_LOBE_ALL, g);
+    color out = st != 0 ? color(-1.0) : color(f[0], pdf, g[0]);
+    Cout = emission() * (out * {vo.SCALE!r});
+}}
+""")
+    img = oslrt.render_shader(src, W, max(H, 4), oslrt.WORK / "near_mirror.exr").reshape(-1, 3)[:n]
+    img = img.astype(np.float64) / vo.SCALE
+    print("\nOSL " + nm.check(img[:, 0], img[:, 1], img[:, 2], c))
