@@ -76,7 +76,7 @@ def main() -> int:
     def ns(fn, path, tier, isa, material="both"):
         for r in rows:
             if (r["function"], r["path"], r["tier"], r["isa"], r["material"]) == (fn, path, tier, isa, material):
-                return float(r["ns"]), float(r["max_rel_err"] or "nan"), float(r["mean_rel_err"] or "nan")
+                return float(r["ns"] or "nan"), float(r["max_rel_err"] or "nan"), float(r["mean_rel_err"] or "nan")
         return float("nan"), float("nan"), float("nan")
     def best_of(tier):
         return min((ns("eval", "batch", tier, i) for i in ("baseline", "avx2", "avx512")),
@@ -130,7 +130,7 @@ n = 16 already amortises the per-call overhead (see the size table).
 """
     text = f"""# pgloss benchmarks
 
-Regenerate with `bash bench/run.sh` (about 3 minutes; `--quick` for a smoke run). The plot of
+Regenerate with `bash bench/run.sh` (about 20 s once its venvs exist, a few minutes the first time; `--quick` for a smoke run). The plot of
 time against error is written to `{plot}` (generated, not committed).
 
 Machine: {machine()}. Generated {datetime.date.today().isoformat()}.
