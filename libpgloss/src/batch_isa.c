@@ -42,6 +42,18 @@
 #define ONE_MINUS_EPS_F 0x1.fffffep-1f
 #define COS_MIN_F ((float)PGLOSS_COS_MIN)
 
+/* LOOP(lobes, normalisation) with both as compile-time constants, chosen from the run-time
+ * `active` and `norm` in scope: absent lobes and unused normalisations compile away. */
+#define PGLOSS__BY_NORM(LOOP, A)                                                                   \
+    (norm == PGLOSS_NORM_WARD_DUR                                                                  \
+         ? LOOP(A, PGLOSS_NORM_WARD_DUR)                                                           \
+         : (norm == PGLOSS_NORM_BOUNDED ? LOOP(A, PGLOSS_NORM_BOUNDED) : LOOP(A, PGLOSS_NORM_WARD)))
+#define PGLOSS__BY_LOBES(LOOP)                                                                     \
+    (active == PGLOSS_LOBE_DIFFUSE    ? LOOP(PGLOSS_LOBE_DIFFUSE, PGLOSS_NORM_WARD)                \
+     : active == PGLOSS_LOBE_SPECULAR ? PGLOSS__BY_NORM(LOOP, PGLOSS_LOBE_SPECULAR)               \
+     : active == PGLOSS_LOBE_ALL      ? PGLOSS__BY_NORM(LOOP, PGLOSS_LOBE_ALL)                    \
+                                      : LOOP(PGLOSS_LOBE_NONE, PGLOSS_NORM_WARD))
+
 /* The kernels take near-unit directions: squared length within 2^-20 of 1. Every unit
  * vector rounded to float is one (|v|² - 1 is a few ulp), so a renderer's directions reach
  * the kernels as they are; the chunk functions below normalise any other direction first. */
@@ -262,17 +274,7 @@ eval_pdf_generic(const pgloss__batch_consts *k, unsigned active, int norm, size_
                  const float *iy, const float *iz, float *r, float *g, float *b, float *p)
 {
 #define LOOP(A, N) eval_pdf_loop(k, A, N, n, ox, oy, oz, ix, iy, iz, r, g, b, p)
-#define BY_NORM(A)                                                                                 \
-    (norm == PGLOSS_NORM_WARD_DUR                                                                  \
-         ? LOOP(A, PGLOSS_NORM_WARD_DUR)                                                           \
-         : (norm == PGLOSS_NORM_BOUNDED ? LOOP(A, PGLOSS_NORM_BOUNDED) : LOOP(A, PGLOSS_NORM_WARD)))
-    switch (active) {
-    case PGLOSS_LOBE_DIFFUSE: return LOOP(PGLOSS_LOBE_DIFFUSE, PGLOSS_NORM_WARD);
-    case PGLOSS_LOBE_SPECULAR: return BY_NORM(PGLOSS_LOBE_SPECULAR);
-    case PGLOSS_LOBE_ALL: return BY_NORM(PGLOSS_LOBE_ALL);
-    default: return LOOP(PGLOSS_LOBE_NONE, PGLOSS_NORM_WARD);
-    }
-#undef BY_NORM
+    return PGLOSS__BY_LOBES(LOOP);
 #undef LOOP
 }
 
@@ -311,17 +313,7 @@ size_t EVAL_PDF_FN(const pgloss__batch_consts *k, unsigned active, int norm, siz
                    pgloss_vec3_array wo, pgloss_vec3_array wi, pgloss_rgb_out f, float *pdf)
 {
 #define LOOP(A, N) EVAL_PDF_LOOP(k, A, N, n, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, f.r, f.g, f.b, pdf)
-#define BY_NORM(A)                                                                                 \
-    (norm == PGLOSS_NORM_WARD_DUR                                                                  \
-         ? LOOP(A, PGLOSS_NORM_WARD_DUR)                                                           \
-         : (norm == PGLOSS_NORM_BOUNDED ? LOOP(A, PGLOSS_NORM_BOUNDED) : LOOP(A, PGLOSS_NORM_WARD)))
-    switch (active) {
-    case PGLOSS_LOBE_DIFFUSE: return LOOP(PGLOSS_LOBE_DIFFUSE, PGLOSS_NORM_WARD);
-    case PGLOSS_LOBE_SPECULAR: return BY_NORM(PGLOSS_LOBE_SPECULAR);
-    case PGLOSS_LOBE_ALL: return BY_NORM(PGLOSS_LOBE_ALL);
-    default: return LOOP(PGLOSS_LOBE_NONE, PGLOSS_NORM_WARD);
-    }
-#undef BY_NORM
+    return PGLOSS__BY_LOBES(LOOP);
 #undef LOOP
 }
 
@@ -444,19 +436,6 @@ void SAMPLE_FN(const pgloss__batch_consts *k, unsigned active, int norm, size_t 
 #define LOOP(A, N)                                                                                 \
     sample_loop(k, A, N, n, wo.x, wo.y, wo.z, u0, u1, u2, wi.x, wi.y, wi.z, pdf, weight.r,         \
                 weight.g, weight.b, lobe)
-#define BY_LOBE(A, N) LOOP(A, N)
-#define BY_NORM(A)                                                                                 \
-    (norm == PGLOSS_NORM_WARD_DUR                                                                  \
-         ? BY_LOBE(A, PGLOSS_NORM_WARD_DUR)                                                        \
-         : (norm == PGLOSS_NORM_BOUNDED ? BY_LOBE(A, PGLOSS_NORM_BOUNDED)                          \
-                                        : BY_LOBE(A, PGLOSS_NORM_WARD)))
-    switch (active) {
-    case PGLOSS_LOBE_DIFFUSE: BY_LOBE(PGLOSS_LOBE_DIFFUSE, PGLOSS_NORM_WARD); break;
-    case PGLOSS_LOBE_SPECULAR: BY_NORM(PGLOSS_LOBE_SPECULAR); break;
-    case PGLOSS_LOBE_ALL: BY_NORM(PGLOSS_LOBE_ALL); break;
-    default: BY_LOBE(PGLOSS_LOBE_NONE, PGLOSS_NORM_WARD); break;
-    }
-#undef BY_NORM
-#undef BY_LOBE
+    PGLOSS__BY_LOBES(LOOP);
 #undef LOOP
 }
