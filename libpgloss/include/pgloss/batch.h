@@ -51,21 +51,23 @@ pgloss_status pgloss_sample_batch(const pgloss_material *m, unsigned lobes, size
 
 /* ---- accuracy tiers and instruction sets --------------------------------------------- */
 
-/* How the batched loops compute. Maximum relative errors against the exact (40-digit)
- * values of the shared vectors, and against a long-double reference in bench/ (listed in
- * BENCHMARKS.md), on the regular range (specular exponent tan²δ/α² <= 10):
+/* How the batched loops compute. Maximum relative errors against a long-double reference
+ * (bench/, listed in BENCHMARKS.md) on the regular range (specular exponent tan²δ/α² <= 10),
+ * and against the shared vectors' exact values (tests/vectors):
  *   FLOAT      float arithmetic, IEEE division and square root, an exp within 2 ulp (the
- *              default). Directions of unit length (within 2^-20 in squared length, as
- *              every unit vector rounded to float is) enter the formulas as they are, with
- *              a half vector free of cancellation (about 8e-7 on eval and pdf; the error
- *              grows as ~2.5e-7 per unit of exponent); others are normalised first, and
- *              that rounding costs up to ~6e-8/α more near the mirror direction;
+ *              default). Unit directions (squared length within 2^-20 of 1, as every unit
+ *              vector rounded to float is) enter the formulas as they are, with a half
+ *              vector free of cancellation near the mirror direction; the error grows with
+ *              the exponent as ~2.5e-7 per unit (5.4e-7 on the paper's Experiment 1
+ *              material, 2.2e-6 for a specular lobe alone at exponent 10, where rounding
+ *              the exponent to float alone costs 2.0e-6). Other directions are normalised
+ *              first, which adds up to ~6e-8/α near the mirror direction;
  *   FAST       the same formulas with a degree-5 exp; on AVX2 and AVX-512, blocks of unit
  *              directions run in intrinsics with hardware reciprocal and rsqrt estimates
- *              refined by a Newton step and no division or square root (2.5x faster than
- *              FLOAT there, within 1e-6 of its results);
- *   REFERENCE  the scalar functions (double arithmetic, libm) element by element: the
- *              slowest, the most accurate (float rounding of the result). */
+ *              and no division or square root (2.4x faster than FLOAT on AVX-512; 5.8e-7
+ *              and 3.1e-6 in the two cases above);
+ *   REFERENCE  the scalar functions (double arithmetic) element by element: the slowest,
+ *              the most accurate (float rounding of the result). */
 typedef enum pgloss_precision {
     PGLOSS_PRECISION_FLOAT = 0,
     PGLOSS_PRECISION_FAST = 1,
