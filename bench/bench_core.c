@@ -240,9 +240,21 @@ typedef struct ctx {
     inputs *in;
     size_t n;
     int fn;
-    int scalar;                  /* 1: the scalar API, one call per element */
+    int scalar;                  /* 1: the scalar API, one call per element; 2: an empty call */
     pgloss_batch_options opt;
 } ctx;
+
+/* A function of pgloss_eval's signature that does nothing: what the scalar loop costs
+ * without any evaluation (call, arguments, stores). */
+__attribute__((noinline)) static pgloss_status empty_eval(const pgloss_material *m, pgloss_vec3 wo,
+                                                          pgloss_vec3 wi, unsigned lobes,
+                                                          pgloss_rgb *f)
+{
+    (void)m, (void)wo, (void)wi, (void)lobes;
+    f->r = f->g = f->b = 0.0f;
+    __asm__ volatile("" ::: "memory");
+    return PGLOSS_OK;
+}
 
 static void run_path(void *vp)
 {
@@ -257,7 +269,10 @@ static void run_path(void *vp)
             pgloss_rgb f;
             float p;
             switch (c->fn) {
-            case FN_EVAL: pgloss_eval(c->m, o, i, c->lobes, &f); in->fr[j] = f.r; in->fg[j] = f.g; in->fb[j] = f.b; break;
+            case FN_EVAL:
+                (c->scalar == 2 ? empty_eval : pgloss_eval)(c->m, o, i, c->lobes, &f);
+                in->fr[j] = f.r; in->fg[j] = f.g; in->fb[j] = f.b;
+                break;
             case FN_PDF: pgloss_pdf(c->m, o, i, c->lobes, &p); in->pdf[j] = p; break;
             case FN_EVAL_PDF:
                 pgloss_eval_pdf(c->m, o, i, c->lobes, &f, &p);
@@ -529,6 +544,13 @@ int main(int argc, char **argv)
     for (int fn = 0; fn < FN_COUNT; ++fn) {
         ctx c = {&glossy, PGLOSS_LOBE_ALL, &in, n, fn, 1, {PGLOSS_PRECISION_REFERENCE, PGLOSS_ISA_AUTO}};
         row("both", &c, "scalar", "double", "-");
+        if (fn == FN_EVAL) { /* the loop and call alone, for comparison */
+            c.scalar = 2;
+            const double t = time_median(run_path, &c) / (double)n * 1e9;
+            printf("| eval     | scalar   | (empty call) | -   | both     | %8.2f |           |           |\n", t);
+            if (g_csv)
+                fprintf(g_csv, "eval,scalar-empty,-,-,both,%.4f,,\n", t);
+        }
         c.scalar = 0;
         row("both", &c, "batch", "double", "-");
         for (int t = 0; t < 2; ++t)

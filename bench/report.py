@@ -85,6 +85,7 @@ def main() -> int:
     spec_float = ns("eval", "batch", "float", "auto", "specular")
     spec_fast = ns("eval", "batch", "fast", "auto", "specular")
     scalar = ns("eval", "scalar", "double", "-")
+    empty = ns("eval", "scalar-empty", "-", "-")[0]
     floor = ns("floor", "-", "-", "-", "specular")[1]
     ghz = clock_ghz(d)
     yes = lambda ok: "**yes**" if ok else "no"
@@ -123,8 +124,8 @@ would be {72 / 48 / ghz:.2f} ns for 72 flops. The FLOAT tier keeps IEEE division
 
 The scalar functions are the double-precision reference; their fast path (ordinary inputs)
 needs one square root, one division and an inline exp, but a call is a dependency chain of
-about 70 cycles (root, division, exp) and ~100 instructions, and the call itself with its
-struct arguments costs ~4 ns in this loop. For float speed on single evaluations, batch them:
+about 70 cycles (root, division, exp) and ~100 instructions, and the loop with an empty
+call of the same signature already takes {empty:.1f} ns (the "(empty call)" row). For float speed on single evaluations, batch them:
 n = 16 already amortises the per-call overhead (see the size table).
 
 """
