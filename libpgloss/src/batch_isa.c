@@ -407,9 +407,15 @@ PGLOSS_INLINE void sample_loop(const pgloss__batch_consts *restrict k, const uns
             spec_c[j] = drawn ? (spec ? PGLOSS_LOBE_SPECULAR : PGLOSS_LOBE_DIFFUSE)
                               : PGLOSS_LOBE_NONE;
         }
-        /* f and pdf at the float direction handed back, as the scalar function does. */
+        /* f and pdf at the float direction handed back, as the scalar function does (in the
+         * FAST tier's blocks where it has them; rejected samples are zeroed below by ok). */
+#if defined(PGLOSS_VW)
+        eval_pdf_loop_v(k, active, norm, m, oxs + base, oys + base, ozs + base, wx + base,
+                        wy + base, wz + base, wr + base, wg + base, wb + base, pdfs + base, 1, 1);
+#else
         eval_chunk(k, active, norm, m, oxs + base, oys + base, ozs + base, wx + base, wy + base,
                    wz + base, ok, wr + base, wg + base, wb + base, pdfs + base);
+#endif
         /* weight = f cosθi / pdf, 0 where the sample is rejected (pdf 0). */
         for (size_t j = 0; j < m; ++j) {
             const float p = pdfs[base + j];
