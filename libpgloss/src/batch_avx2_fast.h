@@ -41,6 +41,10 @@ typedef __m256 pgloss__m;
 #define VBOTH_POSITIVE(a, b)                                                                       \
     _mm256_castsi256_ps(_mm256_cmpgt_epi32(                                                        \
         _mm256_min_epi32(_mm256_castps_si256(a), _mm256_castps_si256(b)), _mm256_setzero_si256()))
+/* max(a, b) of floats where b > 0 and a is not NaN, on the bits (a negative a, -0 included,
+ * is a negative integer). */
+#define VMAX_POS(a, b)                                                                             \
+    _mm256_castsi256_ps(_mm256_max_epi32(_mm256_castps_si256(a), _mm256_castps_si256(b)))
 #define VADD_KEEP(m, a, b) _mm256_and_ps(m, _mm256_add_ps(a, b)) /* a + b where m, else 0 */
 
 /* Whether every squared length of two blocks lies in [lo, hi] (positive normals): on the

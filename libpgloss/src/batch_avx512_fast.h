@@ -36,6 +36,10 @@ typedef __mmask16 pgloss__m;
 #define VBOTH_POSITIVE(a, b)                                                                       \
     _mm512_cmp_epi32_mask(_mm512_min_epi32(_mm512_castps_si512(a), _mm512_castps_si512(b)),       \
                           _mm512_setzero_si512(), _MM_CMPINT_GT)
+/* max(a, b) of floats where b > 0 and a is not NaN, on the bits (a negative a, -0 included,
+ * is a negative integer): on the integer pipes, leaving the FP multiply pipes free. */
+#define VMAX_POS(a, b)                                                                             \
+    _mm512_castsi512_ps(_mm512_max_epi32(_mm512_castps_si512(a), _mm512_castps_si512(b)))
 #define VADD_KEEP(m, a, b) _mm512_maskz_add_ps(m, a, b) /* a + b where m, else 0 */
 
 /* Whether every squared length of two blocks lies in [lo, hi] (positive normals): on the

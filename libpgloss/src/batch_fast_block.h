@@ -75,8 +75,12 @@ PGLOSS_INLINE int v_eval_pdf_block(const pgloss__batch_consts *restrict k, const
     if (active & PGLOSS_LOBE_SPECULAR) {
         const pgloss__v sx = VADD(ix, ox), sy = VADD(iy, oy), sz = VADD(iz, oz);
         const pgloss__v dx = VSUB(ix, ox), dy = VSUB(iy, oy), dz = VSUB(iz, oz);
-        const pgloss__v q = VMUL(VFMADD(dx, sx, VFMADD(dy, sy, VMUL(dz, sz))), V1(0.25f));
-        const pgloss__v hx = VFNMADD(q, dx, sx), hy = VFNMADD(q, dy, sy), hz = VFNMADD(q, dz, sz);
+        /* 4h = 4s − D d: the factor 4 (two exact doublings, on the add pipes) cancels in
+         * tan²δ and is taken back in the constants of h·h below. */
+        const pgloss__v dd = VFMADD(dx, sx, VFMADD(dy, sy, VMUL(dz, sz)));
+        const pgloss__v s2x = VADD(sx, sx), s2y = VADD(sy, sy), s2z = VADD(sz, sz);
+        const pgloss__v hx = VFNMADD(dd, dx, VADD(s2x, s2x)), hy = VFNMADD(dd, dy, VADD(s2y, s2y));
+        const pgloss__v hz = VFNMADD(dd, dz, VADD(s2z, s2z));
         /* eq. 2's exponent in base 2: the constants carry log2 e. No clamp of hz²:
          * where it underflows (both cosines below ~1e-19) the exponent is NaN or -Inf,
          * which v_exp2_neg maps to 0, the value there. */
@@ -89,11 +93,11 @@ PGLOSS_INLINE int v_eval_pdf_block(const pgloss__batch_consts *restrict k, const
         const pgloss__v r = RCP_FOR_QUOTIENT(hz2);
         const pgloss__v g0 = VFNMADD(t2, r, VZERO());
         const pgloss__v e = v_exp2_neg(VFNMADD(VFMADD(g0, hz2, t2), r, g0));
-        const pgloss__v cic = VMAX(ci, V1(COS_MIN_F)), coc = VMAX(co, V1(COS_MIN_F));
-        pgloss__v hh = VZERO(), inv_hzc = VZERO(); /* unit h·h and 1/hzc: pdf and BOUNDED */
+        const pgloss__v cic = VMAX_POS(ci, V1(COS_MIN_F)), coc = VMAX_POS(co, V1(COS_MIN_F));
+        pgloss__v hh16 = VZERO(), inv_hzc = VZERO(); /* 16 × unit h·h, and 1/hzc: pdf, BOUNDED */
         if (want_p || (want_f && norm == PGLOSS_NORM_BOUNDED)) {
             const pgloss__v h2 = VFMADD(hx, hx, VFMADD(hy, hy, VMUL(hz, hz)));
-            hh = VMUL(h2, VMUL(ro, ri));
+            hh16 = VMUL(h2, VMUL(ro, ri));
             inv_hzc = v_rcp(VADD(cic, coc));
         }
         if (want_f) {
@@ -102,7 +106,8 @@ PGLOSS_INLINE int v_eval_pdf_block(const pgloss__batch_consts *restrict k, const
                 nn = v_rcp(VMUL(cic, coc));
             } else if (norm == PGLOSS_NORM_BOUNDED) { /* hh/hzc⁴ */
                 const pgloss__v inv_hzc2 = VMUL(inv_hzc, inv_hzc);
-                nn = VMUL(hh, VMUL(inv_hzc2, inv_hzc2));
+                nn = VMUL(hh16, VMUL(inv_hzc2, inv_hzc2));
+                scale = V1(0.0625f * k->spec_scale);
             } else { /* eq. 2: 1/sqrt(ci co) = (2/sqrt(ci co))/2 */
                 nn = v_rsqrt2(VMUL(cic, coc));
                 scale = V1(0.5f * k->spec_scale);
@@ -114,7 +119,7 @@ PGLOSS_INLINE int v_eval_pdf_block(const pgloss__batch_consts *restrict k, const
                 fs = VMIN(fs, V1(FLT_MAX));
         }
         if (want_p) /* Walter 2005: 2 pdf_scale e hh/hzc³ */
-            p = VFMADD(VMUL(V1(k->ps * k->pdf2), VMUL(e, hh)),
+            p = VFMADD(VMUL(V1(0.0625f * k->ps * k->pdf2), VMUL(e, hh16)),
                        VMUL(VMUL(inv_hzc, inv_hzc), inv_hzc), p);
     }
     /* f = ρd/π + fs above the horizon, 0 below; ρd/π + FLT_MAX rounds to FLT_MAX. */
