@@ -109,17 +109,18 @@ specular-only rows show the lobe's own error. (Before this kernel, normalising t
 first cost ~2√x·6e-8/α: 1.85e-5 at α = 0.07.)
 
 **Operation count and the arithmetic limit.** The FAST eval block on AVX-512
-(`libpgloss/src/batch_fast_block.h`, both lobes, eq. 2's normalisation) is 81 instructions per
-16 evaluations: 21 FMA, 15 multiplies, 9 adds, 3 min/max, 2 reciprocal/rsqrt estimates,
-vreduceps + vscalefps for exp2, integer range and sign tests, 6 loads and 3 stores; about
-72 floating-point operations per evaluation (FMA = 2). No division and no square root: unit
+(`libpgloss/src/batch_fast_block.h`, both lobes, eq. 2's normalisation) is 85 instructions per
+16 evaluations (`bash bench/mca.sh` lists them): 21 FMA, 14 multiplies, 15 adds and
+subtracts, 2 reciprocal/rsqrt estimates, vreduceps + vscalefps for exp2, integer max for the
+cosine clamps and integer range and sign tests, 6 loads and 3 stores; about 76
+floating-point operations per evaluation (FMA = 2). No division and no square root: unit
 directions need neither (1/|v| = 1.5 - |v|²/2 for |v|² within 2^-20 of 1). On this core
 (Zen 4: 512-bit operations are two halves on 256-bit pipes) the two multiply/FMA pipes are the
-bound: 46 multiply-class instructions, 46 cycles per 16 evaluations by `bash bench/mca.sh`
-(llvm-mca 19, `-mcpu=znver4`), i.e. 2.9 cycles per evaluation = {2.9 / ghz:.2f} ns at the {ghz:.2f} GHz measured
-by a dependent-add loop: the measured {bestfast[0]:.2f} ns is {100 * 2.9 / ghz / bestfast[0]:.0f} % of that bound.
+bound: 44.2 cycles per 16 evaluations by llvm-mca 19 (`-mcpu=znver4`), i.e. 2.76 cycles per
+evaluation = {2.76 / ghz:.2f} ns at the {ghz:.2f} GHz measured by a dependent-add loop: the
+measured {bestfast[0]:.2f} ns is {100 * 2.76 / ghz / bestfast[0]:.0f} % of that bound.
 The core's peak, 48 single-precision flops per cycle with FMA and adds perfectly balanced,
-would be {72 / 48 / ghz:.2f} ns for 72 flops. The FLOAT tier keeps IEEE division and square root
+would be {76 / 48 / ghz:.2f} ns for 76 flops. The FLOAT tier keeps IEEE division and square root
 (two divisions and one square root per evaluation): the divider bounds it.
 
 The scalar functions are the double-precision reference; their fast path (ordinary inputs)
