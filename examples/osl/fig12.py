@@ -71,11 +71,7 @@ def build_scene(size: int, samples: int) -> tuple[bpy.types.Scene, bpy.types.Nod
     # The box: a cube seen from inside, checkerboard walls.
     bpy.ops.mesh.primitive_cube_add(size=8.0, location=(0, 0, 3.0))
     box = bpy.context.object
-    m = bpy.data.materials.new("checks")
-    nt = m.node_tree
-    for n in list(nt.nodes):
-        nt.nodes.remove(n)
-    out = nt.nodes.new("ShaderNodeOutputMaterial")
+    m, nt, out = oslrt.empty_material("checks")
     bsdf = nt.nodes.new("ShaderNodeBsdfDiffuse")
     chk = nt.nodes.new("ShaderNodeTexChecker")
     chk.inputs["Scale"].default_value = 8.0
@@ -89,16 +85,7 @@ def build_scene(size: int, samples: int) -> tuple[bpy.types.Scene, bpy.types.Nod
     bpy.ops.mesh.primitive_uv_sphere_add(radius=1.0, location=(0, 0, 0.0), segments=96, ring_count=48)
     sphere = bpy.context.object
     bpy.ops.object.shade_smooth()
-    sm = bpy.data.materials.new("pgloss")
-    nt = sm.node_tree
-    for n in list(nt.nodes):
-        nt.nodes.remove(n)
-    out = nt.nodes.new("ShaderNodeOutputMaterial")
-    script = nt.nodes.new("ShaderNodeScript")
-    script.mode = "EXTERNAL"
-    script.filepath = str(REPO / "osl" / "pgloss_material.osl")
-    if not script.outputs:
-        raise RuntimeError("pgloss_material.osl did not compile")
+    sm, nt, script, out = oslrt.osl_material("pgloss", REPO / "osl" / "pgloss_material.osl")
     nt.links.new(script.outputs["BSDF"], out.inputs["Surface"])
     sphere.data.materials.append(sm)
 

@@ -65,6 +65,27 @@ def reset_scene() -> bpy.types.Scene:
     return sc
 
 
+def empty_material(name: str):
+    """A new material with no nodes but its output: (material, node tree, output node)."""
+    mat = bpy.data.materials.new(name)
+    nt = mat.node_tree
+    for n in list(nt.nodes):
+        nt.nodes.remove(n)
+    return mat, nt, nt.nodes.new("ShaderNodeOutputMaterial")
+
+
+def osl_material(name: str, osl_path: Path):
+    """A material with an external OSL script node (compiled by Cycles on assignment):
+    (material, node tree, script node, output node). Raises if the shader did not compile."""
+    mat, nt, out = empty_material(name)
+    script = nt.nodes.new("ShaderNodeScript")
+    script.mode = "EXTERNAL"
+    script.filepath = str(osl_path)
+    if not script.outputs:
+        raise RuntimeError(f"OSL compilation of {osl_path} failed (see the log above)")
+    return mat, nt, script, out
+
+
 def render_shader(osl_path: Path, width: int, height: int, out_exr: Path, wire=None) -> np.ndarray:
     """Renders the shader as emission on a camera-filling plane; returns float32 [H, W, 3].
 
@@ -91,16 +112,7 @@ def render_shader(osl_path: Path, width: int, height: int, out_exr: Path, wire=N
     plane = bpy.data.objects.new("plane", mesh)
     sc.collection.objects.link(plane)
 
-    mat = bpy.data.materials.new("shader")
-    nt = mat.node_tree
-    for n in list(nt.nodes):
-        nt.nodes.remove(n)
-    out = nt.nodes.new("ShaderNodeOutputMaterial")
-    script = nt.nodes.new("ShaderNodeScript")
-    script.mode = "EXTERNAL"
-    script.filepath = str(osl_path)
-    if not script.outputs:
-        raise RuntimeError(f"OSL compilation of {osl_path} failed (see the log above)")
+    mat, nt, script, out = osl_material("shader", osl_path)
     if wire is None:
         nt.links.new(script.outputs[0], out.inputs["Surface"])
     else:

@@ -136,14 +136,7 @@ def _furnace(inputs: dict, tmp_path: Path, samples: int = 256) -> np.ndarray:
     bpy.ops.mesh.primitive_uv_sphere_add(radius=1.0, segments=128, ring_count=64)
     bpy.ops.object.shade_smooth()
     ob = bpy.context.object
-    mat = bpy.data.materials.new("m")
-    nt = mat.node_tree
-    for n in list(nt.nodes):
-        nt.nodes.remove(n)
-    out = nt.nodes.new("ShaderNodeOutputMaterial")
-    scr = nt.nodes.new("ShaderNodeScript")
-    scr.mode = "EXTERNAL"
-    scr.filepath = str(oslrt.OSL_DIR / "pgloss_material.osl")
+    mat, nt, scr, out = oslrt.osl_material("m", oslrt.OSL_DIR / "pgloss_material.osl")
     for k, v in inputs.items():
         scr.inputs[k].default_value = v
     nt.links.new(scr.outputs["BSDF"], out.inputs["Surface"])
