@@ -26,6 +26,7 @@ typedef __m256 pgloss__m;
 #define VKEEP(m, v) _mm256_and_ps(m, v) /* v where m, else 0 */
 #define VRSQRT_EST _mm256_rsqrt_ps
 #define VRCP_EST _mm256_rcp_ps
+#define VRCP_EST_BITS 11 /* relative error <= 1.5·2^-12 */
 /* g - floor(g), and p · 2^floor(g) for g >= -127: the float whose biased exponent is
  * floor(g) + 127, which is 0 (so the product is 0) at floor(g) = -127. */
 #define VFRAC(g) _mm256_sub_ps(g, _mm256_floor_ps(g))

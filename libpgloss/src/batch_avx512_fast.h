@@ -25,6 +25,7 @@ typedef __mmask16 pgloss__m;
 #define VKEEP(m, v) _mm512_maskz_mov_ps(m, v) /* v where m, else 0 */
 #define VRSQRT_EST _mm512_rsqrt14_ps
 #define VRCP_EST _mm512_rcp14_ps
+#define VRCP_EST_BITS 14
 /* g - floor(g), and p · 2^floor(g) for g >= -126, 0 below: results stay normal, as a
  * subnormal result costs a microcode assist on some cores (many times the whole block). */
 #define VFRAC(g) _mm512_reduce_ps(g, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC)

@@ -26,8 +26,8 @@ PGLOSS_INLINE pgloss__v v_rcp(pgloss__v x)
 }
 
 /* The reciprocal that seeds a corrected quotient: the estimate itself where it has 14 bits
- * (AVX-512; one correction squares its error to 2^-28), refined once where it has 12. */
-#if PGLOSS_VW == 16
+ * (one correction squares its error to 2^-28), refined once where it has fewer. */
+#if VRCP_EST_BITS >= 14
 #define RCP_FOR_QUOTIENT(x) VRCP_EST(x)
 #else
 #define RCP_FOR_QUOTIENT(x) v_rcp(x)
