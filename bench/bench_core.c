@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 /* pgloss core benchmark: run time against error for every evaluation path.
  *
  * Prints Markdown tables (the body of BENCHMARKS.md's C section): for eval, pdf, eval_pdf and

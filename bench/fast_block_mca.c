@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 /* The FAST tier's AVX-512 eval block alone, between llvm-mca markers, for a static throughput
  * analysis (bench/mca.sh): both lobes, eq. 2's normalisation, f only — the configuration of
  * BENCHMARKS.md's operation count. Compiled with the flags of the library's AVX-512 objects. */

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
 """Peers of the pgloss core, measured in the same run on the same directions.
 
 Prints a Markdown table: ns per evaluation and max / mean relative error against a float64

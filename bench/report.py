@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
 """Writes BENCHMARKS.md from the outputs of bench/run.sh (core.md/.csv, peers.md/.csv in
 DIR) and draws the time-against-error plot DIR/pareto.png.
 

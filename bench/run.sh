@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
 # Regenerates BENCHMARKS.md (and out/bench/pareto.png): builds the core's benchmark in a
 # default Release build (no -march: the batched loops pick the ISA at run time), runs it,
 # sets up the Python layer (the package in .venv-py, as scripts/test-python.sh does, plus

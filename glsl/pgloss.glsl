@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 /*
  * pgloss.glsl — the psychophysically-based light reflection model of Pellacini, Ferwerda &
  * Greenberg (SIGGRAPH 2000) for shaders: the Ward BRDF of eq. 2 (and its two later

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 // pgloss.h — the psychophysically-based light reflection model of Pellacini, Ferwerda &
 // Greenberg (SIGGRAPH 2000) in Open Shading Language: the same functions, names, constants,
 // status codes and fallbacks as the C core (libpgloss/include/pgloss/*.h, which is the

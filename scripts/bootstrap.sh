@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
 # Installs what pgloss needs on Debian 12, and nothing twice: each package set is installed
 # only if one of its packages is missing, so a second run costs a dpkg query.
 #   bootstrap.sh core    C compiler, CMake, Ninja (all the core needs)

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
 # The main job: set up, build the core, the pgloss tool and the Embree path tracer
 # (examples/tracer), run the paper's worked examples (`pgloss demo`: Experiment 1's stimuli in
 # gloss space, Fig. 12's gloss matching, Fig. 11's isogloss contour, Fig. 10's envelope, a

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
 # The C core's tests: set up, then build and run the suite twice — a Release build, and a
 # build under AddressSanitizer + UndefinedBehaviorSanitizer. Nothing is skipped: with
 # PGLOSS_REQUIRE_ALL=1 (CI sets it) a missing dependency is a failure.

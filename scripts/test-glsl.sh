@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
 # The GLSL layer's tests (glsl/pgloss.glsl): sets up what it needs, then runs
 #   1. the glslangValidator compile matrix (GLSL 3.30 / 4.50 core, ESSL 3.00 / 3.10, Vulkan
 #      GLSL 4.50 and 4.60 ray tracing → SPIR-V; every stage x feature build) and the SPIR-V

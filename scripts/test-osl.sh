@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
 # The OSL layer's tests (osl/, tests/osl/) in a real OSL runtime: OSL 1.14 inside Cycles,
 # from Blender's Python module on PyPI (bpy 5.0.1, CPython 3.11, numpy < 2) in its own venv
 # .venv-bpy. Compiles every shader, executes every shared vector through osl/pgloss.h and

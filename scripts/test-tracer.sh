@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
 # The tracer's correctness tests (tests/tracer): white furnace, MIS vs BRDF-only vs light-only,
 # determinism across thread counts, scene-file errors, and the POV-Ray 3.7 reference
 # comparison. Sets up its own Debian packages, builds examples/tracer, runs ctest. Nothing is

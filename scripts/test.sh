@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
 # Every test of every layer (the README's test command). Each layer's script does its own
 # set-up and is quick when run again. Nothing is skipped: with PGLOSS_REQUIRE_ALL=1 (the
 # default here, and what CI sets) a missing dependency is a failure.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 // Directional albedo a(wo) = ∫ f(wo, wi) cos θi dωi of the specular lobe, per normalisation:
 //   - by adaptive cubature in double of the reference formulas (test_common.h) over the
 //     hemisphere, on a grid refined over the lobe (checked on closed forms);

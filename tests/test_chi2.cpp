@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 // Chi-square goodness-of-fit of pgloss_sample and pgloss_sample_batch against pgloss_pdf
 // (the pbrt / Mitsuba method): 10^6 samples per configuration (Release build; a quarter under
 // the sanitizers) are histogrammed on a grid over the upper hemisphere in (1 − cos θ, φ),

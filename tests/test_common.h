@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 // Shared helpers of the statistical / consistency / albedo / stress tests of libpgloss:
 // sample-count scaling for sanitizer builds, a fixed-seed RNG (PCG32), direction and
 // adversarial-value generators, an independent double-precision reference of the formulas

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 // Consistency of the BRDF entry points with each other and with the documented identities:
 //   - sample's pdf is pgloss_pdf(wo, s.wi) (bit for bit: both evaluate at the returned float wi),
 //     its weight is eval·cos θi / pdf, and a rejected sample has pdf 0 and weight 0;

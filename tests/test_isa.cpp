@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 // The batched paths on every instruction set and accuracy tier (batch.h): the FLOAT tier is
 // bit-identical on every ISA the CPU has (no FMA contraction, same code); FAST stays within
 // its stated error of the scalar double reference; REFERENCE is the scalar functions

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 // Status codes and the API's NULL / fallback contract: every failing call returns a named
 // reason and leaves finite, documented outputs (brdf.h, perceptual.h, status.h).
 #include <gtest/gtest.h>

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 // Stress test: 10^6 random and adversarial inputs per public function (a quarter under the
 // sanitizers): grazing and exactly horizontal directions, ±0, denormals, FLT_MAX / DBL_MAX,
 // NaN and ±Inf, tiny α (1e-4 and below, raised to PGLOSS_ALPHA_MIN), huge α (up to FLT_MAX),

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 // test_vectors.cpp — runs the shared test vectors (tests/vectors/*.json) through the C API.
 //
 // Every case of every file is run through the scalar function it names; the BRDF cases

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 /* test_vectors_shim.c — C helper for test_vectors.cpp: passes an arbitrary int as a
  * pgloss_normalization argument (unknown values are part of the vectors). Converting an
  * out-of-range int to an enum is well defined in C but not in C++ (UBSan flags it). */

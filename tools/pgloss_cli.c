@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 /* pgloss — command-line front end of libpgloss: convert between perceptual (L*, a*, b*, c, d)
  * and physical (ρd, ρs, α) parameters, check validity, match gloss, evaluate the BRDF. */
 #include <errno.h>

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
 """Renders a gloss chart with glsl/pgloss.glsl: spheres shaded by the Pellacini–Ferwerda–
 Greenberg model, rows of contrast gloss c, columns of distinctness-of-image gloss d, one
 panel per CIELAB lightness L* (the paper's three perceptual parameters, eqs. 3–8).

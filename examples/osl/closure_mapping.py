@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
 """Measures how far Cycles' Beckmann microfacet closure, with pgloss_material.osl's mapping,
 is from the paper's eq. 2 (isotropic Ward) — with the C core evaluating eq. 2.
 

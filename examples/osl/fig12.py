@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
 """Renders Fig. 12 of Pellacini, Ferwerda & Greenberg (SIGGRAPH 2000) in Cycles with
 osl/pgloss_material.osl: the paper's stimulus — a sphere in a checkerboard box (diffuse
 checks ρd = 0.03 and 0.767) under an overhead area light — for white, grey and black spheres

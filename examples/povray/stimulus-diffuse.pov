@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 // POV-Ray 3.7 version of examples/tracer/scenes/povray-diffuse.scene: Experiment 1's stimulus
 // environment (Pellacini, Ferwerda & Greenberg 2000, Fig. 4) with a Lambertian grey sphere.
 // Rendered headlessly by tests/tracer (Debian's povray 3.7):

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 /* Batched entry points: argument checks, then dispatch — once per call, outside the loops —
  * to the loops of batch_isa.c for the requested tier and the best (or requested) ISA, or to
  * the scalar reference functions for PGLOSS_PRECISION_REFERENCE. */

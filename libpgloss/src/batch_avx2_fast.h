@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 /* AVX2 + FMA primitives of the FAST tier's eval/pdf block (batch_fast_block.h): 8 lanes,
  * vrcpps / vrsqrtps estimates (relative error <= 1.5·2^-12) refined by one Newton step (then
  * about 2e-7), masks as all-ones lanes, and the power of two of exp2 built in the exponent

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 /* AVX-512 primitives of the FAST tier's eval/pdf block (batch_fast_block.h): 16 lanes,
  * vrcp14ps / vrsqrt14ps estimates (relative error <= 2^-14) refined by one Newton step,
  * vreduceps and vscalefps for exp2, and masked adds. */

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 /* The FAST tier's eval/pdf block in SIMD intrinsics, written once over the primitives of
  * batch_avx512_fast.h (16 lanes) or batch_avx2_fast.h (8 lanes), which batch_isa.c includes
  * first: hardware reciprocal and rsqrt estimates refined by one Newton step, FMA, and exp2

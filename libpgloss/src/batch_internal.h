@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 /* The batched paths, shared between batch.c (public entry points, validation, ISA and tier
  * dispatch) and batch_isa.c (the loops, compiled once per ISA × tier). Not installed. */
 #ifndef PGLOSS_BATCH_INTERNAL_H

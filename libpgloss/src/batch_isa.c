@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 /* The loops of the batched entry points. This file is compiled once per (ISA, tier) — see
  * libpgloss/CMakeLists.txt — with PGLOSS_ISA set to baseline / avx2 / avx512 and
  * PGLOSS_TIER_FAST set to 0 (float tier) or 1 (fast tier); batch.c picks one at run time.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 /* Scalar evaluation of the Ward BRDF (paper eq. 2 and its two later normalisations) and of
  * the sampling density. Double internally: this is the reference the float batches and the
  * shader ports are held to.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 /* CIELAB (D65) ↔ linear Rec. 709 RGB for the colour part of the paper's Fig. 13. The matrices
  * are derived (in 40-digit arithmetic) from the Rec. 709 primaries and the D65 chromaticity
  * (0.3127, 0.3290), so that neutral L*a*b* maps to R = G = B. */

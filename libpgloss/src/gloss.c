@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 /* The gloss space of §3.3 and §4: eqs. 3–8, the distance of eq. 5, its envelope (Fig. 10),
  * isogloss contours (Fig. 11) and gloss matching across lightness (Fig. 12). */
 #include "internal.h"

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 /* Internal helpers shared by the scalar (double) paths. Not installed. */
 #ifndef PGLOSS_INTERNAL_H
 #define PGLOSS_INTERNAL_H

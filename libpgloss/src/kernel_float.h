@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 /* Float kernels of the batched paths: branch-free, libm-free (so that loops vectorise without
  * -ffast-math or a vector math library), inlined into each specialised loop of batch.c.
  * Accuracy: expf/logf/sincosf below are within 2 ulp of the correctly rounded results on the

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 /* CIE 1976 lightness L* ↔ luminance factor Y (Yn = 1): the paper's f and f⁻¹ (§4, eq. 6),
  * scaled to CIELAB's [0, 100]. The exact rational constants make the two branches meet
  * continuously at Y = ε, L = κε = 8. */

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 /* Importance sampling of the Ward BRDF: lobe selection by albedo, cosine-weighted diffuse
  * directions, and Walter's (2005) half-vector sampling of the specular lobe. Double inside;
  * the record's pdf and weight come from the same code as pgloss_eval_pdf (brdf.c). */

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 #include "pgloss/status.h"
 
 const char *pgloss_status_string(pgloss_status status)

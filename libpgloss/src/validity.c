@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 /* Is a parameter set inside the paper's model, and if not, why? Plus the five-parameter
  * colour/gloss description of Fig. 13 in both directions. */
 #include "internal.h"

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
 """Compile matrix of glsl/pgloss.glsl with glslangValidator, and SPIR-V size of feature builds.
 
 Targets x stages x feature builds. Each source is "#version ..." + the build's #defines +

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
 """pytest fixtures of the GLSL tests: one EGL context for the session."""
 from __future__ import annotations
 

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
 """Executes the shared test vectors (tests/vectors/*.json) through glsl/pgloss.glsl.
 
 One compute shader (GLSL 4.50 core) includes pgloss.glsl and dispatches every case of every

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
 """glslangValidator compile matrix of glsl/pgloss.glsl: every target version x stage x
 feature build (tests/glsl/compile_matrix.py), the include guard, the #error of an empty
 build, and the SPIR-V size of the feature builds."""

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
 """pgloss_eval_pdf near the mirror direction, on unit directions rounded to float, against
 eq. 2 in double (tests/vectors/near_mirror.py): the accuracy of the cancellation-free half
 vector of pgloss_impl_eval_pdf, and exact reciprocity of f."""

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
 """Every shared test vector executed through glsl/pgloss.glsl on a real OpenGL driver
 (Mesa llvmpipe through EGL by default; PGLOSS_GLSL_DEVICE=gpu for a GPU), full build and
 feature-switch builds (on the cases whose result a switch does not change)."""

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
 """The C core (libpgloss, double precision) through ctypes: the peer implementation that
 decides the cases whose outcome depends on input precision finer than float.
 

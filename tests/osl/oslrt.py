@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
 """A real OSL runtime for tests: OSL 1.14 inside Blender's Cycles (PyPI ``bpy==5.0.1``).
 
 ``compile_osl`` runs Cycles' OSL compiler on a file. ``render_shader`` executes a shader as

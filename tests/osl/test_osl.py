@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
 """OSL layer tests, run in a real OSL runtime (OSL 1.14 in Cycles, PyPI bpy==5.0.1).
 
 * every shader in osl/ compiles with Cycles' OSL compiler;

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
 """Executes the shared test vectors (tests/vectors/*.json) through osl/pgloss.h in Cycles' OSL.
 
 For each vector file a driver shader is generated: its array parameters hold every case's

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
 """pytest set-up for the Python package's tests.
 
 * ``tests/vectors`` is put on ``sys.path`` so that the shared vector module ``pgloss_vectors``

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
 """Behaviour of the Python binding: broadcasting, dtypes, scalars, every error path, odd
 arrays (wrong shape/dtype, non-contiguous, read-only, empty), parameter objects, pickling,
 thread safety, documentation.

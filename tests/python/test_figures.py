@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
 """`python -m pgloss figures OUTDIR` writes the paper's Figs. 9, 10, 11 as PNG and SVG, and the
 numbers it draws are the paper's."""
 

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
 """The shared test vectors (tests/vectors/*.json) through the Python package.
 
 Every case of every file goes through the public Python function of the same name, one

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 // Correctness tests of examples/tracer. Expected values come from physics, not from the
 // tracer: a closed furnace reflects what it receives; three unbiased estimators of the same
 // integral agree within their noise; POV-Ray 3.7 (an independent renderer) renders the same

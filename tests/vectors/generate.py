@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
 """Reference generator for the pgloss shared test vectors.
 
 The vectors are the contract that every pgloss implementation (the C core, its batched

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
 """Near-mirror cases for the shader ports (tests/glsl, tests/osl): eq. 2 where the lobe lives.
 
 The shared vectors bound each case by its condition number, which counts the rounding of the

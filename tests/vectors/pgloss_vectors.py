@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
 """The shared test vectors (tests/vectors/*.json) for the Python-driven test layers.
 
 One module for the three layers that judge the vectors from Python — tests/python (the

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
 """Benchmark: vectorised ``pgloss.eval`` on 10⁶ direction pairs against the C batched path
 it calls (``pgloss_eval_batch``).
 

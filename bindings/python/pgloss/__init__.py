@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
 """pgloss — the psychophysically-based light reflection model of Pellacini, Ferwerda &
 Greenberg, "Toward a Psychophysically-Based Light Reflection Model for Image Synthesis",
 SIGGRAPH 2000, for numpy.

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
 # Type stubs of the pgloss package (see __init__.py for the documentation).
 import enum
 from typing import Any, NamedTuple, Optional, Sequence, Tuple, Union, overload

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
 """``python -m pgloss figures OUTDIR``: the paper's Figs. 9, 10 and 11, computed by the library.
 
 Writes PNG and SVG (matplotlib, Agg backend, no display needed) of

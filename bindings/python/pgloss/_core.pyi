@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
 # Type stubs of pgloss._core, the low layer (flat arrays in, outputs + statuses out).
 # Use the pgloss package instead; these signatures may change between versions.
 from typing import Any, List, Tuple

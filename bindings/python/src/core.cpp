@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 // core.cpp — pgloss._core: the C core's functions over flat numpy arrays.
 //
 // This is the low layer of the Python package. It takes flat, C-contiguous arrays that

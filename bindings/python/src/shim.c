@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 /* shim.c — C helpers for the Python module (core.cpp): build the core's structs from plain
  * numbers, with the normalisation as an int. The vectors pass unknown normalisations
  * (3, -1, 1000) on purpose; converting such an int to the enum is defined in C but not in

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 /* shim.h — see shim.c. v = {rho_d r, g, b, rho_s, alpha_x, alpha_y}; q = {L, a, b, c, d}. */
 #ifndef PGLOSS_PY_SHIM_H
 #define PGLOSS_PY_SHIM_H

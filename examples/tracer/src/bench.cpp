@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 // pgloss-tracer-bench — speed of the three estimators on Experiment 1's stimulus scene
 // (a benchmark, not a test). For MIS, BRDF-only and light-only sampling it reports
 //   Mrays/s     rtcIntersect1 + rtcOccluded1 calls per second, all threads;

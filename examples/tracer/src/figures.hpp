@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 // figures.hpp — the paper's figures: Fig. 4 (Experiment 1's 27 stimuli as a labelled contact
 // sheet) and Fig. 12 (gloss matching across lightness).
 #pragma once

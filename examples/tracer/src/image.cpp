@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 // image.cpp — see image.hpp.
 #include "image.hpp"
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 // image.hpp — linear EXR output (OIIO), the display pipeline (tone mapping + OCIO sRGB),
 // labelled contact sheets.
 //

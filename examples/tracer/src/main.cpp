@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 // pgloss-tracer — render a scene, or the paper's Figs. 4 and 12.
 #include "figures.hpp"
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 // render.cpp — the path tracer (see render.hpp).
 #include "render.hpp"
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 // render.hpp — unidirectional path tracer on Embree 3 with libpgloss BRDFs.
 //
 // Estimators (RenderSettings::mode):

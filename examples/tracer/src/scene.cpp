@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 // scene.cpp — parser of the scene format described in scene.hpp.
 #include "scene.hpp"
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 // scene.hpp — the tracer's scene description and its small text format.
 //
 // A scene file is a list of lines "KEYWORD [NAME] key=value key=value …"; '#' starts a comment.

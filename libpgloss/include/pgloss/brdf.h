@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 /*
  * pgloss/brdf.h — the Ward BRDF of the paper (eq. 2), its two later normalisations,
  * and importance sampling, in a local shading frame.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 /*
  * pgloss/color.h — CIELAB ↔ linear Rec. 709 RGB, for the colour part of Fig. 13.
  *

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 /*
  * pgloss/perceptual.h — the perceptually uniform gloss space of the paper.
  *

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
 /*
  * pgloss/status.h — status codes returned by every pgloss function that can fail.
  *
