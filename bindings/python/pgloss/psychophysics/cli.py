@@ -107,7 +107,9 @@ def _analyse(delta: np.ndarray, weights: np.ndarray, names, args, out: Path, log
         raise SystemExit(f"--ndim {ndim} is outside the stress curve's 1–{args.max_dims}")
     _write_curve(out / "stress_curve.csv", curve)
     fit = curve.fit(ndim)
-    x = fit.config if model == "smacof" else fit.common
+    # The weighted model's common space has unit-variance axes; scaled by the subjects' root mean
+    # square weights it is the average subject's space, whose proportions mean something.
+    x = fit.config if model == "smacof" else fit.common * np.sqrt(np.mean(fit.subject_weights**2, axis=0))
     _write_config(out / "configuration.csv", x, names)
     paths = figs.stress_curve_figure(curve, out, "stress_curve", kind=args.stress, title=curve_title,
                                      chosen=choice.ndim)

@@ -117,13 +117,18 @@ def configuration_figure(config: np.ndarray, rho_d, rho_s, alpha, outdir: Path, 
     handles += [plt.Line2D([], [], ls="", marker="o", ms=np.sqrt(z), mfc="0.7", mec="k", label=f"α = {a}")
                 for a, z in _SIZE.items()]
     if c is not None and d is not None:
-        span = 0.35 * float(np.max(np.ptp(x, axis=0)))
-        centre = x.mean(axis=0)
+        # The paper's "cross in the lower right corner": where c and d grow, placed beside the points.
+        lo, hi = x.min(axis=0), x.max(axis=0)
+        span = 0.18 * float(np.max(hi - lo))
+        centre = np.array([hi[0] + 1.6 * span, lo[1] + 1.2 * span])
         for prop, name, col in ((c, "c", "tab:red"), (d, "d", "tab:blue")):
             pf = property_fit(x, prop)
             ax.annotate("", xy=centre + span * pf.direction, xytext=centre,
                         arrowprops=dict(arrowstyle="->", color=col, lw=2))
-            ax.annotate(f"{name} (r² {pf.r2:.2f})", centre + 1.08 * span * pf.direction, color=col, fontsize=10)
+            ax.annotate(f"{name}\n(r² {pf.r2:.2f})", centre + 1.15 * span * pf.direction, color=col, fontsize=9,
+                        ha="center", va="center")
+        ax.set_xlim(lo[0] - 0.1 * span, centre[0] + 1.8 * span)
+        ax.set_ylim(min(lo[1], centre[1] - 1.6 * span) - 0.1 * span, max(hi[1], centre[1] + 1.6 * span) + 0.1 * span)
     ax.set_aspect("equal")
     ax.set_xlabel("dimension 1")
     ax.set_ylabel("dimension 2")

@@ -92,6 +92,66 @@ class _Disparities:
         return self._matrix(out)
 
 
+class _BatchDisparities:
+    """:class:`_Disparities` for K subjects at once (matrix-conditional: each subject its own
+    monotone regression). One sort and one PAVA run over all subjects: subject s's values are
+    shifted by s·gap with gap above every distance, so no pool can cross from one subject to the
+    next, and the shift is removed afterwards."""
+
+    def __init__(self, delta: np.ndarray, weights: np.ndarray, ties: str) -> None:
+        if ties not in TIES:
+            raise ValueError(f"ties must be 'primary' or 'secondary'; got {ties!r}")
+        k, n, _ = delta.shape
+        self.k, self.n, self.ties = k, n, ties
+        self.iu = np.triu_indices(n, 1)
+        m = self.iu[0].size
+        w = weights[:, self.iu[0], self.iu[1]].ravel()
+        self.sel = np.flatnonzero(w > 0)
+        self.subj = self.sel // m
+        self.m = m
+        self.delta = delta[:, self.iu[0], self.iu[1]].ravel()[self.sel]
+        self.w = w[self.sel]
+        self.order = np.lexsort((self.delta, self.subj))
+        ds, ss = self.delta[self.order], self.subj[self.order]
+        self.block = np.concatenate(([0], np.cumsum((ds[1:] != ds[:-1]) | (ss[1:] != ss[:-1]))))
+        self.block_w = np.bincount(self.block, weights=self.w[self.order])
+        self.block_subj = np.zeros(self.block_w.size, dtype=np.int64)
+        self.block_subj[self.block] = ss
+        self.block_of = np.empty_like(self.block)  # each present pair's (subject, proximity) block
+        self.block_of[self.order] = self.block
+        self.target = n * (n - 1) / 2.0
+
+    def _matrix(self, v: np.ndarray) -> np.ndarray:
+        ss = np.bincount(self.subj, weights=self.w * v * v, minlength=self.k)
+        v = v * np.sqrt(self.target / np.where(ss > 0, ss, 1.0))[self.subj]
+        flat = np.zeros(self.k * self.m)
+        flat[self.sel] = v
+        out = np.zeros((self.k, self.n, self.n))
+        out[:, self.iu[0], self.iu[1]] = flat.reshape(self.k, self.m)
+        return out + np.swapaxes(out, 1, 2)
+
+    def initial(self) -> np.ndarray:
+        return self._matrix(self.delta.astype(np.float64))
+
+    def __call__(self, dist: np.ndarray) -> np.ndarray:
+        d = dist[:, self.iu[0], self.iu[1]].ravel()[self.sel]
+        gap = 2.0 * float(np.max(d)) + 1.0
+        out = np.empty_like(d)
+        if self.ties == "primary":
+            # Sort by block, then by distance inside a block: one float key (block · gap + d) is
+            # much faster than a three-key lexsort; the blocks follow subject, then proximity.
+            key = self.block_of * gap + d
+            o = np.argsort(key, kind="stable")
+            shift = self.subj[o] * gap
+            out[o] = _isotonic(d[o] + shift, self.w[o]) - shift
+        else:
+            o = self.order
+            means = np.bincount(self.block, weights=self.w[o] * d[o]) / self.block_w
+            shift = self.block_subj * gap
+            out[o] = (_isotonic(means + shift, self.block_w) - shift)[self.block]
+        return self._matrix(np.maximum(out, 0.0))
+
+
 def _vplus(w: np.ndarray) -> Optional[np.ndarray]:
     """V⁺ of B&G eq. 8.19 for pair weights w; None for unit weights (then V⁺ B X = B X / n)."""
     n = w.shape[0]
@@ -275,7 +335,7 @@ def _wemds_once(p: Proximities, z: np.ndarray, metric: bool, ties: str, max_iter
     complete = p.complete
     vplus = [None if complete else _vplus(p.weights[s]) for s in range(k)]
     vmats = None if complete else [_vmat(p.weights[s]) for s in range(k)]
-    fns = [None if metric else _Disparities(p.delta[s], p.weights[s], ties) for s in range(k)]
+    fns = None if metric else _BatchDisparities(p.delta, p.weights, ties)
     z = z - z.mean(axis=0)
     wts = np.ones((k, ndim))
     old = None
@@ -288,7 +348,7 @@ def _wemds_once(p: Proximities, z: np.ndarray, metric: bool, ties: str, max_iter
         if metric:
             disp = p.delta
         else:
-            disp = np.stack([f.initial() if it == 1 else f(dist[s]) for s, f in enumerate(fns)])
+            disp = fns.initial() if it == 1 else fns(dist)
         raw = float(np.sum(p.weights * (disp - dist) ** 2)) / 2.0
         den = float(np.sum(p.weights * disp**2)) / 2.0
         s = raw / den if den > 0 else 0.0
@@ -297,7 +357,12 @@ def _wemds_once(p: Proximities, z: np.ndarray, metric: bool, ties: str, max_iter
             break
         old = s
         # Guttman transform per subject: the unconstrained update X̄_k.
-        xbar = np.stack([_guttman(xs[s], dist[s], disp[s], p.weights[s], vplus[s]) for s in range(k)])
+        if complete:  # V⁺ B(X_k) X_k = B(X_k) X_k / n for every subject at once
+            with np.errstate(divide="ignore", invalid="ignore"):
+                ratio = np.where(dist > 0, p.weights * disp / dist, 0.0)
+            xbar = (np.sum(ratio, axis=2)[:, :, None] * xs - np.einsum("kij,kja->kia", ratio, xs)) / n
+        else:
+            xbar = np.stack([_guttman(xs[s], dist[s], disp[s], p.weights[s], vplus[s]) for s in range(k)])
         # Projection onto X_k = Z W_k in the metric of V_k (B&G §21.2): one sweep of Z, then W.
         if complete:
             num = np.einsum("ka,kia->ia", wts, xbar)
@@ -324,7 +389,7 @@ def _wemds_once(p: Proximities, z: np.ndarray, metric: bool, ties: str, max_iter
     xs = z[None] * wts[:, None, :]
     dist = distances(xs)
     if not metric:
-        disp = np.stack([f(dist[s]) for s, f in enumerate(fns)])
+        disp = fns(dist)
     per = tuple(stress_of(disp[s], dist[s], p.weights[s]) for s in range(k))
     return WeightedEuclideanResult(common=z, subject_weights=wts, configs=xs, disparities=disp,
                                    stress=stress_of(disp, dist, p.weights), subject_stress=per,

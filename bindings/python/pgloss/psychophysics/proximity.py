@@ -104,7 +104,7 @@ def check_proximities(delta: ArrayLike, weights: Optional[ArrayLike] = None, *,
         w = np.ones_like(d)
     else:
         w = np.array(weights, dtype=np.float64)
-        if w.ndim == 2:
+        if w.ndim == 2 and w.shape == d.shape[1:]:
             w = np.broadcast_to(w, d.shape).copy()
         if w.shape != d.shape:
             raise ProximityError(f"weights must have the proximities' shape {d.shape}; got {w.shape}")

@@ -90,16 +90,21 @@ def simulate_noise(n_stimuli: int = 27, *, n_subjects: int = 9, seed: int = 0) -
 
 
 def contrast_study() -> Dict[str, np.ndarray]:
-    """Experiment 2's contrast-gloss stimuli (every ρd × ρs level of §3.3.3.1, α = 0.04) with the
-    paper's three hypotheses: eq. 4's c, the luminance ratio of the reflected white and black
-    patches (ρs + ρd/2)/(ρd/2), and the CIELAB lightness difference of the same patches."""
+    """Experiment 2's contrast-gloss stimuli (every ρd × ρs level of §3.3.3.1 — 30, where the
+    paper reports 24 images — at α = 0.04) with eq. 4's c and two decoys: the paper's first,
+    rejected hypothesis, the luminance ratio (ρs + ρd/2)/(ρd/2) of the reflected white and black
+    patches, and the specular energy ρs alone.
+
+    The paper's second hypothesis, the CIELAB lightness difference of the two patches, is no
+    decoy here: L* grows as the cube root of luminance, so without blur it *is* 116·c (eq. 4);
+    the paper told them apart only through the image-plane contrast lost to blur at large α,
+    which this model-level simulation does not render."""
     import pgloss
 
     rd, rs = (a.ravel() for a in np.meshgrid(CONTRAST_RHO_D, CONTRAST_RHO_S, indexing="ij"))
     c = np.asarray(pgloss.contrast_gloss(rd, rs))
     ratio = (rs + rd / 2) / (rd / 2)
-    lightness = np.asarray(pgloss.lightness_from_luminance(rs + rd / 2)) - np.asarray(pgloss.lightness_from_luminance(rd / 2))
-    return {"rho_d": rd, "rho_s": rs, "c (eq. 4)": c, "luminance ratio": ratio, "lightness difference": lightness}
+    return {"rho_d": rd, "rho_s": rs, "c (eq. 4)": c, "luminance ratio": ratio, "specular energy ρs": rs.copy()}
 
 
 def doi_study() -> Dict[str, np.ndarray]:
