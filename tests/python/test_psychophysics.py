@@ -253,7 +253,7 @@ def test_weighted_euclidean_metric_recovers_exact_weights() -> None:
 # --------------------------------------------------------------------------------------------
 
 PLANTED = pgloss.D_WEIGHT  # 1.78, eq. 5
-CURVE_KW = dict(n_random=1, max_iter=400, eps=1e-7, seed=0)
+CURVE_KW = dict(n_random=0, max_iter=300, eps=1e-7, seed=0)  # Torgerson + the previous dimensionality's solution
 
 
 @pytest.fixture(scope="module")
@@ -358,9 +358,10 @@ def test_magnitude_regression_is_least_squares() -> None:
 # --------------------------------------------------------------------------------------------
 #
 # "Recovered" means what the synthetic tests assert: an elbow in the stress curve, axes or
-# directions matching c and d (r² ≥ 0.9), a confirmatory fit better than shuffled stimuli
-# (permutation p < 0.05), a magnitude hypothesis with r² ≥ 0.9. On uniform random ratings none
-# of these may happen. (A bootstrap interval alone proves nothing: on noise the fitted ratio is
+# directions matching c and d (r² ≥ 0.9), a confirmatory fit clearly better than shuffled
+# stimuli (ConfirmatoryResult.recovered: permutation p < 0.05 and stress at most half the
+# shuffles' median — a bare p < 0.05 would "recover" one noise data set in 20), a magnitude
+# hypothesis with r² ≥ 0.9. On uniform random ratings none of these may happen. (A bootstrap interval alone proves nothing: on noise the fitted ratio is
 # fixed by the predictors' geometry, and the interval is tight around a meaningless value.)
 
 
@@ -387,8 +388,8 @@ def test_noise_confirmatory_not_recovered(noise) -> None:
     print(f"\nnoise confirmatory: ratio {res.weight_ratio:.3f} ({res.ci[1][0]:.3f} – {res.ci[1][1]:.3f}), "
           f"permutation p = {res.permutation.p_value:.3f}, stress-1 {res.stress.stress1:.3f}")
     assert res.recovered is False
-    assert res.permutation.p_value >= 0.05
-    assert "NOT better than chance" in res.summary()
+    assert res.permutation.observed > 0.9 * np.median(res.permutation.null)  # no better than shuffled stimuli
+    assert "NOT clearly better than chance" in res.summary()
     assert res.stress.stress1 > 0.3
 
 

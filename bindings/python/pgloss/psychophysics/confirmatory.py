@@ -60,10 +60,16 @@ class ConfirmatoryResult:
 
     @property
     def recovered(self) -> Optional[bool]:
-        """Whether the hypothesis fits better than shuffled stimuli (permutation p < 0.05);
-        None when no permutation test was run. Without it a tight interval proves nothing: on
-        pure noise the fitted ratio is set by the predictors' geometry and barely varies."""
-        return None if self.permutation is None else self.permutation.p_value < 0.05
+        """Whether the hypothesis explains the data: it fits better than shuffled stimuli
+        (permutation p < 0.05) *and* by a margin — its stress at most half the shuffles' median,
+        so that the 1-in-20 chance win of a significance test on structureless data does not
+        count. None when no permutation test was run. Without it a tight interval proves
+        nothing: on pure noise the fitted ratio is set by the predictors' geometry and barely
+        varies between subjects."""
+        if self.permutation is None:
+            return None
+        pt = self.permutation
+        return bool(pt.p_value < 0.05 and pt.observed <= 0.5 * float(np.median(pt.null)))
 
     @property
     def weight_ratio(self) -> float:
@@ -82,7 +88,7 @@ class ConfirmatoryResult:
         if self.permutation is not None:
             pt = self.permutation
             verdict = ("the hypothesis explains the data" if self.recovered else
-                       "NOT better than chance: the weights mean nothing")
+                       "NOT clearly better than chance: the weights mean nothing")
             lines.append(f"  permutation test: stress {pt.observed:.5f} vs shuffled stimuli {np.min(pt.null):.5f} – "
                          f"{np.max(pt.null):.5f} ({len(pt.null)} shuffles), p = {pt.p_value:.3f}: {verdict}")
         return "\n".join(lines)
