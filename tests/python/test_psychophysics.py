@@ -127,6 +127,31 @@ def test_cli_mds_csv_files(tmp_path: Path) -> None:
     assert proc.returncode != 0 and "'x' is not a number" in proc.stderr
 
 
+def test_cli_mds_subject_files_with_stimuli(tmp_path: Path) -> None:
+    """The researcher's path: nine subjects' CSV files plus a stimulus table → weighted
+    Euclidean non-metric fit, confirmatory MDS on pgloss's c, d, and Fig. 6."""
+    stim = synthetic.experiment1_stimuli()
+    obs = synthetic.simulate_experiment1(stim["c"], stim["d"], seed=2)
+    names = [f"p{i:02d}" for i in range(27)]
+    files = []
+    for k, m in enumerate(obs.ratings):
+        path = tmp_path / f"subject{k + 1}.csv"
+        pp.write_csv(path, m, names)
+        files.append(str(path))
+    table = ["name,rho_d,rho_s,alpha"] + [f"{n},{a},{b},{c}" for n, a, b, c in
+                                         zip(names, stim["rho_d"], stim["rho_s"], stim["alpha"])]
+    (tmp_path / "stimuli.csv").write_text("\n".join(table) + "\n")
+    out = tmp_path / "exp1"
+    proc = subprocess.run([sys.executable, "-m", "pgloss", "mds", *files, "--stimuli", str(tmp_path / "stimuli.csv"),
+                           "--max-dims", "3", "--starts", "0", "--out", str(out)],
+                          capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, proc.stderr
+    assert "non-metric, primary ties), 9 subject(s), 27 stimuli" in proc.stdout
+    assert "the elbow is at 2 dimensions" in proc.stdout
+    assert "the hypothesis explains the data" in proc.stdout
+    assert (out / "fig06_configuration.png").stat().st_size > 10_000
+
+
 def test_cli_dispatcher() -> None:
     from pgloss import __main__ as cli
 
