@@ -3,7 +3,8 @@
 # SPDX-License-Identifier: Apache-2.0
 # The Python package's tests (bindings/python, issue 3): set up, `pip install .` at the
 # repository root into the venv .venv-py, then pytest tests/python — the shared vectors,
-# the binding's behaviour, the figures command and a smoke run of the benchmark.
+# the binding's behaviour, the figures command, a smoke run of the benchmark and pgloss.psychophysics
+# (scipy: its runtime dependency; scikit-learn: the peer of its tests only).
 # Nothing is skipped: with PGLOSS_REQUIRE_ALL=1 (the default here, and what CI sets) a skipped
 # test is a failure. Quick when run again: the venv is kept while the pins are unchanged, the
 # package is reinstalled only when its sources changed, and CMake's build folder

@@ -85,7 +85,7 @@ def test_table1_stress_curve_fig3() -> None:
 def test_cli_mds_cities(tmp_path: Path) -> None:
     """`python -m pgloss mds --example cities` reproduces Fig. 2 and the stress curve (Fig. 3)."""
     out = tmp_path / "mds"
-    proc = subprocess.run([sys.executable, "-m", "pgloss", "mds", "--example", "cities", "--starts", "1",
+    proc = subprocess.run([sys.executable, "-m", "pgloss", "mds", "--example", "cities", "--starts", "0",
                            "--out", str(out)], capture_output=True, text=True, timeout=300)
     assert proc.returncode == 0, proc.stderr
     assert "the elbow is at 2 dimensions" in proc.stdout
@@ -128,10 +128,10 @@ def test_cli_mds_csv_files(tmp_path: Path) -> None:
 
 
 def test_cli_mds_subject_files_with_stimuli(tmp_path: Path) -> None:
-    """The researcher's path: nine subjects' CSV files plus a stimulus table → weighted
-    Euclidean non-metric fit, confirmatory MDS on pgloss's c, d, and Fig. 6."""
+    """The researcher's path: subjects' CSV files plus a stimulus table → weighted Euclidean
+    non-metric fit, confirmatory MDS on pgloss's c, d, and Fig. 6 (five subjects, for time)."""
     stim = synthetic.experiment1_stimuli()
-    obs = synthetic.simulate_experiment1(stim["c"], stim["d"], seed=2)
+    obs = synthetic.simulate_experiment1(stim["c"], stim["d"], n_subjects=5, seed=2)
     names = [f"p{i:02d}" for i in range(27)]
     files = []
     for k, m in enumerate(obs.ratings):
@@ -146,7 +146,7 @@ def test_cli_mds_subject_files_with_stimuli(tmp_path: Path) -> None:
                            "--max-dims", "3", "--starts", "0", "--out", str(out)],
                           capture_output=True, text=True, timeout=300)
     assert proc.returncode == 0, proc.stderr
-    assert "non-metric, primary ties), 9 subject(s), 27 stimuli" in proc.stdout
+    assert "non-metric, primary ties), 5 subject(s), 27 stimuli" in proc.stdout
     assert "the elbow is at 2 dimensions" in proc.stdout
     assert "the hypothesis explains the data" in proc.stdout
     assert (out / "fig06_configuration.png").stat().st_size > 10_000
