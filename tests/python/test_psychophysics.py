@@ -152,6 +152,26 @@ def test_cli_mds_subject_files_with_stimuli(tmp_path: Path) -> None:
     assert (out / "fig06_configuration.png").stat().st_size > 10_000
 
 
+def test_scipy_is_needed_only_by_the_fits_that_use_it() -> None:
+    """scipy is imported lazily: without it `import pgloss` and metric SMACOF work, and a
+    non-metric fit says what to install."""
+    code = (
+        "import sys; sys.modules['scipy'] = None\n"
+        "import pgloss\n"
+        "from pgloss import psychophysics as pp\n"
+        "from pgloss.psychophysics import cities\n"
+        "d = cities.table1()[0]\n"
+        "assert pp.smacof(d, 2, n_random=0).stress.stress1 < 0.01\n"
+        "try:\n"
+        "    pp.smacof(d, 2, metric=False, n_random=0)\n"
+        "except ImportError as e:\n"
+        "    print(e)\n"
+    )
+    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 0, proc.stderr
+    assert "pip install 'pgloss[psychophysics]'" in proc.stdout
+
+
 def test_cli_dispatcher() -> None:
     from pgloss import __main__ as cli
 
@@ -234,6 +254,30 @@ def test_nonmetric_ties_primary_not_worse_than_secondary() -> None:
     dl, dh = delta[iu], sec.disparities[iu]
     for v in np.unique(dl):
         assert np.ptp(dh[dl == v]) < 1e-12
+
+
+@pytest.mark.parametrize("ties", ["primary", "secondary"])
+def test_disparities_are_monotone_least_squares(ties: str) -> None:
+    """The non-metric disparities of all subjects at once (one shifted PAVA run) equal the
+    per-subject ones, are monotone in the proximities (equal for ties under 'secondary') and
+    keep the normalisation Σ d̂² = n(n−1)/2."""
+    from pgloss.psychophysics.mds import _BatchDisparities, _Disparities
+
+    rng = np.random.default_rng(8)
+    delta = np.stack([_noisy(9, s, decimals=0) for s in range(4)])
+    dist = distances(rng.standard_normal((4, 9, 2)))
+    batch = _BatchDisparities(delta, np.ones_like(delta), ties)(dist)
+    iu = np.triu_indices(9, 1)
+    for k in range(4):
+        single = _Disparities(delta[k], np.ones((9, 9)), ties)(dist[k])
+        np.testing.assert_allclose(batch[k], single, atol=1e-12)
+        dl, dh = delta[k][iu], batch[k][iu]
+        o = np.lexsort((dh, dl))
+        assert np.all(np.diff(dh[o]) >= -1e-12)
+        assert np.sum(dh**2) == pytest.approx(36.0)
+        if ties == "secondary":
+            for v in np.unique(dl):
+                assert np.ptp(dh[dl == v]) < 1e-12
 
 
 def test_missing_cells_weight_zero() -> None:

@@ -151,7 +151,8 @@ def confirmatory_mds(delta: ArrayLike, predictors: ArrayLike, *, names: Optional
     """Fits X_k = F diag(v_k) to K proximity matrices (K, n, n) with F = ``predictors`` (n, p).
 
     Returns the subject weights, the group weight ratios with a bootstrap interval over subjects
-    (``n_boot`` resamples, ``seed``), and the stress, so competing hypotheses can be compared.
+    (``n_boot`` resamples, ``seed``; with one subject the interval is that subject's ratio), and
+    the stress, so competing hypotheses can be compared.
     ``n_perm`` > 0 also runs :func:`permutation_test` (see :attr:`ConfirmatoryResult.recovered`).
     """
     p = check_proximities(delta, weights)

@@ -66,7 +66,10 @@ def mean_ratings(ratings) -> np.ndarray:
 
 def fit_hypothesis(x, ratings, name: str = "") -> LinearFit:
     """Linear regression of the mean ratings on the hypothesis values x (n_stim,)."""
-    from scipy import stats  # imported lazily: only this function needs it
+    try:
+        from scipy import stats  # imported lazily: only this function needs it
+    except ImportError:  # pragma: no cover - depends on the environment
+        raise ImportError("magnitude estimation needs scipy: pip install 'pgloss[psychophysics]'") from None
 
     x = np.asarray(x, dtype=np.float64).ravel()
     y = mean_ratings(ratings)

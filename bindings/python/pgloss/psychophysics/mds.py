@@ -41,8 +41,11 @@ TIES = ("primary", "secondary")
 
 def _isotonic(y: np.ndarray, w: np.ndarray) -> np.ndarray:
     """Weighted least-squares non-decreasing fit to y (pool-adjacent-violators, scipy's C code)."""
-    from scipy.optimize import isotonic_regression  # scipy ≥ 1.12; imported here, only MDS needs it
-
+    try:
+        from scipy.optimize import isotonic_regression  # scipy ≥ 1.12; imported here, only non-metric fits need it
+    except ImportError:  # pragma: no cover - depends on the environment
+        raise ImportError("non-metric MDS needs scipy ≥ 1.12 (scipy.optimize.isotonic_regression): "
+                          "pip install 'pgloss[psychophysics]'") from None
     return isotonic_regression(y, weights=w, increasing=True).x
 
 
