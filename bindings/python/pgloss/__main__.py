@@ -1,8 +1,17 @@
 # SPDX-FileCopyrightText: 2026 The pgloss authors
 # SPDX-License-Identifier: Apache-2.0
-"""``python -m pgloss figures OUTDIR``: the paper's Figs. 9, 10 and 11, computed by the library.
+"""``python -m pgloss COMMAND …``: the package's command line.
 
-Writes PNG and SVG (matplotlib, Agg backend, no display needed) of
+Commands (``python -m pgloss COMMAND --help`` for each):
+
+* ``figures OUTDIR`` — the paper's Figs. 9, 10 and 11, computed by the library (below);
+* ``mds …`` — the paper's MDS analysis (§3) on proximity matrices in CSV
+  (:mod:`pgloss.psychophysics.cli`).
+
+A command is one entry of :data:`COMMANDS`: its name, help line, a function that adds its
+arguments to an ``argparse`` parser and one that runs it (imported only when it is used).
+
+``figures`` writes PNG and SVG (matplotlib, Agg backend, no display needed) of
 
 * Fig. 9 — the perceptually uniform gloss space: the 27 stimuli of Experiment 1
   (ρd ∈ {0.03, 0.193, 0.767} × ρs ∈ {0.033, 0.066, 0.099} × α ∈ {0.04, 0.07, 0.10}) at their
@@ -22,7 +31,7 @@ from __future__ import annotations
 import argparse
 import sys
 from pathlib import Path
-from typing import List, Optional, Sequence
+from typing import Callable, List, NamedTuple, Optional, Sequence, Tuple
 
 import numpy as np
 
@@ -162,17 +171,57 @@ def figures(outdir: Path) -> List[Path]:
     return paths
 
 
-def main(argv: Optional[Sequence[str]] = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m pgloss", description=__doc__.split("\n\n")[0])
-    parser.add_argument("--version", action="version", version=f"pgloss {pgloss.__version__}")
-    sub = parser.add_subparsers(dest="command", required=True)
-    fp = sub.add_parser("figures", help="write PNG + SVG of the paper's Figs. 9, 10, 11 into OUTDIR")
-    fp.add_argument("outdir", type=Path, metavar="OUTDIR")
-    args = parser.parse_args(argv)
-    if args.command == "figures":
-        for p in figures(args.outdir):
-            print(p)
+def _figures_arguments(p: argparse.ArgumentParser) -> None:
+    p.add_argument("outdir", type=Path, metavar="OUTDIR")
+
+
+def _figures_run(args: argparse.Namespace) -> int:
+    for p in figures(args.outdir):
+        print(p)
     return 0
+
+
+def _mds_arguments(p: argparse.ArgumentParser) -> None:
+    from .psychophysics import cli
+
+    cli.add_arguments(p)
+
+
+def _mds_run(args: argparse.Namespace) -> int:
+    from .psychophysics import cli
+
+    return cli.run(args)
+
+
+class Command(NamedTuple):
+    """One subcommand: name, help line, argument set-up and runner (returns the exit status)."""
+
+    name: str
+    help: str
+    arguments: Callable[[argparse.ArgumentParser], None]
+    run: Callable[[argparse.Namespace], int]
+    description: str = ""
+
+
+#: The subcommands, in the order ``--help`` lists them.
+COMMANDS: Tuple[Command, ...] = (
+    Command("figures", "write PNG + SVG of the paper's Figs. 9, 10, 11 into OUTDIR", _figures_arguments,
+            _figures_run),
+    Command("mds", "MDS analysis of proximity matrices (CSV): stress curve, dimensionality, weighted Euclidean "
+            "non-metric fit, confirmatory MDS; --example cities reproduces Figs. 2 and 3", _mds_arguments, _mds_run,
+            "The paper's §3 analysis on proximity matrices, one CSV per subject (see pgloss.psychophysics.cli)."),
+)
+
+
+def main(argv: Optional[Sequence[str]] = None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m pgloss", description="pgloss command line: "
+                                     + ", ".join(c.name for c in COMMANDS))
+    parser.add_argument("--version", action="version", version=f"pgloss {pgloss.__version__}")
+    sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+    for c in COMMANDS:
+        c.arguments(sub.add_parser(c.name, help=c.help, description=c.description or c.help))
+    args = parser.parse_args(argv)
+    return next(c for c in COMMANDS if c.name == args.command).run(args)
 
 
 if __name__ == "__main__":
