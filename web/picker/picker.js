@@ -167,7 +167,7 @@ function showReadout(m) {
   st.textContent = m.name;
   st.className = statusClass(m.status);
   st.dataset.value = m.status;
-  $('out-reason').textContent = m.status === 0 ? 'inside the model' : m.reason;
+  $('out-reason').textContent = m.reason;  // pgloss_status_string, as the library words it
   $('out-reason').className = statusClass(m.status);
 
   // The envelope on the c slider.
@@ -295,6 +295,7 @@ function updateRender(m) {
     tracer.setPaints(matchInfo.map((x) => ({ rho_d: x.rho_d, rho_s: x.rho_s, alpha: x.alpha })), 3, 2);
     const labels = $('match-labels');
     labels.hidden = false;
+    labels.style.width = `${canvas.width}px`;
     labels.innerHTML = '';
     matchInfo.forEach((x, i) => {
       const div = document.createElement('div');
