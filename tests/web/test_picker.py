@@ -212,7 +212,7 @@ def test_url_hash_reproduces_state(browser: Browser, base_url: str) -> None:
 
 # ---- export -------------------------------------------------------------------------------
 
-def test_export_formats(browser: Browser, base_url: str) -> None:
+def test_export_formats(browser: Browser, base_url: str, tmp_path: Path) -> None:
     page = open_page(browser, f"{base_url}/index.html?autorun=0&size=64x48#mode=perceptual&L=35&a=45&b=25&c=0.06&d=0.95")
     j = json.loads(page.input_value("#export"))
     assert j["perceptual"] == {"L": 35, "a": 45, "b": 25, "c": 0.06, "d": 0.95}
@@ -227,7 +227,30 @@ def test_export_formats(browser: Browser, base_url: str) -> None:
         assert re.search(rf"^param \w+ {name} ", osl, re.M), name
         assert re.search(rf"\b{name}\b", (ROOT / "osl/pgloss_material.osl").read_text()), name
     page.check("input[name=export][value=glsl]")
-    assert "pgloss_perceptual(35.0, 45.0, 25.0, 0.06, 0.95)" in page.input_value("#export")
+    snippet = page.input_value("#export")
+    assert "pgloss_perceptual(35.0, 45.0, 25.0, 0.06, 0.95)" in snippet
+    # The GLSL snippet compiles (ESSL 3.00, this browser's WebGL2) after glsl/pgloss.glsl.
+    log = page.evaluate("""async (snippet) => {
+        const glsl = await (await fetch('pgloss.glsl')).text();
+        const gl = document.createElement('canvas').getContext('webgl2');
+        const sh = gl.createShader(gl.FRAGMENT_SHADER);
+        gl.shaderSource(sh, `#version 300 es\n${glsl}\nout vec4 o;\nvoid main() {\n${snippet}\n` +
+                            `o = vec4(m.rho_d, float(st));\n}\n`);
+        gl.compileShader(sh);
+        return gl.getShaderParameter(sh, gl.COMPILE_STATUS) ? 'ok' : gl.getShaderInfoLog(sh);
+    }""", snippet)
+    assert log == "ok", log
+    # Both scene lines are accepted by pgloss-tracer's parser (a 1-spp render of a tiny image).
+    tracer = os.environ.get("PGLOSS_TRACER", str(ROOT / "build-tracer-test/examples/tracer/pgloss-tracer"))
+    # the active line, and the physical equivalent given as a comment
+    lines = re.findall(r"(material paint (?:perceptual|physical) .*)$", scene_text, re.M)
+    assert len(lines) == 2
+    for i, ln in enumerate(lines):
+        sc = tmp_path / f"export{i}.scene"
+        sc.write_text(re.sub(r"^material paint .*$", ln, SCENE.read_text(), flags=re.M))
+        r = subprocess.run([tracer, "render", str(sc), "--size", "8x6", "--spp", "1", "--quiet",
+                            "--out", str(tmp_path / f"export{i}")], capture_output=True, text=True)
+        assert r.returncode == 0, (ln, r.stderr)
 
 
 # ---- (c) the render agrees with pgloss-tracer ---------------------------------------------

@@ -320,12 +320,23 @@ function updateRender(m) {
   }
 }
 
-let loopRunning = false;
-function loop() {
+// Samples per pixel per frame adapt to the frame interval (which the GPU's throughput sets):
+// more while frames come faster than 20 ms, fewer above 40 ms, so a fast GPU converges in
+// seconds and a slow one stays responsive.
+let loopRunning = false, sppPerFrame = 1, lastFrame = 0;
+function loop(now) {
   if (!tracer || !AUTORUN) return;
   if (tracer.count < MAX_SPP && (state.view === 'match' || model.renderable)) {
-    tracer.step(1);
+    if (lastFrame) {
+      const dt = now - lastFrame;
+      if (dt < 20 && sppPerFrame < 32) sppPerFrame++;
+      else if (dt > 40 && sppPerFrame > 1) sppPerFrame--;
+    }
+    lastFrame = now;
+    tracer.step(Math.min(sppPerFrame, MAX_SPP - tracer.count));
     $('spp').textContent = `${tracer.count} spp`;
+  } else {
+    lastFrame = 0;
   }
   requestAnimationFrame(loop);
 }
