@@ -314,6 +314,7 @@ function updateRender(m) {
     canvas.width = SIZE[0]; canvas.height = SIZE[1];
     tracer.setPaints([m.physical], 1, 1);
     note.hidden = m.status >= 0;
+    note.style.maxWidth = `${Math.max(canvas.width, 240)}px`;
     note.textContent = m.renderable
       ? `Outside the model — ${m.name}: ${m.reason}. Rendered as computed, not clamped.`
       : `Not rendered — ${m.physicalCheck.name}: ${pg.statusString(m.physicalCheck.status)}`;
@@ -345,7 +346,16 @@ function loop(now) {
 function update(opts = {}) {
   model = convert();
   for (const k of PERCEPTUAL_KEYS) if (state.mode === 'perceptual' || opts.all) showControl(k, false);
-  if (state.mode === 'physical') for (const k of PHYSICAL_KEYS) showControl(k, false);
+  if (state.mode === 'physical') {
+    // Mark the rows the check's reason names (pgloss_check_physical's order).
+    const st = model.status, neg = (k) => state[k] < 0;
+    const out = {
+      rd_r: (st === -3 && neg('rd_r')) || st === -5, rd_g: (st === -3 && neg('rd_g')) || st === -5,
+      rd_b: (st === -3 && neg('rd_b')) || st === -5, rho_s: (st === -3 && neg('rho_s')) || st === -5,
+      alpha: st === -4 || st === 1,
+    };
+    for (const k of PHYSICAL_KEYS) showControl(k, out[k]);
+  }
   if (state.mode === 'perceptual') $('rng-c').closest('.ctl').classList.toggle('out', model.status === -6 || model.status === -5 || state.c > Number($('rng-c').max));
   showReadout(model);
   drawPlot(model);
