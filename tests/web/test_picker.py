@@ -175,6 +175,17 @@ def test_envelope_mark(browser: Browser, base_url: str) -> None:
     assert abs(frac - want / 0.6) < 0.02, (frac, want)
 
 
+def test_plot_click_picks(browser: Browser, base_url: str) -> None:
+    page = open_page(browser, f"{base_url}/index.html?autorun=0&size=64x48#mode=perceptual&L=60&a=0&b=0&c=0.05&d=0.95")
+    x, y = page.evaluate("window.picker.plotXY(0.12, 0.9)")
+    box = page.locator("#plot").bounding_box()
+    assert box
+    page.mouse.click(box["x"] + x, box["y"] + y)
+    c, d = float(page.input_value("#num-c")), float(page.input_value("#num-d"))
+    assert abs(c - 0.12) < 0.004 and abs(d - 0.9) < 0.004, (c, d)
+    assert "c=" + page.input_value("#num-c") in page.url
+
+
 def python_envelope(L: float) -> float:
     py = os.environ.get("PGLOSS_WEB_PY", str(ROOT / ".venv-py/bin/python"))
     r = subprocess.run([py, "-c", f"import pgloss; print(repr(pgloss.envelope_contrast({L!r})))"],

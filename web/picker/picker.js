@@ -412,6 +412,6 @@ async function main() {
 
 // For tests and the console: the live objects.
 window.picker = { state, get model() { return model; }, get tracer() { return tracer; }, get pg() { return pg; },
-  update, ready: main().then(() => true, (e) => {
+  update, plotXY: (c, d) => plotXY($('plot'), c, d), ready: main().then(() => true, (e) => {
     const err = $('error'); err.hidden = false; err.textContent = `The picker failed to start: ${e.message}`; throw e;
   }) };
