@@ -183,7 +183,7 @@ def test_plot_click_picks(browser: Browser, base_url: str) -> None:
     page.mouse.click(box["x"] + x, box["y"] + y)
     c, d = float(page.input_value("#num-c")), float(page.input_value("#num-d"))
     assert abs(c - 0.12) < 0.004 and abs(d - 0.9) < 0.004, (c, d)
-    assert "c=" + page.input_value("#num-c") in page.url
+    assert "c=" + page.input_value("#num-c") in page.evaluate("location.href")
 
 
 def python_envelope(L: float) -> float:
@@ -201,7 +201,7 @@ def test_url_hash_reproduces_state(browser: Browser, base_url: str) -> None:
     set_control(page, "a", 12.25)
     set_control(page, "c", 0.071)
     page.check("input[name=view][value=match]")
-    url = page.url
+    url = page.evaluate("location.href")  # (page.url follows replaceState only asynchronously)
     assert re.search(r"L=42\.5", url) and "view=match" in url, url
     before = {k: page.inner_text(f"#out-{k}") for k in ("rho-d", "rho-s", "alpha", "status", "lab", "cd")}
     paints_before = page.evaluate("window.picker.tracer.paints")
@@ -214,7 +214,7 @@ def test_url_hash_reproduces_state(browser: Browser, base_url: str) -> None:
     # Physical mode round-trips too.
     other.check("input[name=mode][value=physical]")
     set_control(other, "rho_s", 0.05)
-    third = open_page(browser, other.url)
+    third = open_page(browser, other.evaluate("location.href"))
     assert third.is_checked("input[name=mode][value=physical]")
     assert third.input_value("#num-rho_s") == "0.05"
     assert third.inner_text("#out-cd") == other.inner_text("#out-cd")
