@@ -13,4 +13,5 @@ bash scripts/test-python.sh
 bash scripts/test-glsl.sh
 bash scripts/test-osl.sh
 bash scripts/test-tracer.sh
+bash scripts/test-web.sh
 echo "== every test passed ($((SECONDS - start)) s)"

@@ -1,0 +1,403 @@
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
+"""The colour/gloss picker (web/picker) in a real browser: Debian's Chromium, headless, WebGL2 on
+SwiftShader, driven by Playwright (no browser download). Run by scripts/test-web.sh, which builds
+the site, the Python binding (expected values) and pgloss-tracer (reference image) first.
+
+Environment (set by scripts/test-web.sh): PGLOSS_WEB_SITE (the built site), PGLOSS_WEB_PY (a Python
+with the pgloss binding), PGLOSS_TRACER (the pgloss-tracer binary), PGLOSS_CHROMIUM.
+"""
+from __future__ import annotations
+
+import json
+import math
+import os
+import re
+import socket
+import subprocess
+import sys
+import time
+from pathlib import Path
+from typing import Any, Dict, Iterator, List, Tuple
+
+import numpy as np
+import pytest
+from playwright.sync_api import Browser, Page, sync_playwright
+
+ROOT = Path(__file__).resolve().parents[2]
+SITE = Path(os.environ.get("PGLOSS_WEB_SITE", ROOT / "build-web/site"))
+OUT = ROOT / "out/web"
+CHROMIUM = os.environ.get("PGLOSS_CHROMIUM", "/usr/bin/chromium")
+FLAGS = ["--headless=new", "--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--no-sandbox",
+         "--disable-background-networking", "--disable-component-update"]
+SCENE = ROOT / "examples/tracer/scenes/stimulus.scene"
+
+# Paints set through the controls (L*, a*, b*, c, d): the stimulus grey (≈ Fig. 11's reference),
+# the README's dark red, a light blue, an untrusted spread (d < 0.8), one beyond the envelope
+# (the envelope at L* 90 is c ≈ 0.129) and one outside the Rec. 709 gamut.
+PAINTS: List[Dict[str, float]] = [
+    {"L": 51.04, "a": 0.0, "b": 0.0, "c": 0.087, "d": 0.93},
+    {"L": 35.0, "a": 45.0, "b": 25.0, "c": 0.06, "d": 0.95},
+    {"L": 70.0, "a": -10.0, "b": -30.0, "c": 0.04, "d": 0.97},
+    {"L": 60.0, "a": 0.0, "b": 0.0, "c": 0.05, "d": 0.75},
+    {"L": 90.0, "a": 5.0, "b": 10.0, "c": 0.2, "d": 0.96},
+    {"L": 50.0, "a": 0.0, "b": -120.0, "c": 0.05, "d": 0.95},
+]
+
+
+def _free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return int(s.getsockname()[1])
+
+
+@pytest.fixture(scope="session")
+def base_url() -> Iterator[str]:
+    if not (SITE / "pgloss.wasm").is_file():
+        pytest.fail(f"{SITE} has no pgloss.wasm: run scripts/picker.sh --build (scripts/test-web.sh does)")
+    port = _free_port()
+    srv = subprocess.Popen([sys.executable, "-m", "http.server", str(port), "--bind", "127.0.0.1",
+                            "--directory", str(SITE)], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    url = f"http://127.0.0.1:{port}"
+    for _ in range(100):
+        try:
+            socket.create_connection(("127.0.0.1", port), timeout=0.1).close()
+            break
+        except OSError:
+            time.sleep(0.05)
+    yield url
+    srv.terminate()
+    srv.wait(5)
+
+
+@pytest.fixture(scope="session")
+def browser() -> Iterator[Browser]:
+    if not Path(CHROMIUM).is_file():
+        pytest.fail(f"no Chromium at {CHROMIUM} (Debian package chromium; scripts/test-web.sh installs it)")
+    with sync_playwright() as p:
+        b = p.chromium.launch(executable_path=CHROMIUM, args=FLAGS, headless=True)
+        yield b
+        b.close()
+
+
+def open_page(browser: Browser, url: str, viewport: Tuple[int, int] = (1100, 820)) -> Page:
+    page = browser.new_page(viewport={"width": viewport[0], "height": viewport[1]})
+    errors: List[str] = []
+    page.on("pageerror", lambda e: errors.append(str(e)))
+    page.on("console", lambda m: errors.append(m.text) if m.type == "error" and "favicon" not in m.text
+            and "404" not in m.text else None)
+    page.goto(url)
+    page.evaluate("window.picker.ready")
+    assert page.locator("#error").is_hidden(), page.locator("#error").inner_text()
+    page.errors = errors  # type: ignore[attr-defined]
+    return page
+
+
+def python_expected(paints: List[Dict[str, float]]) -> List[Dict[str, Any]]:
+    py = os.environ.get("PGLOSS_WEB_PY", str(ROOT / ".venv-py/bin/python"))
+    if not Path(py).is_file():
+        pytest.fail(f"no Python with the pgloss binding at {py} (PGLOSS_PY_SETUP_ONLY=1 bash scripts/test-python.sh)")
+    r = subprocess.run([py, str(ROOT / "tests/web/expected_python.py")], input=json.dumps(paints),
+                       capture_output=True, text=True, check=True, cwd="/")
+    return json.loads(r.stdout)
+
+
+def close(a: float, b: float) -> bool:
+    """Same double up to the last bits: wasi-libc's and glibc's cbrt/pow may differ by an ulp;
+    the shared vectors allow the C core 1e-12 relative."""
+    return abs(a - b) <= 1e-12 * max(abs(a), abs(b)) + 1e-300
+
+
+def fmt6(x: float) -> str:
+    """The page's read-out format: 6 significant digits, shortest form (JS Number(x.toPrecision(6)))."""
+    s = f"{float(f'{x:.6g}')!r}"
+    return s[:-2] if s.endswith(".0") else s
+
+
+def set_control(page: Page, key: str, value: float) -> None:
+    page.fill(f"#num-{key}", repr(value))  # fires `input`, as typing does
+
+
+# ---- (b) the displayed numbers are the binding's ------------------------------------------
+
+def test_readout_equals_python_binding(browser: Browser, base_url: str) -> None:
+    page = open_page(browser, f"{base_url}/index.html?autorun=0&size=64x48")
+    want = python_expected(PAINTS)
+    seen_status = set()
+    for paint, exp in zip(PAINTS, want):
+        for k in ("L", "a", "b", "c", "d"):
+            set_control(page, k, paint[k])
+        rd = json.loads(page.get_attribute("#out-rho-d", "data-value") or "null")
+        rs = json.loads(page.get_attribute("#out-rho-s", "data-value") or "null")
+        al = json.loads(page.get_attribute("#out-alpha", "data-value") or "null")
+        status = page.inner_text("#out-status")
+        reason = page.inner_text("#out-reason")
+        label = f"paint {paint}"
+        assert status == exp["status"], label
+        assert reason == exp["reason"], label
+        assert all(close(g, w) for g, w in zip(rd, exp["rho_d"])), (label, rd, exp["rho_d"])
+        assert close(rs, exp["rho_s"]) and close(al, exp["alpha"]), (label, rs, al, exp)
+        # what a person reads: the same numbers at 6 digits
+        assert page.inner_text("#out-rho-d") == ", ".join(fmt6(x) for x in exp["rho_d"]), label
+        assert page.inner_text("#out-rho-s") == fmt6(exp["rho_s"]), label
+        assert page.inner_text("#out-alpha") == fmt6(exp["alpha"]), label
+        seen_status.add(status)
+        # Out-of-model values are shown as such: the c row is marked, the view says why.
+        if exp["status"] == "PGLOSS_ERR_ENVELOPE":
+            assert page.locator(".ctl[data-key=c].out").count() == 1, label
+            assert page.locator("#view-note").is_visible()
+            assert "PGLOSS_ERR_ENVELOPE" in page.inner_text("#view-note")
+            assert page.input_value("#num-c") == "0.2"  # not clamped to the envelope
+        # Fig. 12 match: the paints the match view renders are pgloss_match_gloss's.
+        page.check("input[name=view][value=match]")
+        paints = page.evaluate("window.picker.tracer.paints")
+        for i, m in enumerate(exp["match"]):
+            got = paints[3 + i]
+            assert close(got["rho_d"][0], m["rho_d"]) and close(got["rho_s"], m["rho_s"]), (label, i, got, m)
+            assert page.locator("#match-labels div").nth(3 + i).locator("span").inner_text() == m["status"]
+        page.check("input[name=view][value=single]")
+    assert {"PGLOSS_OK", "PGLOSS_WARN_ALPHA_UNTRUSTED", "PGLOSS_ERR_ENVELOPE", "PGLOSS_ERR_GAMUT"} <= seen_status
+    assert not page.errors, page.errors  # type: ignore[attr-defined]
+    print(f"\n(b) {len(PAINTS)} paints: ρd, ρs, α, status and reason equal the Python binding "
+          f"(statuses {sorted(seen_status)})")
+
+
+def test_envelope_mark(browser: Browser, base_url: str) -> None:
+    page = open_page(browser, f"{base_url}/index.html?autorun=0&size=64x48")
+    set_control(page, "L", 70.0)
+    env = json.loads(page.get_attribute("#out-envelope", "data-value") or "null")
+    want = python_envelope(70.0)
+    assert close(env, want)
+    box = page.locator("#rng-c").bounding_box()
+    mark = page.locator("#envelope-mark").bounding_box()
+    assert box and mark
+    frac = (mark["x"] + mark["width"] / 2 - box["x"]) / box["width"]
+    assert abs(frac - want / 0.6) < 0.02, (frac, want)
+
+
+def test_plot_click_picks(browser: Browser, base_url: str) -> None:
+    page = open_page(browser, f"{base_url}/index.html?autorun=0&size=64x48#mode=perceptual&L=60&a=0&b=0&c=0.05&d=0.95")
+    x, y = page.evaluate("window.picker.plotXY(0.12, 0.9)")
+    box = page.locator("#plot").bounding_box()
+    assert box
+    page.mouse.click(box["x"] + x, box["y"] + y)
+    c, d = float(page.input_value("#num-c")), float(page.input_value("#num-d"))
+    assert abs(c - 0.12) < 0.004 and abs(d - 0.9) < 0.004, (c, d)
+    assert "c=" + page.input_value("#num-c") in page.evaluate("location.href")
+
+
+def python_envelope(L: float) -> float:
+    py = os.environ.get("PGLOSS_WEB_PY", str(ROOT / ".venv-py/bin/python"))
+    r = subprocess.run([py, "-c", f"import pgloss; print(repr(pgloss.envelope_contrast({L!r})))"],
+                       capture_output=True, text=True, check=True, cwd="/")
+    return float(r.stdout)
+
+
+# ---- (d) the URL hash holds the state -----------------------------------------------------
+
+def test_url_hash_reproduces_state(browser: Browser, base_url: str) -> None:
+    page = open_page(browser, f"{base_url}/index.html?autorun=0&size=64x48")
+    set_control(page, "L", 42.5)
+    set_control(page, "a", 12.25)
+    set_control(page, "c", 0.071)
+    page.check("input[name=view][value=match]")
+    url = page.evaluate("location.href")  # (page.url follows replaceState only asynchronously)
+    assert re.search(r"L=42\.5", url) and "view=match" in url, url
+    before = {k: page.inner_text(f"#out-{k}") for k in ("rho-d", "rho-s", "alpha", "status", "lab", "cd")}
+    paints_before = page.evaluate("window.picker.tracer.paints")
+    other = open_page(browser, url.replace("autorun=0", "autorun=0"))
+    after = {k: other.inner_text(f"#out-{k}") for k in ("rho-d", "rho-s", "alpha", "status", "lab", "cd")}
+    assert after == before
+    assert other.evaluate("window.picker.tracer.paints") == paints_before
+    assert other.input_value("#num-a") == "12.25"
+    assert other.is_checked("input[name=view][value=match]")
+    # Physical mode round-trips too.
+    other.check("input[name=mode][value=physical]")
+    set_control(other, "rho_s", 0.05)
+    third = open_page(browser, other.evaluate("location.href"))
+    assert third.is_checked("input[name=mode][value=physical]")
+    assert third.input_value("#num-rho_s") == "0.05"
+    assert third.inner_text("#out-cd") == other.inner_text("#out-cd")
+    print("\n(d) URL hash: perceptual and physical state, view, read-outs and rendered paints reproduced")
+
+
+# ---- export -------------------------------------------------------------------------------
+
+def test_export_formats(browser: Browser, base_url: str, tmp_path: Path) -> None:
+    page = open_page(browser, f"{base_url}/index.html?autorun=0&size=64x48#mode=perceptual&L=35&a=45&b=25&c=0.06&d=0.95")
+    j = json.loads(page.input_value("#export"))
+    assert j["perceptual"] == {"L": 35, "a": 45, "b": 25, "c": 0.06, "d": 0.95}
+    assert j["status"] == "PGLOSS_OK"
+    page.check("input[name=export][value=scene]")
+    scene_text = page.input_value("#export")
+    assert "material paint perceptual L=35 a=45 b=25 c=0.06 d=0.95" in scene_text
+    assert re.search(r"material paint physical rho_d=[0-9.e-]+,[0-9.e-]+,[0-9.e-]+ rho_s=[0-9.e-]+ alpha=0.05", scene_text)
+    page.check("input[name=export][value=osl]")
+    osl = page.input_value("#export")
+    for name in ("Lightness", "a_star", "b_star", "contrast_gloss", "distinctness_gloss", "rho_d", "rho_s", "alpha"):
+        assert re.search(rf"^param \w+ {name} ", osl, re.M), name
+        assert re.search(rf"\b{name}\b", (ROOT / "osl/pgloss_material.osl").read_text()), name
+    page.check("input[name=export][value=glsl]")
+    snippet = page.input_value("#export")
+    assert "pgloss_perceptual(35.0, 45.0, 25.0, 0.06, 0.95)" in snippet
+    # The GLSL snippet compiles (ESSL 3.00, this browser's WebGL2) after glsl/pgloss.glsl.
+    log = page.evaluate("""async (snippet) => {
+        const glsl = await (await fetch('pgloss.glsl')).text();
+        const gl = document.createElement('canvas').getContext('webgl2');
+        const sh = gl.createShader(gl.FRAGMENT_SHADER);
+        gl.shaderSource(sh, `#version 300 es\n${glsl}\nout vec4 o;\nvoid main() {\n${snippet}\n` +
+                            `o = vec4(m.rho_d, float(st));\n}\n`);
+        gl.compileShader(sh);
+        return gl.getShaderParameter(sh, gl.COMPILE_STATUS) ? 'ok' : gl.getShaderInfoLog(sh);
+    }""", snippet)
+    assert log == "ok", log
+    # Both scene lines are accepted by pgloss-tracer's parser (a 1-spp render of a tiny image).
+    tracer = os.environ.get("PGLOSS_TRACER", str(ROOT / "build-tracer-test/examples/tracer/pgloss-tracer"))
+    # the active line, and the physical equivalent given as a comment
+    lines = re.findall(r"(material paint (?:perceptual|physical) .*)$", scene_text, re.M)
+    assert len(lines) == 2
+    for i, ln in enumerate(lines):
+        sc = tmp_path / f"export{i}.scene"
+        sc.write_text(re.sub(r"^material paint .*$", ln, SCENE.read_text(), flags=re.M))
+        r = subprocess.run([tracer, "render", str(sc), "--size", "8x6", "--spp", "1", "--quiet",
+                            "--out", str(tmp_path / f"export{i}")], capture_output=True, text=True)
+        assert r.returncode == 0, (ln, r.stderr)
+
+
+# ---- (c) the render agrees with pgloss-tracer ---------------------------------------------
+
+W, H = 64, 48
+RENDER_PAINT = {"L": 40.0, "a": 20.0, "b": -10.0, "c": 0.08, "d": 0.94}
+PAGE_FRAMES, PAGE_SPP = 256, 2       # 512 samples per pixel, in 256 accumulated frames
+TRACER_SPP = 2048
+
+
+def regions(scene_text: str) -> np.ndarray:
+    """Region of each pixel centre's first hit (render.cpp's camera and Renderer::regions):
+    1 walls, 2 floor, 3 ceiling, 4 sphere, 5 light. Independent of the page's code."""
+    kv = {}
+    for line in scene_text.splitlines():
+        line = line.split("#")[0].split()
+        if line:
+            kv.setdefault(line[0], dict(w.split("=", 1) for w in line[1:] if "=" in w))
+    v = lambda s: np.array([float(x) for x in s.split(",")])  # noqa: E731
+    cam = kv["camera"]
+    pos, look, up, fov = v(cam["position"]), v(cam["look_at"]), v(cam["up"]), float(cam["fov"])
+    f = (look - pos) / np.linalg.norm(look - pos)
+    r = np.cross(f, up); r /= np.linalg.norm(r)
+    u = np.cross(r, f)
+    th = math.tan(0.5 * math.radians(fov))
+    ys, xs = np.mgrid[0:H, 0:W] + 0.5
+    sx = (2 * xs / W - 1) * (W / H) * th
+    sy = (1 - 2 * ys / H) * th
+    d = f[None, None] + sx[..., None] * r + sy[..., None] * u
+    d /= np.linalg.norm(d, axis=-1, keepdims=True)
+    lo, hi = v(kv["box"]["min"]), v(kv["box"]["max"])
+    t_hi = np.maximum((lo - pos) / d, (hi - pos) / d)
+    t_box = t_hi.min(axis=-1)
+    axis = t_hi.argmin(axis=-1)
+    p = pos + t_box[..., None] * d
+    reg = np.where(axis == 1, np.where(p[..., 1] < 0.5 * (lo[1] + hi[1]), 2, 3), 1)
+    c, rad = v(kv["sphere"]["center"]), float(kv["sphere"]["radius"])
+    oc = pos - c
+    b = (d * oc).sum(-1)
+    disc = b * b - (oc @ oc - rad * rad)
+    t_s = np.where(disc > 0, -b - np.sqrt(np.maximum(disc, 0)), np.inf)
+    reg = np.where((t_s > 0) & (t_s < t_box), 4, reg)
+    return reg
+
+
+def read_exr(path: Path) -> np.ndarray:
+    """Linear RGB of the tracer's EXR, as OpenImageIO (which wrote it) prints it: `oiiotool --dumpdata`
+    (9 significant digits, far below the noise compared here)."""
+    r = subprocess.run(["oiiotool", "--info", "-v", "--dumpdata", str(path)], check=True, capture_output=True, text=True)
+    img = np.full((H, W, 3), np.nan)
+    for m in re.finditer(r"Pixel \((\d+), (\d+)\): (\S+) (\S+) (\S+)", r.stdout):
+        x, y = int(m.group(1)), int(m.group(2))
+        img[y, x] = [float(m.group(k)) for k in (3, 4, 5)]
+    assert np.isfinite(img).all(), f"{path}: not every pixel was read"
+    return img
+
+
+def test_render_matches_tracer(browser: Browser, base_url: str, tmp_path: Path) -> None:
+    tracer = os.environ.get("PGLOSS_TRACER", str(ROOT / "build-tracer-test/examples/tracer/pgloss-tracer"))
+    if not Path(tracer).is_file():
+        pytest.fail(f"no pgloss-tracer at {tracer} (scripts/test-web.sh builds it)")
+    q = RENDER_PAINT
+    scene_text = SCENE.read_text()
+    line = f"material paint perceptual L={q['L']} a={q['a']} b={q['b']} c={q['c']} d={q['d']}"
+    ref_scene = re.sub(r"^material paint .*$", line, scene_text, flags=re.M)
+    assert line in ref_scene
+    (tmp_path / "ref.scene").write_text(ref_scene)
+    t0 = time.time()
+    subprocess.run([tracer, "render", str(tmp_path / "ref.scene"), "--size", f"{W}x{H}", "--spp", str(TRACER_SPP),
+                    "--out", str(tmp_path / "ref"), "--quiet"], check=True, capture_output=True)
+    t_tracer = time.time() - t0
+    ref = read_exr(tmp_path / "ref.exr")
+
+    hash_ = "#mode=perceptual&" + "&".join(f"{k}={v}" for k, v in q.items()) + "&view=single"
+    page = open_page(browser, f"{base_url}/index.html?autorun=0&size={W}x{H}{hash_}")
+    assert page.inner_text("#out-status") == "PGLOSS_OK"
+    t0 = time.time()
+    res = page.evaluate(f"""() => {{
+        const t = window.picker.tracer;
+        t.reset();
+        for (let i = 0; i < {PAGE_FRAMES}; i++) t.step({PAGE_SPP});
+        const s = t.readSums();
+        return {{w: s.width, h: s.height, n: s.count, sums: Array.from(s.sums)}};
+    }}""")
+    t_page = time.time() - t0
+    assert (res["w"], res["h"], res["n"]) == (W, H, PAGE_FRAMES * PAGE_SPP)
+    sums = np.array(res["sums"], dtype=np.float64).reshape(H, W, 4)
+    n = res["n"]
+    mean = sums[..., :3] / n
+    lum_w = np.array([0.2126, 0.7152, 0.0722])
+    Y_page = mean @ lum_w
+    # Per pixel: variance of the mean of n samples, from the accumulated Σ Y².
+    var_pix = np.maximum(sums[..., 3] / n - Y_page ** 2, 0) * n / (n - 1) / n
+    Y_ref = ref @ lum_w
+    reg = regions(scene_text)
+    lines, worst = [], 0.0
+    for name, code in (("sphere", 4), ("walls", 1), ("floor", 2)):
+        m = reg == code
+        k = int(m.sum())
+        assert k > 50, (name, k)
+        mp, mr = Y_page[m].mean(), Y_ref[m].mean()
+        se_page = math.sqrt(var_pix[m].sum()) / k
+        # The tracer runs the same estimator (MIS, same strategies per vertex), so its per-sample
+        # variance is the page's: its standard error is the page's scaled by √(n / spp).
+        se_ref = se_page * math.sqrt(n / TRACER_SPP)
+        z = (mp - mr) / math.hypot(se_page, se_ref)
+        worst = max(worst, abs(z))
+        rel = (mp - mr) / mr
+        lines.append(f"  {name:6s} {k:5d} px  page {mp:.5f}  tracer {mr:.5f}  diff {rel:+.3%}  "
+                     f"σ {math.hypot(se_page, se_ref) / mr:.3%}  z {z:+.2f}")
+        # Per channel, the colour of the paint: the same test on each of R, G, B with the luminance σ
+        # scaled by the channel/luminance ratio (a loose proxy; reported, and bounded at 5σ).
+        for ch in range(3):
+            cp, cr = mean[..., ch][m].mean(), ref[..., ch][m].mean()
+            zc = (cp - cr) / (math.hypot(se_page, se_ref) * max(cr / max(mr, 1e-12), 0.2))
+            lines.append(f"           channel {'RGB'[ch]}: page {cp:.5f} tracer {cr:.5f} z {zc:+.2f}")
+            assert abs(zc) < 5.0, (name, ch, cp, cr, zc)
+        assert abs(z) < 4.0, (name, mp, mr, z)
+    print(f"\n(c) {W}x{H}, page {n} spp in {PAGE_FRAMES} frames ({t_page:.1f} s on SwiftShader), "
+          f"pgloss-tracer {TRACER_SPP} spp ({t_tracer:.1f} s); paint {q}; mean luminance per region:\n" + "\n".join(lines))
+    assert not page.errors, page.errors  # type: ignore[attr-defined]
+
+
+# ---- (e) a screenshot -----------------------------------------------------------------------
+
+def test_screenshot(browser: Browser, base_url: str) -> None:
+    OUT.mkdir(parents=True, exist_ok=True)
+    page = open_page(browser, f"{base_url}/index.html?size=240x180&maxspp=96"
+                     "#mode=perceptual&L=35&a=45&b=25&c=0.06&d=0.95&view=single")
+    t0 = time.time()
+    page.wait_for_function("window.picker.tracer.count >= 96", timeout=240_000)
+    dt = time.time() - t0
+    page.screenshot(path=str(OUT / "picker.png"), full_page=True)
+    print(f"\n(e) interactive loop at 240x180: 96 spp in {dt:.1f} s ({96 * 240 * 180 / dt / 1e6:.2f} Msamples/s on SwiftShader)")
+    page.check("input[name=view][value=match]")
+    page.wait_for_function("window.picker.tracer.count >= 48", timeout=240_000)
+    page.locator("#view-panel").screenshot(path=str(OUT / "picker-match.png"))
+    assert (OUT / "picker.png").stat().st_size > 10_000
+    print(f"\n(e) screenshots: {OUT / 'picker.png'}, {OUT / 'picker-match.png'}")

@@ -1,0 +1,201 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
+// pgloss-wasm.js — loads libpgloss compiled to WebAssembly (a WASI reactor, built by
+// scripts/picker.sh from web/picker/wasm) and marshals arguments to its pgloss_* functions.
+// It computes nothing itself: every number comes from the C core. Works in browsers and
+// in Node (ES module, no dependencies, no emscripten).
+//
+// Every method returns {status, name, ...outputs}: `status` is the C pgloss_status,
+// `name` its enumerator name (pgloss_status_name); outputs are what the C function wrote,
+// also on errors (the headers document those fallbacks). Struct and array arguments are
+// plain JS objects/arrays. `nulls` (optional, a list of C parameter names) passes NULL for
+// those pointers instead, so that tests can reach PGLOSS_ERR_NULL.
+
+const WASI_ENOSYS = 52;
+
+// The core does no I/O and needs no WASI call; should a libc start-up import one anyway,
+// it gets ENOSYS (proc_exit throws), so that a module never silently depends on a host.
+function wasiStubs(module) {
+  const imports = {};
+  for (const imp of WebAssembly.Module.imports(module)) {
+    if (imp.kind !== 'function') throw new Error(`pgloss.wasm imports ${imp.module}.${imp.name} (${imp.kind}); only WASI functions can be stubbed`);
+    imports[imp.module] ??= {};
+    imports[imp.module][imp.name] = imp.name === 'proc_exit'
+      ? (code) => { throw new Error(`pgloss.wasm called proc_exit(${code})`); }
+      : () => WASI_ENOSYS;
+  }
+  return imports;
+}
+
+async function bytesOf(source) {
+  if (source instanceof ArrayBuffer || ArrayBuffer.isView(source)) return source;
+  if (typeof source === 'string' || source instanceof URL) {
+    const url = source instanceof URL ? source : new URL(source, globalThis.location?.href ?? import.meta.url);
+    if (url.protocol === 'file:') {  // Node
+      const { readFile } = await import('node:fs/promises');
+      return readFile(url);
+    }
+    const resp = await fetch(url);
+    if (!resp.ok) throw new Error(`cannot load ${url}: HTTP ${resp.status}`);
+    return resp.arrayBuffer();
+  }
+  throw new TypeError('loadPgloss: give a URL, a path URL or the module bytes');
+}
+
+export async function loadPgloss(source = new URL('./pgloss.wasm', import.meta.url)) {
+  const module = await WebAssembly.compile(await bytesOf(source));
+  const instance = await WebAssembly.instantiate(module, wasiStubs(module));
+  if (instance.exports._initialize) instance.exports._initialize();
+  return new Pgloss(instance);
+}
+
+// Layout of the public structs on wasm32 (checked against the module at load time).
+const PHYS = { size: 56, rho_d: 0, rho_s: 24, alpha_x: 32, alpha_y: 40, normalization: 48 };
+const PERC = { size: 40, fields: ['L', 'a', 'b', 'c', 'd'] };
+
+export class Pgloss {
+  constructor(instance) {
+    this.x = instance.exports;
+    const lay = (i) => this.x.pgloss_wasm_layout(i) >>> 0;
+    const got = [lay(0), lay(1), lay(2), lay(3), lay(4), lay(5), lay(6)];
+    const want = [PHYS.size, PHYS.rho_s, PHYS.alpha_x, PHYS.alpha_y, PHYS.normalization, PERC.size, 4];
+    if (got.join() !== want.join()) throw new Error(`pgloss.wasm struct layout ${got} is not the loader's ${want}`);
+    this.scratchSize = 16384;  // bytes: room for a 1000-point isogloss contour
+    this.scratch = this.x.malloc(this.scratchSize);
+    if (!this.scratch) throw new Error('pgloss.wasm: malloc failed');
+    this._names = new Map();
+  }
+
+  // --- memory helpers -------------------------------------------------------------------
+  get f64() { return new Float64Array(this.x.memory.buffer); }
+  get i32() { return new Int32Array(this.x.memory.buffer); }
+  cstring(ptr) {
+    const u8 = new Uint8Array(this.x.memory.buffer);
+    let end = ptr;
+    while (u8[end]) end++;
+    return new TextDecoder().decode(u8.subarray(ptr, end));
+  }
+  // A bump allocator over the scratch block, reset per call (calls are not re-entrant).
+  _arena() {
+    let top = this.scratch;
+    const limit = this.scratch + this.scratchSize;
+    return (bytes) => {
+      const p = (top + 7) & ~7;
+      top = p + bytes;
+      if (top > limit) throw new Error('pgloss.wasm: scratch block too small');
+      this.f64.fill(0, p / 8, (p + bytes + 7) / 8 | 0);
+      return p;
+    };
+  }
+  _result(st, out) {
+    return { status: st, name: this.statusName(st), ...out };
+  }
+  _writePhysical(ptr, p) {
+    const f = this.f64;
+    const rd = Array.isArray(p.rho_d) ? p.rho_d : [p.rho_d, p.rho_d, p.rho_d];
+    f.set(rd.map(Number), (ptr + PHYS.rho_d) / 8);
+    f[(ptr + PHYS.rho_s) / 8] = p.rho_s;
+    f[(ptr + PHYS.alpha_x) / 8] = p.alpha_x ?? p.alpha;
+    f[(ptr + PHYS.alpha_y) / 8] = p.alpha_y ?? p.alpha_x ?? p.alpha;
+    this.i32[(ptr + PHYS.normalization) / 4] = p.normalization ?? 0;
+  }
+  _readPhysical(ptr) {
+    const f = this.f64;
+    return {
+      rho_d: Array.from(f.subarray((ptr + PHYS.rho_d) / 8, (ptr + PHYS.rho_d) / 8 + 3)),
+      rho_s: f[(ptr + PHYS.rho_s) / 8], alpha_x: f[(ptr + PHYS.alpha_x) / 8],
+      alpha_y: f[(ptr + PHYS.alpha_y) / 8], normalization: this.i32[(ptr + PHYS.normalization) / 4],
+    };
+  }
+  _writePerceptual(ptr, q) { this.f64.set(PERC.fields.map((k) => q[k]), ptr / 8); }
+  _readPerceptual(ptr) {
+    const f = this.f64;
+    return Object.fromEntries(PERC.fields.map((k, i) => [k, f[ptr / 8 + i]]));
+  }
+  // Scalar-in, doubles-out functions: fn(inputs…, double *out…).
+  _scalar(cname, inputs, outNames, nulls = []) {
+    const alloc = this._arena();
+    const ptrs = outNames.map((n) => (nulls.includes(n) ? 0 : alloc(8)));
+    const st = this.x[cname](...inputs, ...ptrs);
+    const out = {};
+    outNames.forEach((n, i) => { if (ptrs[i]) out[n] = this.f64[ptrs[i] / 8]; });
+    return this._result(st, out);
+  }
+
+  // --- status.h ---------------------------------------------------------------------------
+  statusName(st) {
+    if (!this._names.has(st)) this._names.set(st, this.cstring(this.x.pgloss_status_name(st)));
+    return this._names.get(st);
+  }
+  statusString(st) { return this.cstring(this.x.pgloss_status_string(st)); }
+
+  // --- perceptual.h -----------------------------------------------------------------------
+  lightnessFromLuminance(Y, nulls) { return this._scalar('pgloss_lightness_from_luminance', [Y], ['L'], nulls); }
+  luminanceFromLightness(L, nulls) { return this._scalar('pgloss_luminance_from_lightness', [L], ['Y'], nulls); }
+  contrastGloss(rho_d, rho_s, nulls) { return this._scalar('pgloss_contrast_gloss', [rho_d, rho_s], ['c'], nulls); }
+  specularFromContrast(rho_d, c, nulls) { return this._scalar('pgloss_specular_from_contrast', [rho_d, c], ['rho_s'], nulls); }
+  glossFromPhysical(rho_d, rho_s, alpha, nulls) {
+    return this._scalar('pgloss_gloss_from_physical', [rho_d, rho_s, alpha], ['L', 'c', 'd'], nulls);
+  }
+  physicalFromGloss(L, c, d, nulls) {
+    return this._scalar('pgloss_physical_from_gloss', [L, c, d], ['rho_d', 'rho_s', 'alpha'], nulls);
+  }
+  glossDistance(c1, d1, c2, d2, nulls) { return this._scalar('pgloss_gloss_distance', [c1, d1, c2, d2], ['D'], nulls); }
+  envelopeContrast(L, nulls) { return this._scalar('pgloss_envelope_contrast', [L], ['c_max'], nulls); }
+  matchGloss(rho_d, rho_s, L_target, nulls) {
+    return this._scalar('pgloss_match_gloss', [rho_d, rho_s, L_target], ['rho_d_out', 'rho_s_out'], nulls);
+  }
+  isoglossContour(c0, d0, D, n, nulls = []) {
+    const alloc = this._arena();
+    const bytes = 8 * Math.max(n, 1);
+    const pc = nulls.includes('c') ? 0 : alloc(bytes), pd = nulls.includes('d') ? 0 : alloc(bytes);
+    const st = this.x.pgloss_isogloss_contour(c0, d0, D, n >>> 0, pc, pd);
+    const out = {};
+    if (pc) out.c = Array.from(this.f64.subarray(pc / 8, pc / 8 + n));
+    if (pd) out.d = Array.from(this.f64.subarray(pd / 8, pd / 8 + n));
+    return this._result(st, out);
+  }
+  checkPhysical(p, nulls = []) {
+    const alloc = this._arena();
+    let pp = 0;
+    if (!nulls.includes('p')) { pp = alloc(PHYS.size); this._writePhysical(pp, p); }
+    return this._result(this.x.pgloss_check_physical(pp), {});
+  }
+  checkPerceptual(q, nulls = []) {
+    const alloc = this._arena();
+    let pq = 0;
+    if (!nulls.includes('q')) { pq = alloc(PERC.size); this._writePerceptual(pq, q); }
+    return this._result(this.x.pgloss_check_perceptual(pq), {});
+  }
+  physicalFromPerceptual(q, normalization = 0, nulls = []) {
+    const alloc = this._arena();
+    let pq = 0, pp = 0;
+    if (!nulls.includes('q')) { pq = alloc(PERC.size); this._writePerceptual(pq, q); }
+    if (!nulls.includes('p')) pp = alloc(PHYS.size);
+    const st = this.x.pgloss_physical_from_perceptual(pq, normalization, pp);
+    return this._result(st, pp ? this._readPhysical(pp) : {});
+  }
+  perceptualFromPhysical(p, nulls = []) {
+    const alloc = this._arena();
+    let pp = 0, pq = 0;
+    if (!nulls.includes('p')) { pp = alloc(PHYS.size); this._writePhysical(pp, p); }
+    if (!nulls.includes('q')) pq = alloc(PERC.size);
+    const st = this.x.pgloss_perceptual_from_physical(pp, pq);
+    return this._result(st, pq ? this._readPerceptual(pq) : {});
+  }
+
+  // --- color.h ----------------------------------------------------------------------------
+  _vec3(cname, inName, v, outName, outLen, nulls = []) {
+    const alloc = this._arena();
+    let pin = 0;
+    if (!nulls.includes(inName)) { pin = alloc(24); this.f64.set(v.map(Number), pin / 8); }
+    const pout = nulls.includes(outName) ? 0 : alloc(8 * outLen);
+    const st = this.x[cname](pin, pout);
+    const out = {};
+    if (pout) out[outName] = outLen === 1 ? this.f64[pout / 8] : Array.from(this.f64.subarray(pout / 8, pout / 8 + outLen));
+    return this._result(st, out);
+  }
+  rgbFromLab(lab, nulls) { return this._vec3('pgloss_rgb_from_lab', 'lab', lab, 'rgb', 3, nulls); }
+  labFromRgb(rgb, nulls) { return this._vec3('pgloss_lab_from_rgb', 'rgb', rgb, 'lab', 3, nulls); }
+  luminance(rgb, nulls) { return this._vec3('pgloss_luminance', 'rgb', rgb, 'Y', 1, nulls); }
+}
