@@ -243,8 +243,13 @@ fetchcontent_consumer() { # a Debug parent with BUILD_SHARED_LIBS=ON
   local dir=$work/consumer-fetchcontent tarball=$work/pgloss-src.tar.gz
   # The tree as a fresh clone has it (tracked and new files, nothing ignored), reproducibly,
   # so that the hash (and the fetched copy) change only when the sources do.
-  git ls-files -z --cached --others --exclude-standard | sort -z |
-    tar --null -T - --transform 's|^|pgloss/|' --mtime=@0 --owner=0 --group=0 --numeric-owner \
+  if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
+    git ls-files -z --cached --others --exclude-standard
+  else # a tree without git: leave out what .gitignore ignores
+    find . \( -path './build*' -o -path ./out -o -path './.venv*' -o -path ./.git -o -path ./.gl \
+      -o -path ./.whl -o -name __pycache__ -o -name .pytest_cache \) -prune -o \
+      \( -type f -o -type l \) ! -name '*.pyc' ! -name '*.oso' -printf '%P\0'
+  fi | LC_ALL=C sort -z | tar --null -T - --transform 's|^|pgloss/|' --mtime=@0 --owner=0 --group=0 --numeric-owner \
         --mode=u+rw,go+r -cf - | gzip -n >"$tarball.new"
   cmp -s "$tarball.new" "$tarball" 2>/dev/null && rm "$tarball.new" || mv "$tarball.new" "$tarball"
   local sha
