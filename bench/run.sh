@@ -14,8 +14,8 @@ bash scripts/bootstrap.sh apt libllvm19 libegl-mesa0 libgl1-mesa-dri
 mkdir -p out/bench
 
 echo "== build (Release, default flags)"
-cmake -S . -B build-bench -G Ninja -DCMAKE_BUILD_TYPE=Release -DPGLOSS_BUILD_BENCH=ON >/dev/null
-cmake --build build-bench --target pgloss_bench_core >/dev/null
+cmake --preset bench >/dev/null
+cmake --build --preset bench --target pgloss_bench_core >/dev/null
 echo "== bench_core"
 ./build-bench/bench/pgloss_bench_core "${quick[@]}" --csv out/bench/core.csv | tee out/bench/core.md
 

@@ -11,8 +11,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/bootstrap.sh apt g++ pkg-config libembree-dev libopenimageio-dev libopencolorio-dev \
   libglm-dev fonts-dejavu-core
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DPGLOSS_BUILD_TESTS=OFF -DPGLOSS_BUILD_EXAMPLES=ON >/dev/null
-cmake --build build >/dev/null
+cmake --preset release -DPGLOSS_BUILD_TESTS=OFF -DPGLOSS_BUILD_EXAMPLES=ON >/dev/null
+cmake --build --preset release >/dev/null
 if (($#)); then
   exec ./build/tools/pgloss "$@"
 fi

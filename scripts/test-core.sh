@@ -8,19 +8,18 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 export PGLOSS_REQUIRE_ALL="${PGLOSS_REQUIRE_ALL:-1}"
 bash scripts/bootstrap.sh test
-py="$PWD/.venv-tools/bin/python"
 jobs=$(nproc)
 
-run_suite() { # dir, extra cmake args...
-  local dir=$1; shift
-  echo "== configure + build $dir"
-  cmake -S . -B "$dir" -G Ninja -DPGLOSS_BUILD_TESTS=ON -DPython3_EXECUTABLE="$py" "$@" >/dev/null
-  cmake --build "$dir"
-  echo "== ctest $dir"
-  ctest --test-dir "$dir" --output-on-failure -j "$jobs"
+# The presets (CMakePresets.json) hold the build folders and options: build-test, build-asan.
+run_suite() { # preset
+  echo "== configure + build build-$1 (cmake --preset $1)"
+  cmake --preset "$1" >/dev/null
+  cmake --build --preset "$1"
+  echo "== ctest build-$1"
+  ctest --preset "$1" -j "$jobs"
 }
 
-run_suite build-test -DCMAKE_BUILD_TYPE=Release
+run_suite test
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-  PGLOSS_SANITIZED=1 run_suite build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPGLOSS_SANITIZE=ON
+  PGLOSS_SANITIZED=1 run_suite asan
 echo "== core test suites passed"

@@ -11,9 +11,8 @@ export PGLOSS_REQUIRE_ALL="${PGLOSS_REQUIRE_ALL:-1}"
 bash scripts/bootstrap.sh apt g++ pkg-config libembree-dev libopenimageio-dev libopencolorio-dev \
   libglm-dev fonts-dejavu-core libgtest-dev povray
 echo "== configure + build build-tracer-test"
-cmake -S . -B build-tracer-test -G Ninja -DCMAKE_BUILD_TYPE=Release -DPGLOSS_BUILD_CLI=OFF \
-  -DPGLOSS_BUILD_EXAMPLES=ON -DPGLOSS_BUILD_TRACER_TESTS=ON >/dev/null
-cmake --build build-tracer-test
+cmake --preset tracer-test >/dev/null
+cmake --build --preset tracer-test
 echo "== ctest build-tracer-test (tracer; measured values below, full log in build-tracer-test/ctest.log)"
 status=0
 ctest --test-dir build-tracer-test/tests-tracer --no-tests=error --output-on-failure -V >build-tracer-test/ctest.log 2>&1 || status=$?

@@ -9,6 +9,7 @@ cd "$(dirname "$0")/.."
 export PGLOSS_REQUIRE_ALL="${PGLOSS_REQUIRE_ALL:-1}"
 start=$SECONDS
 bash scripts/test-core.sh
+bash scripts/test-package.sh
 bash scripts/test-python.sh
 bash scripts/test-glsl.sh
 bash scripts/test-osl.sh

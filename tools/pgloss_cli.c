@@ -24,6 +24,7 @@ static const char *USAGE =
     "  eval rho_d rho_s alpha theta_o phi_o theta_i phi_i [norm]\n"
     "                                   BRDF value and pdf, angles in degrees\n"
     "  demo                             the paper's worked examples\n"
+    "  --version                        the version of the pgloss library in use\n"
     "norm: ward (eq. 2, default) | ward-dur | bounded\n";
 
 static int parse_double(const char *s, const char *name, double *out)
@@ -249,6 +250,10 @@ int main(int argc, char **argv)
     if (argc < 2 || !strcmp(argv[1], "-h") || !strcmp(argv[1], "--help")) {
         fputs(USAGE, argc < 2 ? stderr : stdout);
         return argc < 2 ? 2 : 0;
+    }
+    if (!strcmp(argv[1], "--version")) {
+        printf("pgloss %s\n", pgloss_version());
+        return 0;
     }
     const char *cmd = argv[1];
     char **rest = argv + 2;

@@ -379,7 +379,7 @@ std::vector<double> time_eval_batch(const Material &M, unsigned lobes, const far
 PYBIND11_MODULE(_core, mod) {
     mod.doc() = "pgloss._core: the C core over flat numpy arrays (use the pgloss package, not this module).";
 
-    mod.attr("VERSION") = PGLOSS_VERSION_STRING;
+    mod.attr("VERSION") = pgloss_version();  // the linked library's (pgloss/version.h)
     mod.attr("ALPHA_MIN") = static_cast<double>(PGLOSS_ALPHA_MIN);
     mod.attr("COS_MIN") = static_cast<double>(PGLOSS_COS_MIN);
     mod.attr("CIE_EPSILON") = PGLOSS_CIE_EPSILON;

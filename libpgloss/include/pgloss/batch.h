@@ -34,19 +34,19 @@ typedef struct pgloss_vec3_out { float *x, *y, *z; } pgloss_vec3_out;
 /* n RGB values as three arrays (written). */
 typedef struct pgloss_rgb_out { float *r, *g, *b; } pgloss_rgb_out;
 
-pgloss_status pgloss_eval_batch(const pgloss_material *m, unsigned lobes, size_t n,
+PGLOSS_API pgloss_status pgloss_eval_batch(const pgloss_material *m, unsigned lobes, size_t n,
                                 pgloss_vec3_array wo, pgloss_vec3_array wi, pgloss_rgb_out f);
 
-pgloss_status pgloss_pdf_batch(const pgloss_material *m, unsigned lobes, size_t n,
+PGLOSS_API pgloss_status pgloss_pdf_batch(const pgloss_material *m, unsigned lobes, size_t n,
                                pgloss_vec3_array wo, pgloss_vec3_array wi, float *pdf);
 
-pgloss_status pgloss_eval_pdf_batch(const pgloss_material *m, unsigned lobes, size_t n,
+PGLOSS_API pgloss_status pgloss_eval_pdf_batch(const pgloss_material *m, unsigned lobes, size_t n,
                                     pgloss_vec3_array wo, pgloss_vec3_array wi,
                                     pgloss_rgb_out f, float *pdf);
 
 /* u0, u1, u2: the three random numbers of pgloss_sample, one array each.
  * lobe may be NULL; otherwise it receives the pgloss_lobe chosen per element. */
-pgloss_status pgloss_sample_batch(const pgloss_material *m, unsigned lobes, size_t n,
+PGLOSS_API pgloss_status pgloss_sample_batch(const pgloss_material *m, unsigned lobes, size_t n,
                                   pgloss_vec3_array wo, const float *u0, const float *u1,
                                   const float *u2, pgloss_vec3_out wi, float *pdf,
                                   pgloss_rgb_out weight, unsigned char *lobe);
@@ -94,11 +94,11 @@ typedef struct pgloss_batch_options {
 } pgloss_batch_options;
 
 /* 1 if this build has loops for isa and the running CPU can execute them (AUTO: 1). */
-int pgloss_isa_supported(pgloss_isa isa);
+PGLOSS_API int pgloss_isa_supported(pgloss_isa isa);
 /* What PGLOSS_ISA_AUTO resolves to on the running CPU. */
-pgloss_isa pgloss_isa_best(void);
+PGLOSS_API pgloss_isa pgloss_isa_best(void);
 /* "auto", "baseline", "avx2", "avx512"; "unknown" otherwise. */
-const char *pgloss_isa_name(pgloss_isa isa);
+PGLOSS_API const char *pgloss_isa_name(pgloss_isa isa);
 
 /*
  * pgloss_eval_pdf_batch with explicit options (NULL: the defaults, FLOAT on AUTO). Either
@@ -106,13 +106,13 @@ const char *pgloss_isa_name(pgloss_isa isa);
  * both. PGLOSS_ERR_ARGUMENT (nothing written) for an unknown precision or isa, or an isa
  * that pgloss_isa_supported denies.
  */
-pgloss_status pgloss_eval_pdf_batch_ex(const pgloss_batch_options *options,
+PGLOSS_API pgloss_status pgloss_eval_pdf_batch_ex(const pgloss_batch_options *options,
                                        const pgloss_material *m, unsigned lobes, size_t n,
                                        pgloss_vec3_array wo, pgloss_vec3_array wi,
                                        pgloss_rgb_out f, float *pdf);
 
 /* pgloss_sample_batch with explicit options, as pgloss_eval_pdf_batch_ex. */
-pgloss_status pgloss_sample_batch_ex(const pgloss_batch_options *options,
+PGLOSS_API pgloss_status pgloss_sample_batch_ex(const pgloss_batch_options *options,
                                      const pgloss_material *m, unsigned lobes, size_t n,
                                      pgloss_vec3_array wo, const float *u0, const float *u1,
                                      const float *u2, pgloss_vec3_out wi, float *pdf,

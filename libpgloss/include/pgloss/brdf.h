@@ -106,17 +106,17 @@ typedef struct pgloss_material {
  * is raised to it. Energy (ρd + ρs > 1) is NOT rejected here — a renderer may want such a
  * BRDF; use pgloss_check_physical to ask whether parameters lie inside the paper's model.
  */
-pgloss_status pgloss_material_init(pgloss_material *m, const pgloss_physical *p);
+PGLOSS_API pgloss_status pgloss_material_init(pgloss_material *m, const pgloss_physical *p);
 
 /*
  * Probability that pgloss_sample picks the specular lobe for this mask:
  * ws / (wd + ws) over the active lobes, wd = luminance(ρd) (Rec. 709 weights), ws = ρs;
  * 1 or 0 when only one lobe is active; 0 when none is.
  */
-float pgloss_specular_probability(const pgloss_material *m, unsigned lobes);
+PGLOSS_API float pgloss_specular_probability(const pgloss_material *m, unsigned lobes);
 
 /* f(wo, wi): the BRDF value per RGB channel (no cosine). Reciprocal: f(wo,wi) = f(wi,wo). */
-pgloss_status pgloss_eval(const pgloss_material *m, pgloss_vec3 wo, pgloss_vec3 wi,
+PGLOSS_API pgloss_status pgloss_eval(const pgloss_material *m, pgloss_vec3 wo, pgloss_vec3 wi,
                           unsigned lobes, pgloss_rgb *f);
 
 /*
@@ -125,11 +125,11 @@ pgloss_status pgloss_eval(const pgloss_material *m, pgloss_vec3 wo, pgloss_vec3 
  *   p_spec = exp(-((hx/αx)² + (hy/αy)²)/hz²) / (4π αx αy (wo·h) hz³), h = normalize(wo + wi)
  * (Walter 2005, "Notes on the Ward BRDF"). 0 below the horizon, and where wo·h <= 0.
  */
-pgloss_status pgloss_pdf(const pgloss_material *m, pgloss_vec3 wo, pgloss_vec3 wi,
+PGLOSS_API pgloss_status pgloss_pdf(const pgloss_material *m, pgloss_vec3 wo, pgloss_vec3 wi,
                          unsigned lobes, float *pdf);
 
 /* eval and pdf in one call, sharing the half vector and the exponential. */
-pgloss_status pgloss_eval_pdf(const pgloss_material *m, pgloss_vec3 wo, pgloss_vec3 wi,
+PGLOSS_API pgloss_status pgloss_eval_pdf(const pgloss_material *m, pgloss_vec3 wo, pgloss_vec3 wi,
                               unsigned lobes, pgloss_rgb *f, float *pdf);
 
 typedef struct pgloss_sample_record {
@@ -158,7 +158,7 @@ typedef struct pgloss_sample_record {
  * still written): the caller ends the path. This is the expected outcome for a fraction of the specular samples
  * at grazing wo and is what makes pgloss_pdf integrate to less than 1 there.
  */
-pgloss_status pgloss_sample(const pgloss_material *m, pgloss_vec3 wo, const float u[3],
+PGLOSS_API pgloss_status pgloss_sample(const pgloss_material *m, pgloss_vec3 wo, const float u[3],
                             unsigned lobes, pgloss_sample_record *s);
 
 #ifdef __cplusplus

@@ -24,13 +24,13 @@ extern "C" {
 
 /* lab = (L*, a*, b*) → linear Rec. 709 RGB. Errors: NULL, NONFINITE, LIGHTNESS (L outside
  * [0, 100]), GAMUT (a channel < 0: the exact values are still written). */
-pgloss_status pgloss_rgb_from_lab(const double lab[3], double rgb[3]);
+PGLOSS_API pgloss_status pgloss_rgb_from_lab(const double lab[3], double rgb[3]);
 
 /* Linear Rec. 709 RGB → (L*, a*, b*). Errors: NULL, NONFINITE, NEGATIVE. */
-pgloss_status pgloss_lab_from_rgb(const double rgb[3], double lab[3]);
+PGLOSS_API pgloss_status pgloss_lab_from_rgb(const double rgb[3], double lab[3]);
 
 /* Luminance of linear Rec. 709 RGB. Errors: NULL, NONFINITE. */
-pgloss_status pgloss_luminance(const double rgb[3], double *Y);
+PGLOSS_API pgloss_status pgloss_luminance(const double rgb[3], double *Y);
 
 #ifdef __cplusplus
 }

@@ -50,39 +50,39 @@ typedef struct pgloss_perceptual {
 
 /* L* from the luminance factor Y (Yn = 1): L = κY if Y <= ε, else 116 cbrt(Y) - 16.
  * Y >= 0 (Y > 1 gives L > 100). Errors: NULL, NONFINITE, NEGATIVE. */
-pgloss_status pgloss_lightness_from_luminance(double Y, double *L);
+PGLOSS_API pgloss_status pgloss_lightness_from_luminance(double Y, double *L);
 
 /* Y from L*: Y = L/κ if L <= κε (= 8), else ((L + 16)/116)³. L >= 0 (L > 100 gives Y > 1).
  * Errors: NULL, NONFINITE (also for finite L above ~6.6e104, where Y would overflow; Y = 0),
  * LIGHTNESS (L < 0). */
-pgloss_status pgloss_luminance_from_lightness(double L, double *Y);
+PGLOSS_API pgloss_status pgloss_luminance_from_lightness(double L, double *Y);
 
 /* Eq. 4, computed without cancellation as ρs / (A² + AB + B²), A = cbrt(ρs + ρd/2),
  * B = cbrt(ρd/2). Errors: NULL, NONFINITE, NEGATIVE. */
-pgloss_status pgloss_contrast_gloss(double rho_d, double rho_s, double *c);
+PGLOSS_API pgloss_status pgloss_contrast_gloss(double rho_d, double rho_s, double *c);
 
 /* Eq. 7, computed as c (c² + 3cB + 3B²), B = cbrt(ρd/2). Errors: NULL, NONFINITE, NEGATIVE. */
-pgloss_status pgloss_specular_from_contrast(double rho_d, double c, double *rho_s);
+PGLOSS_API pgloss_status pgloss_specular_from_contrast(double rho_d, double c, double *rho_s);
 
 /* Eqs. 3, 4 and L* of ρd, for an achromatic paint. Errors: NULL, NONFINITE (also when
  * ρs + ρd/2 overflows, as in pgloss_contrast_gloss), NEGATIVE, ALPHA (α <= 0); warning
  * ALPHA_UNTRUSTED (α > 0.2). */
-pgloss_status pgloss_gloss_from_physical(double rho_d, double rho_s, double alpha,
+PGLOSS_API pgloss_status pgloss_gloss_from_physical(double rho_d, double rho_s, double alpha,
                                          double *L, double *c, double *d);
 
 /* Eqs. 6, 7, 8. Errors: NULL, NONFINITE (also for a finite c so large that ρs overflows),
  * LIGHTNESS (L outside [0, 100]), NEGATIVE (c < 0), ALPHA (d >= 1); warning ALPHA_UNTRUSTED
  * (d < 0.8). No envelope check here (see pgloss_check_perceptual). */
-pgloss_status pgloss_physical_from_gloss(double L, double c, double d,
+PGLOSS_API pgloss_status pgloss_physical_from_gloss(double L, double c, double d,
                                          double *rho_d, double *rho_s, double *alpha);
 
 /* Eq. 5. Errors: NULL, NONFINITE. */
-pgloss_status pgloss_gloss_distance(double c1, double d1, double c2, double d2, double *D);
+PGLOSS_API pgloss_status pgloss_gloss_distance(double c1, double d1, double c2, double d2, double *D);
 
 /* Envelope of gloss space (Fig. 10): the largest c at lightness L under energy conservation
  * ρd + ρs <= 1, i.e. cbrt(1 - ρd/2) - cbrt(ρd/2) with ρd = f⁻¹(L). Errors: NULL, NONFINITE,
  * LIGHTNESS. */
-pgloss_status pgloss_envelope_contrast(double L, double *c_max);
+PGLOSS_API pgloss_status pgloss_envelope_contrast(double L, double *c_max);
 
 /*
  * Gloss matching across lightness (§5.2, Fig. 12): keeps c (and so d) of (ρd, ρs) and moves
@@ -90,7 +90,7 @@ pgloss_status pgloss_envelope_contrast(double L, double *c_max);
  * Errors: NULL, NONFINITE, NEGATIVE, LIGHTNESS; ENVELOPE if ρd' + ρs' > 1 — then the outputs
  * are still the (finite) matched values, so that a caller can show how far outside they are.
  */
-pgloss_status pgloss_match_gloss(double rho_d, double rho_s, double L_target,
+PGLOSS_API pgloss_status pgloss_match_gloss(double rho_d, double rho_s, double L_target,
                                  double *rho_d_out, double *rho_s_out);
 
 /*
@@ -99,7 +99,7 @@ pgloss_status pgloss_match_gloss(double rho_d, double rho_s, double L_target,
  * Points are not clipped to the valid region (check them with pgloss_check_perceptual).
  * Errors: NULL, NONFINITE, NEGATIVE (D < 0), ARGUMENT (n == 0).
  */
-pgloss_status pgloss_isogloss_contour(double c0, double d0, double D, size_t n,
+PGLOSS_API pgloss_status pgloss_isogloss_contour(double c0, double d0, double D, size_t n,
                                       double *c, double *d);
 
 /*
@@ -107,7 +107,7 @@ pgloss_status pgloss_isogloss_contour(double c0, double d0, double D, size_t n,
  * NULL, NONFINITE, NEGATIVE, ALPHA, NORMALIZATION, ENERGY (max over channels of ρd + ρs > 1),
  * then the warning ALPHA_UNTRUSTED (max(αx, αy) > 0.2); PGLOSS_OK otherwise.
  */
-pgloss_status pgloss_check_physical(const pgloss_physical *p);
+PGLOSS_API pgloss_status pgloss_check_physical(const pgloss_physical *p);
 
 /*
  * Is q inside the model? First reason, in this order: NULL, NONFINITE, LIGHTNESS, NEGATIVE
@@ -115,7 +115,7 @@ pgloss_status pgloss_check_physical(const pgloss_physical *p);
  * ENVELOPE (c > envelope at L), ENERGY (a colour channel of ρd plus ρs exceeds 1, possible
  * for saturated colours inside the luminance envelope), warning ALPHA_UNTRUSTED (d < 0.8).
  */
-pgloss_status pgloss_check_perceptual(const pgloss_perceptual *q);
+PGLOSS_API pgloss_status pgloss_check_perceptual(const pgloss_perceptual *q);
 
 /*
  * Fig. 13's colour/gloss description → physical parameters: CIELAB (D65) → XYZ → linear
@@ -123,7 +123,7 @@ pgloss_status pgloss_check_perceptual(const pgloss_perceptual *q);
  * Errors as pgloss_physical_from_gloss, plus NORMALIZATION and GAMUT (negative RGB: the
  * exact, negative values are still written). Warning ALPHA_UNTRUSTED.
  */
-pgloss_status pgloss_physical_from_perceptual(const pgloss_perceptual *q,
+PGLOSS_API pgloss_status pgloss_physical_from_perceptual(const pgloss_perceptual *q,
                                               pgloss_normalization normalization,
                                               pgloss_physical *p);
 
@@ -135,7 +135,7 @@ pgloss_status pgloss_physical_from_perceptual(const pgloss_perceptual *q,
  * is outside the trusted range as soon as one of its spreads is), so d >= 0.8 may come with
  * the warning for an anisotropic lobe.
  */
-pgloss_status pgloss_perceptual_from_physical(const pgloss_physical *p, pgloss_perceptual *q);
+PGLOSS_API pgloss_status pgloss_perceptual_from_physical(const pgloss_physical *p, pgloss_perceptual *q);
 
 #ifdef __cplusplus
 }

@@ -12,11 +12,7 @@
 #ifndef PGLOSS_PGLOSS_H
 #define PGLOSS_PGLOSS_H
 
-#define PGLOSS_VERSION_MAJOR 0
-#define PGLOSS_VERSION_MINOR 1
-#define PGLOSS_VERSION_PATCH 0
-#define PGLOSS_VERSION_STRING "0.1.0"
-
+#include "pgloss/version.h"
 #include "pgloss/status.h"
 #include "pgloss/brdf.h"
 #include "pgloss/batch.h"

@@ -12,6 +12,8 @@
 #ifndef PGLOSS_STATUS_H
 #define PGLOSS_STATUS_H
 
+#include "pgloss/export.h"
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -41,10 +43,10 @@ typedef enum pgloss_status {
 } pgloss_status;
 
 /* A static, human-readable English sentence naming the reason; never NULL. */
-const char *pgloss_status_string(pgloss_status status);
+PGLOSS_API const char *pgloss_status_string(pgloss_status status);
 
 /* The enumerator's name, e.g. "PGLOSS_ERR_ENERGY"; "PGLOSS_UNKNOWN" for other values. */
-const char *pgloss_status_name(pgloss_status status);
+PGLOSS_API const char *pgloss_status_name(pgloss_status status);
 
 #ifdef __cplusplus
 }
