@@ -135,7 +135,7 @@ pgloss_status pgloss_perceptual_from_physical(const pgloss_physical *p, pgloss_p
     const double alpha = sqrt(p->alpha_x) * sqrt(p->alpha_y);
     q->L = lab[0]; q->a = lab[1]; q->b = lab[2];
     q->c = c;
-    q->d = 1.0 - alpha;
+    q->d = pgloss__doi_from_alpha(alpha); /* eq. 3 */
     /* The warning asks the same question as pgloss_check_physical: is the wider of the two
      * spreads beyond the trusted range? (Not the geometric mean used for d.) */
     return fmax(p->alpha_x, p->alpha_y) > PGLOSS_ALPHA_TRUSTED_MAX ? PGLOSS_WARN_ALPHA_UNTRUSTED

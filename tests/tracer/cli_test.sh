@@ -15,17 +15,17 @@ check() { # name, expected status, expected message (grep -F), command…
   else fail=$((fail + 1)); echo "FAIL $name: status $rc (want $want), output: $out"; fi
 }
 r=("$tracer" render "$scene" --size 16x12 --quiet)
-check "--spp abc"  1 "--spp wants a whole number, not 'abc'"      "${r[@]}" --spp abc
-check "--spp 3x"   1 "--spp wants a whole number, not '3x'"       "${r[@]}" --spp 3x
-check "--spp -3"   1 "--spp must be in [1, 16777216], not -3"     "${r[@]}" --spp -3
-check "--spp 0"    1 "--spp must be in [1, 16777216], not 0"      "${r[@]}" --spp 0
-check "--threads 0" 1 "--threads must be in [1, 1024], not 0"     "${r[@]}" --threads 0
-check "--seed 1e3" 1 "--seed wants a whole number, not '1e3'"     "${r[@]}" --seed 1e3
-check "--time nan" 1 "--time wants seconds, not 'nan'"            "${r[@]}" --time nan
-check "--time -1"  1 "--time must be in (0, 1e7] seconds, not -1" "${r[@]}" --time -1
-check "--size 3x4junk" 1 "--size height wants a whole number, not '4junk'" "${r[@]}" --size 3x4junk
-check "--size 0x4" 1 "--size width must be in [1, 32768], not 0"  "${r[@]}" --size 0x4
-check "--out s.jpg" 1 "--out is a prefix (OUT.exr and OUT.png are written), so 's.jpg' would make 's.jpg.exr'; give it without '.jpg'" \
+check "--spp abc" 2 "--spp wants a whole number, not 'abc'"      "${r[@]}" --spp abc
+check "--spp 3x" 2 "--spp wants a whole number, not '3x'"       "${r[@]}" --spp 3x
+check "--spp -3" 2 "--spp must be in [1, 16777216], not -3"     "${r[@]}" --spp -3
+check "--spp 0" 2 "--spp must be in [1, 16777216], not 0"      "${r[@]}" --spp 0
+check "--threads 0" 2 "--threads must be in [1, 1024], not 0"     "${r[@]}" --threads 0
+check "--seed 1e3" 2 "--seed wants a whole number, not '1e3'"     "${r[@]}" --seed 1e3
+check "--time nan" 2 "--time wants seconds, not 'nan'"            "${r[@]}" --time nan
+check "--time -1" 2 "--time must be in (0, 1e7] seconds, not -1" "${r[@]}" --time -1
+check "--size 3x4junk" 2 "--size height wants a whole number, not '4junk'" "${r[@]}" --size 3x4junk
+check "--size 0x4" 2 "--size width must be in [1, 32768], not 0"  "${r[@]}" --size 0x4
+check "--out s.jpg" 2 "--out is a prefix (OUT.exr and OUT.png are written), so 's.jpg' would make 's.jpg.exr'; give it without '.jpg'" \
   "${r[@]}" --spp 1 --out s.jpg
 check "--out s.exr" 0 "s.exr s.png: 16x12, 1 spp"                 "${r[@]}" --spp 1 --out s.exr
 check "--out s.exr writes s.exr" 0 "" test -s s.exr -a -s s.png -a ! -e s.exr.exr

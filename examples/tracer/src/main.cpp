@@ -1,17 +1,16 @@
 // SPDX-FileCopyrightText: 2026 The pgloss authors
 // SPDX-License-Identifier: Apache-2.0
 // pgloss-tracer — render a scene, or the paper's Figs. 4 and 12.
+#include "cli.hpp"
 #include "figures.hpp"
 
 #include <atomic>
-#include <cerrno>
-#include <cmath>
 #include <csignal>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
+#include <vector>
 #include <string>
 
 namespace {
@@ -23,37 +22,6 @@ static_assert(std::atomic<bool>::is_always_lock_free, "the signal handler needs 
 extern "C" void on_signal(int sig) {
     g_cancel = true;
     std::signal(sig, SIG_DFL);
-}
-
-// Whole-string numbers: "3x", "abc", "" and out-of-range values are errors that name the option.
-long long parse_integer(const std::string &opt, const std::string &v, long long lo, long long hi) {
-    char *end = nullptr;
-    errno = 0;
-    long long x = v.empty() ? 0 : std::strtoll(v.c_str(), &end, 10);
-    if (v.empty() || *end != '\0' || errno == ERANGE)
-        throw std::runtime_error(opt + " wants a whole number, not '" + v + "'");
-    if (x < lo || x > hi)
-        throw std::runtime_error(opt + " must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], not " + v);
-    return x;
-}
-double parse_seconds(const std::string &opt, const std::string &v) {
-    char *end = nullptr;
-    double x = v.empty() ? 0 : std::strtod(v.c_str(), &end);
-    if (v.empty() || *end != '\0' || !std::isfinite(x)) throw std::runtime_error(opt + " wants seconds, not '" + v + "'");
-    if (!(x > 0 && x <= 1e7)) throw std::runtime_error(opt + " must be in (0, 1e7] seconds, not " + v);
-    return x;
-}
-// --out for `render` is a prefix (OUT.exr and OUT.png are written): a trailing .exr or .png is
-// taken off; another image extension is an error rather than OUT.jpg.exr.
-std::string output_prefix(const std::string &out) {
-    std::string ext = std::filesystem::path(out).extension().string();
-    for (char &c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-    if (ext == ".exr" || ext == ".png") return out.substr(0, out.size() - ext.size());
-    for (const char *e : {".jpg", ".jpeg", ".tif", ".tiff", ".hdr", ".bmp", ".tga", ".webp", ".ppm"})
-        if (ext == e)
-            throw std::runtime_error("--out is a prefix (OUT.exr and OUT.png are written), so '" + out +
-                                     "' would make '" + out + ".exr'; give it without '" + ext + "'");
-    return out;
 }
 
 void usage() {
@@ -76,89 +44,49 @@ void usage() {
 }  // namespace
 
 int main(int argc, char **argv) {
-    if (argc < 2) {
-        usage();
+    pgt::CliOptions o;
+    try {
+        o = pgt::parse_cli(std::vector<std::string>(argv + 1, argv + argc));
+    } catch (const pgt::CliError &e) {
+        std::fprintf(stderr, "pgloss-tracer: %s\n", e.what());
+        if (argc < 2) usage();
         return 2;
     }
-    std::string cmd = argv[1];
-    if (cmd == "--version") {
+    using Cmd = pgt::CliOptions::Command;
+    if (o.command == Cmd::HELP) {
+        usage();
+        return 0;
+    }
+    if (o.command == Cmd::VERSION) {
         std::printf("pgloss-tracer %s\n", PGLOSS_TRACER_VERSION);
         return 0;
     }
-    std::string scene_path, out;
-    int width = 0, height = 0, spp = 0, threads = 0;
-    long seed = -1;
-    double time_s = 0;
-    std::string mode;
-    bool quiet = false;
-    int i = 2;
-    if (cmd == "render") {
-        if (argc < 3) {
-            usage();
-            return 2;
-        }
-        scene_path = argv[2];
-        i = 3;
-    } else if (cmd == "fig4" || cmd == "fig12") {
-        scene_path = std::string(PGLOSS_TRACER_DIR) + "/scenes/stimulus.scene";
-    } else {
-        usage();
-        return cmd == "-h" || cmd == "--help" ? 0 : 2;
-    }
     try {
-        for (; i < argc; ++i) {
-            std::string a = argv[i];
-            auto val = [&]() -> std::string {
-                if (i + 1 >= argc) throw std::runtime_error("option " + a + " needs a value");
-                return argv[++i];
-            };
-            if (a == "--out") out = val();
-            else if (a == "--scene") scene_path = val();
-            else if (a == "--size") {
-                std::string v = val();
-                size_t x = v.find('x');
-                if (x == std::string::npos) throw std::runtime_error("--size wants WxH, e.g. 160x120, not '" + v + "'");
-                width = int(parse_integer("--size width", v.substr(0, x), 1, pgt::limits::image_side));
-                height = int(parse_integer("--size height", v.substr(x + 1), 1, pgt::limits::image_side));
-                if (static_cast<long long>(width) * height > pgt::limits::pixels)
-                    throw std::runtime_error("--size: at most " + std::to_string(pgt::limits::pixels) + " pixels");
-            } else if (a == "--spp") spp = int(parse_integer(a, val(), 1, pgt::limits::spp));
-            else if (a == "--time") time_s = parse_seconds(a, val());
-            else if (a == "--mode") mode = val();
-            else if (a == "--seed") seed = long(parse_integer(a, val(), 0, long(pgt::limits::seed)));
-            else if (a == "--threads") threads = int(parse_integer(a, val(), 1, pgt::limits::threads));
-            else if (a == "--quiet") quiet = true;
-            else if (a == "-h" || a == "--help") {
-                usage();
-                return 0;
-            } else throw std::runtime_error("unknown option '" + a + "'");
-        }
-        if (cmd == "render") {
-            pgt::Scene sc = pgt::load_scene(scene_path);
+        if (o.command == Cmd::RENDER) {
+            pgt::Scene sc = pgt::load_scene(o.scene_path);
             pgt::RenderSettings s = sc.settings;
-            if (width > 0) s.width = width, s.height = height;
-            if (spp > 0) s.spp = spp;
-            if (time_s > 0) {
-                s.time_budget_s = time_s;
-                if (spp <= 0) s.spp = 1 << 20;
+            if (o.width > 0) s.width = o.width, s.height = o.height;
+            if (o.spp > 0) s.spp = o.spp;
+            if (o.time_s > 0) {
+                s.time_budget_s = o.time_s;
+                if (o.spp <= 0) s.spp = 1 << 20;
             }
-            if (!mode.empty()) s.mode = pgt::parse_mode(mode);
-            if (seed >= 0) s.seed = unsigned(seed);
-            if (out.empty()) out = "out/" + std::filesystem::path(scene_path).stem().string();
-            out = output_prefix(out);
+            if (!o.mode.empty()) s.mode = pgt::parse_mode(o.mode);
+            if (o.seed >= 0) s.seed = unsigned(o.seed);
+            const std::string &out = o.out;
             std::filesystem::path parent = std::filesystem::path(out).parent_path();
             if (!parent.empty()) std::filesystem::create_directories(parent);
             pgt::Renderer r(sc);
             pgt::RenderOptions ro;
-            ro.threads = threads;
-            ro.progress = !quiet;
-            ro.label = std::filesystem::path(scene_path).stem().string();
+            ro.threads = o.threads;
+            ro.progress = !o.quiet;
+            ro.label = std::filesystem::path(o.scene_path).stem().string();
             ro.cancel = &g_cancel;
             std::signal(SIGINT, on_signal);
             std::signal(SIGTERM, on_signal);
             pgt::RenderStats st;
             pgt::Image img = r.render(s, ro, &st);
-            if (st.interrupted && st.spp == 0 && st.samples == 0)
+            if (st.interrupted && st.samples == 0)
                 throw std::runtime_error("interrupted before any tile was finished; nothing written");
             pgt::write_exr(img, out + ".exr");
             pgt::write_png(pgt::display_image(img, sc.tonemap), out + ".png");
@@ -172,11 +100,11 @@ int main(int argc, char **argv) {
             }
         } else {
             pgt::FigureOptions fo;
-            fo.scene_path = scene_path;
-            if (!out.empty()) fo.out_dir = out;
-            fo.width = width, fo.height = height, fo.spp = spp, fo.time_total_s = time_s;
-            fo.threads = threads, fo.progress = !quiet;
-            if (cmd == "fig4") pgt::render_fig4(fo);
+            fo.scene_path = o.scene_path.empty() ? std::string(PGLOSS_TRACER_DIR) + "/scenes/stimulus.scene" : o.scene_path;
+            if (!o.out.empty()) fo.out_dir = o.out;
+            fo.width = o.width, fo.height = o.height, fo.spp = o.spp, fo.time_total_s = o.time_s;
+            fo.threads = o.threads, fo.progress = !o.quiet;
+            if (o.command == Cmd::FIG4) pgt::render_fig4(fo);
             else pgt::render_fig12(fo);
         }
     } catch (const std::exception &e) {
