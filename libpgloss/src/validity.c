@@ -28,7 +28,9 @@ pgloss_status pgloss_check_physical(const pgloss_physical *p)
 {
     if (!p)
         return PGLOSS_ERR_NULL;
-    const pgloss_status basic = pgloss__check_physical_values(p, DBL_MAX);
+    /* FLT_MAX, as pgloss_material_init: a paint is inside the model only if a material can
+     * hold it. */
+    const pgloss_status basic = pgloss__check_physical_values(p, FLT_MAX);
     if (basic != PGLOSS_OK)
         return basic;
     if (!valid_normalization(p->normalization))
@@ -45,7 +47,9 @@ pgloss_status pgloss_check_perceptual(const pgloss_perceptual *q)
 {
     if (!q)
         return PGLOSS_ERR_NULL;
-    if (!isfinite(q->L) || !isfinite(q->a) || !isfinite(q->b) || !isfinite(q->c) || !isfinite(q->d))
+    /* α = 1 − d above FLT_MAX: no material can hold it (as pgloss_check_physical). */
+    if (!isfinite(q->L) || !isfinite(q->a) || !isfinite(q->b) || !isfinite(q->c) || !isfinite(q->d) ||
+        1.0 - q->d > FLT_MAX)
         return PGLOSS_ERR_NONFINITE;
     if (q->L < 0.0 || q->L > 100.0)
         return PGLOSS_ERR_LIGHTNESS;
