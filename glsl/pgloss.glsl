@@ -721,6 +721,14 @@ int pgloss_specular_from_contrast(float rho_d, float c, out float rho_s)
     return PGLOSS_OK;
 }
 
+/* Eq. 3, d = 1 − α, rounded down where it would round to 1 (α ≤ 2^-25): d < 1 for every
+ * α > 0, the domain of eq. 8 (as the C core's pgloss__doi_from_alpha, in float). */
+float pgloss_impl_doi_from_alpha(float alpha)
+{
+    float d = 1.0 - alpha;
+    return d < 1.0 ? d : 0.99999994;
+}
+
 int pgloss_impl_alpha_status(float alpha)
 {
     return alpha > PGLOSS_ALPHA_TRUSTED_MAX ? PGLOSS_WARN_ALPHA_UNTRUSTED : PGLOSS_OK;
@@ -747,7 +755,7 @@ int pgloss_gloss_from_physical(float rho_d, float rho_s, float alpha,
         return st;
     L = l;
     c = cc;
-    d = 1.0 - alpha; /* eq. 3 */
+    d = pgloss_impl_doi_from_alpha(alpha); /* eq. 3 */
     return pgloss_impl_alpha_status(alpha);
 }
 
@@ -919,6 +927,7 @@ int pgloss_rgb_from_lab(vec3 lab, out vec3 rgb)
     if (o.r < -PGLOSS_BOUNDARY_TOLERANCE || o.g < -PGLOSS_BOUNDARY_TOLERANCE ||
         o.b < -PGLOSS_BOUNDARY_TOLERANCE)
         return PGLOSS_ERR_GAMUT;
+    rgb = max(o, vec3(0.0)); /* within the tolerance below 0: on the boundary, returned as 0 (C core) */
     return PGLOSS_OK;
 }
 
@@ -1042,7 +1051,7 @@ int pgloss_perceptual_from_physical(pgloss_physical p, out pgloss_perceptual q)
         return st;
     /* Geometric mean for anisotropic lobes (an extension; the paper studied isotropic ones). */
     float alpha = sqrt(p.alpha_x) * sqrt(p.alpha_y);
-    q = pgloss_perceptual(lab.x, lab.y, lab.z, c, 1.0 - alpha);
+    q = pgloss_perceptual(lab.x, lab.y, lab.z, c, pgloss_impl_doi_from_alpha(alpha));
     return alpha > PGLOSS_ALPHA_TRUSTED_MAX ? PGLOSS_WARN_ALPHA_UNTRUSTED : PGLOSS_OK;
 }
 

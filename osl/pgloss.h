@@ -373,6 +373,14 @@ int pgloss_specular_from_contrast(float rho_d, float c, output float rho_s)
     return PGLOSS_OK;
 }
 
+// Eq. 3, d = 1 - alpha, rounded down where it would round to 1 (alpha <= 2^-25): d < 1 for
+// every alpha > 0, the domain of eq. 8 (as the C core's pgloss__doi_from_alpha, in float).
+float pgloss__doi_from_alpha(float alpha)
+{
+    float d = 1.0 - alpha;
+    return d < 1.0 ? d : 0.99999994;
+}
+
 int pgloss__alpha_status(float alpha)
 {
     return alpha > PGLOSS_ALPHA_TRUSTED_MAX ? PGLOSS_WARN_ALPHA_UNTRUSTED : PGLOSS_OK;
@@ -393,7 +401,7 @@ int pgloss_gloss_from_physical(float rho_d, float rho_s, float alpha,
     if (st != PGLOSS_OK) return st;
     L = l;
     c = cc;
-    d = 1.0 - alpha;                                   // eq. 3
+    d = pgloss__doi_from_alpha(alpha);                 // eq. 3
     return pgloss__alpha_status(alpha);
 }
 
@@ -523,6 +531,7 @@ int pgloss_rgb_from_lab(vector lab, output color rgb)
     rgb = o;
     for (int k = 0; k < 3; ++k)
         if (o[k] < -PGLOSS_BOUNDARY_TOLERANCE) return PGLOSS_ERR_GAMUT;
+    rgb = max(o, color(0.0));  // within the tolerance below 0: on the boundary, returned as 0 (C core)
     return PGLOSS_OK;
 }
 
@@ -644,7 +653,7 @@ int pgloss_perceptual_from_physical(pgloss_physical p, output pgloss_perceptual 
     float alpha = sqrt(p.alpha_x) * sqrt(p.alpha_y);
     q.L = lab[0]; q.a = lab[1]; q.b = lab[2];
     q.c = c;
-    q.d = 1.0 - alpha;
+    q.d = pgloss__doi_from_alpha(alpha);
     return pgloss__alpha_status(alpha);
 }
 

@@ -60,6 +60,10 @@ pgloss_status pgloss_rgb_from_lab(const double lab[3], double rgb[3])
     for (int k = 0; k < 3; ++k)
         if (out[k] < -PGLOSS_BOUNDARY_TOLERANCE)
             return PGLOSS_ERR_GAMUT;
+    /* Within the tolerance below 0 a channel is on the gamut boundary up to rounding: it is
+     * returned as 0, so that what this accepts every other function accepts too. */
+    for (int k = 0; k < 3; ++k)
+        rgb[k] = out[k] < 0.0 ? 0.0 : out[k];
     return PGLOSS_OK;
 }
 

@@ -71,7 +71,7 @@ pgloss_status pgloss_gloss_from_physical(double rho_d, double rho_s, double alph
         return cs;
     *L = l;
     *c = cc;
-    *d = 1.0 - alpha; /* eq. 3 */
+    *d = pgloss__doi_from_alpha(alpha); /* eq. 3 */
     return alpha_status(alpha);
 }
 

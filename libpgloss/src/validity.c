@@ -28,7 +28,9 @@ pgloss_status pgloss_check_physical(const pgloss_physical *p)
 {
     if (!p)
         return PGLOSS_ERR_NULL;
-    const pgloss_status basic = pgloss__check_physical_values(p, DBL_MAX);
+    /* FLT_MAX, as pgloss_material_init: a paint is inside the model only if a material can
+     * hold it. */
+    const pgloss_status basic = pgloss__check_physical_values(p, FLT_MAX);
     if (basic != PGLOSS_OK)
         return basic;
     if (!valid_normalization(p->normalization))
@@ -45,7 +47,9 @@ pgloss_status pgloss_check_perceptual(const pgloss_perceptual *q)
 {
     if (!q)
         return PGLOSS_ERR_NULL;
-    if (!isfinite(q->L) || !isfinite(q->a) || !isfinite(q->b) || !isfinite(q->c) || !isfinite(q->d))
+    /* α = 1 − d above FLT_MAX: no material can hold it (as pgloss_check_physical). */
+    if (!isfinite(q->L) || !isfinite(q->a) || !isfinite(q->b) || !isfinite(q->c) || !isfinite(q->d) ||
+        1.0 - q->d > FLT_MAX)
         return PGLOSS_ERR_NONFINITE;
     if (q->L < 0.0 || q->L > 100.0)
         return PGLOSS_ERR_LIGHTNESS;
@@ -135,7 +139,7 @@ pgloss_status pgloss_perceptual_from_physical(const pgloss_physical *p, pgloss_p
     const double alpha = sqrt(p->alpha_x) * sqrt(p->alpha_y);
     q->L = lab[0]; q->a = lab[1]; q->b = lab[2];
     q->c = c;
-    q->d = 1.0 - alpha;
+    q->d = pgloss__doi_from_alpha(alpha); /* eq. 3 */
     /* The warning asks the same question as pgloss_check_physical: is the wider of the two
      * spreads beyond the trusted range? (Not the geometric mean used for d.) */
     return fmax(p->alpha_x, p->alpha_y) > PGLOSS_ALPHA_TRUSTED_MAX ? PGLOSS_WARN_ALPHA_UNTRUSTED

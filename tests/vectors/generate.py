@@ -697,6 +697,8 @@ def ref_check_physical(B: Backend, H: Hooks, i: Dict[str, Any]) -> Tuple[str, Di
     p = i["p"]
     if not isfin(*_phys_fields(p)):
         return E_NONFINITE, {}
+    if max(abs(x) for x in _phys_fields(p)) > FLT_MAX:  # as material_init: a float material holds it
+        return E_NONFINITE, {}
     if min(p["rho_d"]) < 0 or p["rho_s"] < 0:
         return E_NEGATIVE, {}
     if p["alpha_x"] <= 0 or p["alpha_y"] <= 0:
@@ -725,6 +727,8 @@ def _perceptual_analysis(q: Dict[str, float]) -> Dict[str, mpf]:
 def ref_check_perceptual(B: Backend, H: Hooks, i: Dict[str, Any]) -> Tuple[str, Dict[str, Any]]:
     q = i["q"]
     if not isfin(*(q[k] for k in "Labcd")):
+        return E_NONFINITE, {}
+    if 1 - mpf(q["d"]) > FLT_MAX:  # α = 1 − d: no float material holds it
         return E_NONFINITE, {}
     if q["L"] < 0 or q["L"] > 100:
         return E_LIGHTNESS, {}
@@ -1420,6 +1424,8 @@ def gen_validity() -> Dict[str, Any]:
         (phys(g3(math.nan), 0.1, 0.1), [], E_NONFINITE),
         (phys(g3(0.2), math.inf, 0.1), [], E_NONFINITE),
         (phys(g3(0.2), 0.1, 0.1, -math.inf), [], E_NONFINITE),
+        (phys(g3(0.2), 0.1, 0.1, 1e39), ["beyond_float"], E_NONFINITE),
+        (phys(g3(0.2), 0.1, FLT_MAX), ["float_max"], WARN_ALPHA),
         (phys([0.2, -1e-300, 0.2], 0.1, 0.1), [], E_NEGATIVE),
         (phys(g3(0.2), -0.1, 0.1), [], E_NEGATIVE),
         (phys(g3(0.2), 0.1, 0.0), [], E_ALPHA),
@@ -1463,6 +1469,8 @@ def gen_validity() -> Dict[str, Any]:
         (perc(math.nan, 0.0, 0.0, 0.1, 0.9), [], E_NONFINITE),
         (perc(L50, 0.0, math.inf, 0.1, 0.9), [], E_NONFINITE),
         (perc(L50, 0.0, 0.0, 0.1, -math.inf), [], E_NONFINITE),
+        (perc(L50, 0.0, 0.0, 0.1, -1e39), ["beyond_float"], E_NONFINITE),
+        (perc(L50, 0.0, 0.0, 0.1, -1e30), ["huge_alpha"], WARN_ALPHA),
         (perc(-1e-300, 0.0, 0.0, 0.1, 0.9), [], E_LIGHTNESS),
         (perc(nextup(100.0), 0.0, 0.0, 0.1, 0.9), [], E_LIGHTNESS),
         (perc(L50, 0.0, 0.0, -1e-300, 0.9), [], E_NEGATIVE),

@@ -231,6 +231,9 @@ _SCALARS = (int, float, bool)
 
 
 def _as_real(function: str, name: str, value: ArrayLike) -> np.ndarray:
+    if isinstance(value, np.ma.MaskedArray):  # np.asarray would drop the mask without a word
+        raise TypeError(f"pgloss.{function}: {name} is a masked array, and masks are not honoured; "
+                        f"pass np.ma.filled({name}, value) or {name}.compressed()")
     try:
         a = np.asarray(value)
     except Exception as exc:  # ragged lists and the like
@@ -261,7 +264,18 @@ def _broadcast(function: str, names: Sequence[str], values: Sequence[Any]):
     return flat, shape, _out_dtype(values, arrays)
 
 
-def _shape_out(a: np.ndarray, shape: Tuple[int, ...], dtype: np.dtype) -> Any:
+_F32_MAX = float(np.finfo(np.float32).max)
+
+
+def _shape_out(function: str, a: np.ndarray, shape: Tuple[int, ...], dtype: np.dtype) -> Any:
+    if dtype == np.float32:
+        # The double result of a float32 input is returned as float32: one that does not fit
+        # is an error, never a silent inf.
+        big = np.abs(a) > _F32_MAX
+        if big.any():
+            v = float(a[np.argmax(big)])
+            raise OverflowError(f"pgloss.{function}: a result ({v:.6g}) does not fit float32, the dtype of "
+                                f"the input; pass float64 input")
     if shape == ():
         return float(a.reshape(())[()].astype(dtype))
     return a.reshape(shape).astype(dtype, copy=False)
@@ -271,7 +285,7 @@ def _vectorised(function: str, names: Sequence[str], values: Sequence[Any], n_ou
     """Runs _core.<function> element-wise; returns the outputs (arrays or floats)."""
     flat, shape, dtype = _broadcast(function, names, values)
     res = getattr(_core, function)(*flat)
-    outs = tuple(_shape_out(r, shape, dtype) for r in res[:n_out])
+    outs = tuple(_shape_out(function, r, shape, dtype) for r in res[:n_out])
     result = outs[0] if n_out == 1 else outs
     _check(function, res[n_out].reshape(shape), shape, result, scalar=shape == (), stacklevel=4)
     return result
@@ -885,9 +899,9 @@ def _triple(function: str, name: str, value: Any, n_out: int) -> Any:
     cols = [np.ascontiguousarray(a[..., k], dtype=np.float64).reshape(-1) for k in range(3)]
     res = getattr(_core, function)(*cols)
     if n_out == 3:
-        out = np.stack([r.reshape(shape) for r in res[:3]], axis=-1).astype(dtype, copy=False)
+        out = _shape_out(function, np.stack(res[:3], axis=-1), shape + (3,), dtype)
     else:
-        out = _shape_out(res[0], shape, dtype)
+        out = _shape_out(function, res[0], shape, dtype)
     _check(function, res[n_out].reshape(shape), shape, out, scalar=shape == (), stacklevel=4)
     return out
 

@@ -51,6 +51,25 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // structure-of-arrays buffers stay in L1/L2, large enough to amortise the call.
 constexpr size_t kChunk = 128;
 
+// Long loops run without the GIL; every kSignalStride elements they take it back for a moment
+// so that Ctrl-C (SIGINT) and other signals get through: the loop stops and the call raises
+// KeyboardInterrupt instead of running to the end of a huge array.
+constexpr size_t kSignalStride = size_t(1) << 16;
+struct SignalCheck {
+    size_t next = kSignalStride;
+    bool interrupted = false;
+    bool stop(size_t done) {  // call with the GIL released
+        if (done < next) return false;
+        next = done + kSignalStride;
+        py::gil_scoped_acquire gil;
+        interrupted = PyErr_CheckSignals() != 0;
+        return interrupted;
+    }
+    void raise_if_interrupted() const {  // call with the GIL held
+        if (interrupted) throw py::error_already_set();
+    }
+};
+
 // ---------------------------------------------------------------------------------------
 // Element-wise map over double functions: NI flat inputs of equal length, NO outputs, and
 // the status of every element (int8). f(x, y) -> status; y is pre-filled with NaN so that
@@ -72,9 +91,11 @@ py::tuple vmap(const std::array<darr, NI> &in, F f) {
     }
     py::array_t<std::int8_t> st(n);
     std::int8_t *sp = st.mutable_data();
+    SignalCheck sig;
     {
         py::gil_scoped_release nogil;
         for (py::ssize_t i = 0; i < n; ++i) {
+            if (sig.stop(static_cast<size_t>(i))) break;
             std::array<double, NI> x;
             std::array<double, NO> y;
             for (size_t k = 0; k < NI; ++k) x[k] = ip[k][i];
@@ -84,6 +105,7 @@ py::tuple vmap(const std::array<darr, NI> &in, F f) {
             sp[i] = static_cast<std::int8_t>(s);
         }
     }
+    sig.raise_if_interrupted();
     py::tuple t(NO + 1);
     for (size_t k = 0; k < NO; ++k) t[k] = out[k];
     t[NO] = st;
@@ -195,12 +217,14 @@ py::tuple eval_f32(const Material &M, unsigned lobes, const farr &wo, const farr
     const float *o = wo.data(), *i = wi.data();
     float *fp = f.mutable_data(), *pp = pdf.mutable_data();
     FirstError err;
+    SignalCheck sig;
     {
         py::gil_scoped_release nogil;
         std::vector<float> buf(10 * kChunk);
         float *ox = buf.data(), *oy = ox + kChunk, *oz = oy + kChunk, *ix = oz + kChunk, *iy = ix + kChunk,
               *iz = iy + kChunk, *fr = iz + kChunk, *fg = fr + kChunk, *fb = fg + kChunk, *pd = fb + kChunk;
         for (size_t base = 0; base < n; base += kChunk) {
+            if (sig.stop(base)) break;
             const size_t m = n - base < kChunk ? n - base : kChunk;
             deinterleave(m, o + 3 * base, ox, oy, oz);
             deinterleave(m, i + 3 * base, ix, iy, iz);
@@ -231,6 +255,7 @@ py::tuple eval_f32(const Material &M, unsigned lobes, const farr &wo, const farr
             }
         }
     }
+    sig.raise_if_interrupted();
     return py::make_tuple(f, pdf, err.status, err.index);
 }
 
@@ -242,9 +267,11 @@ py::tuple eval_f64(const Material &M, unsigned lobes, const f64arr &wo, const f6
     const double *o = wo.data(), *i = wi.data();
     double *fp = f.mutable_data(), *pp = pdf.mutable_data();
     FirstError err;
+    SignalCheck sig;
     {
         py::gil_scoped_release nogil;
         for (size_t j = 0; j < n; ++j) {
+            if (sig.stop(j)) break;
             const pgloss_vec3 a{to_float(o[3 * j]), to_float(o[3 * j + 1]), to_float(o[3 * j + 2])};
             const pgloss_vec3 b{to_float(i[3 * j]), to_float(i[3 * j + 1]), to_float(i[3 * j + 2])};
             pgloss_rgb c{0, 0, 0};
@@ -265,6 +292,7 @@ py::tuple eval_f64(const Material &M, unsigned lobes, const f64arr &wo, const f6
             err.note(st, static_cast<py::ssize_t>(j));
         }
     }
+    sig.raise_if_interrupted();
     return py::make_tuple(f, pdf, err.status, err.index);
 }
 
@@ -281,6 +309,7 @@ py::tuple sample_f32(const Material &M, unsigned lobes, const farr &wo, const fa
     float *wp = wi.mutable_data(), *gp = weight.mutable_data(), *pp = pdf.mutable_data();
     std::uint8_t *lp = lobe.mutable_data();
     FirstError err;
+    SignalCheck sig;
     {
         py::gil_scoped_release nogil;
         std::vector<float> buf(13 * kChunk);
@@ -288,6 +317,7 @@ py::tuple sample_f32(const Material &M, unsigned lobes, const farr &wo, const fa
               *u2 = u1 + kChunk, *wx = u2 + kChunk, *wy = wx + kChunk, *wz = wy + kChunk, *pd = wz + kChunk,
               *gr = pd + kChunk, *gg = gr + kChunk, *gb = gg + kChunk;
         for (size_t base = 0; base < n; base += kChunk) {
+            if (sig.stop(base)) break;
             const size_t m = n - base < kChunk ? n - base : kChunk;
             deinterleave(m, o + 3 * base, ox, oy, oz);
             deinterleave(m, uu + 3 * base, u0, u1, u2);
@@ -311,6 +341,7 @@ py::tuple sample_f32(const Material &M, unsigned lobes, const farr &wo, const fa
             }
         }
     }
+    sig.raise_if_interrupted();
     return py::make_tuple(wi, pdf, weight, lobe, err.status, err.index);
 }
 
@@ -324,9 +355,11 @@ py::tuple sample_f64(const Material &M, unsigned lobes, const f64arr &wo, const 
     double *wp = wi.mutable_data(), *gp = weight.mutable_data(), *pp = pdf.mutable_data();
     std::uint8_t *lp = lobe.mutable_data();
     FirstError err;
+    SignalCheck sig;
     {
         py::gil_scoped_release nogil;
         for (size_t j = 0; j < n; ++j) {
+            if (sig.stop(j)) break;
             const pgloss_vec3 a{to_float(o[3 * j]), to_float(o[3 * j + 1]), to_float(o[3 * j + 2])};
             const float uj[3] = {to_float(uu[3 * j]), to_float(uu[3 * j + 1]), to_float(uu[3 * j + 2])};
             pgloss_sample_record r{};
@@ -342,6 +375,7 @@ py::tuple sample_f64(const Material &M, unsigned lobes, const f64arr &wo, const 
             err.note(st, static_cast<py::ssize_t>(j));
         }
     }
+    sig.raise_if_interrupted();
     return py::make_tuple(wi, pdf, weight, lobe, err.status, err.index);
 }
 

@@ -8,9 +8,12 @@
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <stdexcept>
 
 namespace OCIO = OCIO_NAMESPACE;
@@ -24,15 +27,40 @@ float tonemap_sigmoid(float x, const ToneMap &tm) {
     return float(double(x) / std::pow(1.0 + std::pow(r, n), 1.0 / n));
 }
 
+namespace {
+
+// Writes `path` through a temporary file in the same folder (same extension, so that OIIO
+// picks the same format) renamed into place: an interrupted or failed write never leaves a
+// truncated image under the final name, and an older image there stays whole until replaced.
+void write_image_atomically(const std::string &path, const OIIO::ImageSpec &spec, OIIO::TypeDesc type,
+                            const void *pixels) {
+    namespace fs = std::filesystem;
+    fs::path final_path(path);
+    fs::path tmp = final_path.parent_path() /
+                   ("." + final_path.stem().string() + ".tmp" + std::to_string(getpid()) + final_path.extension().string());
+    std::string err;
+    {
+        auto out = OIIO::ImageOutput::create(tmp.string());
+        if (!out) err = OIIO::geterror();
+        else if (!out->open(tmp.string(), spec) || !out->write_image(type, pixels) || !out->close())
+            err = out->geterror();
+    }
+    std::error_code ec;
+    if (err.empty()) fs::rename(tmp, final_path, ec);
+    if (!err.empty() || ec) {
+        fs::remove(tmp, ec);
+        throw std::runtime_error("cannot write " + path + ": " + (err.empty() ? ec.message() : err));
+    }
+}
+
+}  // namespace
+
 void write_exr(const Image &img, const std::string &path) {
     OIIO::ImageSpec spec(img.width, img.height, 3, OIIO::TypeDesc::FLOAT);
     spec.channelnames = {"R", "G", "B"};
     spec.attribute("compression", "zip");
     spec.attribute("oiio:ColorSpace", "Linear");
-    auto out = OIIO::ImageOutput::create(path);
-    if (!out || !out->open(path, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, img.rgb.data()))
-        throw std::runtime_error("cannot write " + path + ": " + OIIO::geterror());
-    out->close();
+    write_image_atomically(path, spec, OIIO::TypeDesc::FLOAT, img.rgb.data());
 }
 
 Image read_image(const std::string &path) {
@@ -81,10 +109,7 @@ void write_png(const Image &disp, const std::string &path) {
     for (size_t i = 0; i < px.size(); ++i) px[i] = static_cast<unsigned char>(std::lround(disp.rgb[i] * 255.0f));
     OIIO::ImageSpec spec(disp.width, disp.height, 3, OIIO::TypeDesc::UINT8);
     spec.attribute("oiio:ColorSpace", "sRGB");
-    auto out = OIIO::ImageOutput::create(path);
-    if (!out || !out->open(path, spec) || !out->write_image(OIIO::TypeDesc::UINT8, px.data()))
-        throw std::runtime_error("cannot write " + path + ": " + OIIO::geterror());
-    out->close();
+    write_image_atomically(path, spec, OIIO::TypeDesc::UINT8, px.data());
 }
 
 Image contact_sheet(const std::vector<SheetCell> &cells, int columns, const std::string &title) {

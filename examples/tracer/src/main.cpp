@@ -1,14 +1,28 @@
 // SPDX-FileCopyrightText: 2026 The pgloss authors
 // SPDX-License-Identifier: Apache-2.0
 // pgloss-tracer — render a scene, or the paper's Figs. 4 and 12.
+#include "cli.hpp"
 #include "figures.hpp"
 
+#include <atomic>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <stdexcept>
+#include <vector>
 #include <string>
 
 namespace {
+
+// Set by the first SIGINT/SIGTERM during `render`: the render stops after the tiles under way
+// and what it has is written. A second signal ends the program at once.
+std::atomic<bool> g_cancel{false};
+static_assert(std::atomic<bool>::is_always_lock_free, "the signal handler needs a lock-free flag");
+extern "C" void on_signal(int sig) {
+    g_cancel = true;
+    std::signal(sig, SIG_DFL);
+}
 
 void usage() {
     std::fputs(
@@ -21,92 +35,76 @@ void usage() {
         "  --size WxH       image size        --spp N        samples per pixel\n"
         "  --time S         stop after S seconds (figures: for the whole figure)\n"
         "  --mode mis|brdf|light   estimator  --seed N       --threads N (default: all)\n"
-        "  --quiet          no progress bar\n",
+        "  --quiet          no progress bar\n"
+        "  --version        print the version      -h, --help  this text\n"
+        "render: Ctrl-C stops early and writes what has been rendered (exit 130); twice ends at once.\n",
         stderr);
 }
 
 }  // namespace
 
 int main(int argc, char **argv) {
-    if (argc < 2) {
-        usage();
+    pgt::CliOptions o;
+    try {
+        o = pgt::parse_cli(std::vector<std::string>(argv + 1, argv + argc));
+    } catch (const pgt::CliError &e) {
+        std::fprintf(stderr, "pgloss-tracer: %s\n", e.what());
+        if (argc < 2) usage();
         return 2;
     }
-    std::string cmd = argv[1];
-    std::string scene_path, out;
-    int width = 0, height = 0, spp = 0, threads = 0;
-    long seed = -1;
-    double time_s = 0;
-    std::string mode;
-    bool quiet = false;
-    int i = 2;
-    if (cmd == "render") {
-        if (argc < 3) {
-            usage();
-            return 2;
-        }
-        scene_path = argv[2];
-        i = 3;
-    } else if (cmd == "fig4" || cmd == "fig12") {
-        scene_path = std::string(PGLOSS_TRACER_DIR) + "/scenes/stimulus.scene";
-    } else {
+    using Cmd = pgt::CliOptions::Command;
+    if (o.command == Cmd::HELP) {
         usage();
-        return cmd == "-h" || cmd == "--help" ? 0 : 2;
+        return 0;
+    }
+    if (o.command == Cmd::VERSION) {
+        std::printf("pgloss-tracer %s (libpgloss %s)\n", PGLOSS_TRACER_VERSION, pgloss_version());
+        return 0;
     }
     try {
-        for (; i < argc; ++i) {
-            std::string a = argv[i];
-            auto val = [&]() -> std::string {
-                if (i + 1 >= argc) throw std::runtime_error("option " + a + " needs a value");
-                return argv[++i];
-            };
-            if (a == "--out") out = val();
-            else if (a == "--scene") scene_path = val();
-            else if (a == "--size") {
-                std::string v = val();
-                if (std::sscanf(v.c_str(), "%dx%d", &width, &height) != 2 || width <= 0 || height <= 0)
-                    throw std::runtime_error("--size wants WxH, e.g. 160x120, not '" + v + "'");
-            } else if (a == "--spp") spp = std::stoi(val());
-            else if (a == "--time") time_s = std::stod(val());
-            else if (a == "--mode") mode = val();
-            else if (a == "--seed") seed = std::stol(val());
-            else if (a == "--threads") threads = std::stoi(val());
-            else if (a == "--quiet") quiet = true;
-            else throw std::runtime_error("unknown option '" + a + "'");
-        }
-        if (cmd == "render") {
-            pgt::Scene sc = pgt::load_scene(scene_path);
+        if (o.command == Cmd::RENDER) {
+            pgt::Scene sc = pgt::load_scene(o.scene_path);
             pgt::RenderSettings s = sc.settings;
-            if (width > 0) s.width = width, s.height = height;
-            if (spp > 0) s.spp = spp;
-            if (time_s > 0) {
-                s.time_budget_s = time_s;
-                if (spp <= 0) s.spp = 1 << 20;
+            if (o.width > 0) s.width = o.width, s.height = o.height;
+            if (o.spp > 0) s.spp = o.spp;
+            if (o.time_s > 0) {
+                s.time_budget_s = o.time_s;
+                if (o.spp <= 0) s.spp = 1 << 20;
             }
-            if (!mode.empty()) s.mode = pgt::parse_mode(mode);
-            if (seed >= 0) s.seed = unsigned(seed);
-            if (out.empty()) out = "out/" + std::filesystem::path(scene_path).stem().string();
+            if (!o.mode.empty()) s.mode = pgt::parse_mode(o.mode);
+            if (o.seed >= 0) s.seed = unsigned(o.seed);
+            const std::string &out = o.out;
             std::filesystem::path parent = std::filesystem::path(out).parent_path();
             if (!parent.empty()) std::filesystem::create_directories(parent);
             pgt::Renderer r(sc);
             pgt::RenderOptions ro;
-            ro.threads = threads;
-            ro.progress = !quiet;
-            ro.label = std::filesystem::path(scene_path).stem().string();
+            ro.threads = o.threads;
+            ro.progress = !o.quiet;
+            ro.label = std::filesystem::path(o.scene_path).stem().string();
+            ro.cancel = &g_cancel;
+            std::signal(SIGINT, on_signal);
+            std::signal(SIGTERM, on_signal);
             pgt::RenderStats st;
             pgt::Image img = r.render(s, ro, &st);
+            if (st.interrupted && st.samples == 0)
+                throw std::runtime_error("interrupted before any tile was finished; nothing written");
             pgt::write_exr(img, out + ".exr");
             pgt::write_png(pgt::display_image(img, sc.tonemap), out + ".png");
             std::printf("%s.exr %s.png: %dx%d, %d spp, %s, %.2f s, %.2f Mrays/s, %.2f Msamples/s\n", out.c_str(),
                         out.c_str(), s.width, s.height, st.spp, pgt::mode_name(s.mode), st.seconds,
                         double(st.rays) / st.seconds * 1e-6, double(st.samples) / st.seconds * 1e-6);
+            if (st.interrupted) {
+                std::fprintf(stderr, "pgloss-tracer: interrupted; wrote the %llu samples rendered (%d spp or more "
+                                     "per pixel)\n", static_cast<unsigned long long>(st.samples), st.spp);
+                return 130;
+            }
         } else {
             pgt::FigureOptions fo;
-            fo.scene_path = scene_path;
-            if (!out.empty()) fo.out_dir = out;
-            fo.width = width, fo.height = height, fo.spp = spp, fo.time_total_s = time_s;
-            fo.threads = threads, fo.progress = !quiet;
-            if (cmd == "fig4") pgt::render_fig4(fo);
+            fo.scene_path = o.scene_path.empty() ? std::string(PGLOSS_TRACER_DIR) + "/scenes/stimulus.scene" : o.scene_path;
+            if (!o.out.empty()) fo.out_dir = o.out;
+            fo.width = o.width, fo.height = o.height, fo.spp = o.spp, fo.time_total_s = o.time_s;
+            fo.threads = o.threads, fo.progress = !o.quiet;
+            if (o.command == Cmd::FIG4) pgt::render_fig4(fo);
             else pgt::render_fig12(fo);
         }
     } catch (const std::exception &e) {

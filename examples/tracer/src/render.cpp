@@ -10,8 +10,11 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <limits>
 #include <mutex>
+#include <sstream>
+#include <system_error>
 #include <thread>
 #include <unistd.h>
 
@@ -78,6 +81,16 @@ struct GeomRef {
     int index;
 };
 
+// Joins every joinable thread when it goes out of scope, also while an exception unwinds
+// (a joinable std::thread destroyed would call std::terminate).
+struct JoinAll {
+    std::vector<std::thread> &threads;
+    ~JoinAll() {
+        for (auto &t : threads)
+            if (t.joinable()) t.join();
+    }
+};
+
 struct Hit {
     bool hit = false;
     float t = 0;
@@ -109,6 +122,14 @@ struct Renderer::Impl {
     float eps = 1e-4f;           // ray offset, scaled to the scene
 
     explicit Impl(const Scene &s) : scene(s) {
+        // A Scene built in code has not been through the parser's checks.
+        auto finite = [](glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+        for (const AreaLight &l : s.lights)
+            if (!finite(l.radiance) || !std::isfinite(l.area) || !(l.area > 0) || !finite(l.corner) ||
+                !finite(l.edge1) || !finite(l.edge2))
+                throw SceneError(s.path + ": a light has a non-finite radiance or geometry");
+        if (s.has_environment && !finite(s.environment))
+            throw SceneError(s.path + ": the environment's radiance is not finite");
         device = rtcNewDevice("threads=1");  // our own threads call into Embree; BVH build is small
         if (!device) throw std::runtime_error("Embree: rtcNewDevice failed");
         rtc = rtcNewScene(device);
@@ -350,6 +371,7 @@ Image Renderer::render(const RenderSettings &s, const RenderOptions &opt, Render
     const int tiles_x = (w + tile - 1) / tile, tiles_y = (h + tile - 1) / tile;
     const int ntiles = tiles_x * tiles_y;
     int nthreads = opt.threads > 0 ? opt.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+    std::vector<int> tile_spp(size_t(ntiles), 0);  // samples per pixel each tile holds (equal unless cancelled)
     std::vector<double> sum(size_t(w) * size_t(h) * 3, 0.0);
     std::vector<double> sum2(opt.variance ? sum.size() : 0, 0.0);
     Image img;
@@ -359,7 +381,12 @@ Image Renderer::render(const RenderSettings &s, const RenderOptions &opt, Render
     auto t0 = clock::now();
     auto elapsed = [&] { return std::chrono::duration<double>(clock::now() - t0).count(); };
     const bool tty = opt.progress && isatty(2);
-    std::atomic<std::uint64_t> rays{0}, done_samples{0};
+    std::atomic<std::uint64_t> rays{0}, done_samples{0}, nonfinite{0};
+    std::atomic<bool> failed{false};
+    std::mutex error_mutex;
+    std::exception_ptr error;      // the first exception of a worker
+    std::string first_nonfinite;   // where the first non-finite sample was
+    auto cancelled = [&] { return failed.load() || (opt.cancel && opt.cancel->load()); };
     double last_print = -1;
     std::mutex print_mutex;
 
@@ -382,7 +409,7 @@ Image Renderer::render(const RenderSettings &s, const RenderOptions &opt, Render
 
     int spp_done = 0;
     int pass_spp = 1;
-    while (spp_done < s.spp) {
+    while (spp_done < s.spp && !cancelled()) {
         double t = elapsed();
         if (s.time_budget_s > 0 && spp_done > 0) {
             if (t >= s.time_budget_s) break;
@@ -394,9 +421,11 @@ Image Renderer::render(const RenderSettings &s, const RenderOptions &opt, Render
         pass_spp = std::max(1, std::min({pass_spp, s.spp - spp_done, opt.max_pass_spp}));
         const int s0 = spp_done, s1 = spp_done + pass_spp;
         std::atomic<int> next_tile{0};
-        auto worker = [&](int id) {
+        auto worker = [&](int id) noexcept {
+          try {
             std::uint64_t local_rays = 0;
             for (;;) {
+                if (cancelled()) break;  // whole tiles only: each pixel's mean stays over its own samples
                 int ti = next_tile.fetch_add(1);
                 if (ti >= ntiles) break;
                 int x0 = (ti % tiles_x) * tile, y0 = (ti / tiles_x) * tile;
@@ -410,7 +439,18 @@ Image Renderer::render(const RenderSettings &s, const RenderOptions &opt, Render
                             Rng rng(s.seed, pix, std::uint64_t(k));
                             float jx = rng.uniform(), jy = rng.uniform();
                             glm::vec3 c = impl_->trace(float(x) + jx, float(y) + jy, w, h, s.mode, s.max_depth, rng, local_rays);
-                            if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z))) c = glm::vec3(0);
+                            if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z))) {
+                                // Never dropped quietly: counted, and the render fails after the pass.
+                                if (nonfinite.fetch_add(1) == 0) {
+                                    std::ostringstream o;
+                                    o << "pixel (" << x << ", " << y << ") sample " << k << " = (" << c.x << ", "
+                                      << c.y << ", " << c.z << ")";
+                                    std::lock_guard<std::mutex> lock(error_mutex);
+                                    first_nonfinite = o.str();
+                                }
+                                failed = true;
+                                continue;
+                            }
                             acc[0] += c.x, acc[1] += c.y, acc[2] += c.z;
                             if (acc2) acc2[0] += double(c.x) * c.x, acc2[1] += double(c.y) * c.y, acc2[2] += double(c.z) * c.z;
                         }
@@ -418,13 +458,36 @@ Image Renderer::render(const RenderSettings &s, const RenderOptions &opt, Render
                 rays += local_rays;
                 local_rays = 0;
                 done_samples += std::uint64_t(x1 - x0) * std::uint64_t(y1 - y0) * std::uint64_t(s1 - s0);
+                tile_spp[size_t(ti)] = s1;  // each tile is one worker's in a pass
                 if (id == 0 && tty) print_progress(false);
             }
+          } catch (...) {
+            std::lock_guard<std::mutex> lock(error_mutex);
+            if (!error) error = std::current_exception();
+            failed = true;
+          }
         };
-        std::vector<std::thread> pool;
-        for (int i = 1; i < nthreads; ++i) pool.emplace_back(worker, i);
-        worker(0);
-        for (auto &th : pool) th.join();
+        {
+            std::vector<std::thread> pool;
+            JoinAll join{pool};
+            for (int i = 1; i < nthreads; ++i) {
+                try {
+                    pool.emplace_back(worker, i);
+                } catch (const std::system_error &e) {  // out of threads or memory: go on with fewer
+                    std::fprintf(stderr, "pgloss-tracer: could not start thread %d of %d (%s); rendering with %d\n",
+                                 i + 1, nthreads, e.what(), i);
+                    nthreads = i;
+                    break;
+                }
+            }
+            worker(0);
+        }
+        if (error) std::rethrow_exception(error);
+        if (nonfinite > 0)
+            throw std::runtime_error(std::to_string(nonfinite.load()) + " samples were not finite (first: " +
+                                     first_nonfinite +
+                                     "); the scene's numbers overflow float somewhere, nothing was written");
+        if (cancelled()) break;
         spp_done = s1;
         pass_spp *= 2;
         st.seconds = elapsed();
@@ -436,17 +499,35 @@ Image Renderer::render(const RenderSettings &s, const RenderOptions &opt, Render
             if (!opt.on_pass(img, st)) break;
         }
     }
-    for (size_t i = 0; i < sum.size(); ++i) img.rgb[i] = spp_done > 0 ? float(sum[i] / spp_done) : 0.0f;
+    // Samples per pixel: the tile's own count (all equal unless the render was cancelled mid-pass).
+    auto pixel_spp = [&](size_t i) {
+        size_t pix = i / 3, x = pix % size_t(w), y = pix / size_t(w);
+        return tile_spp[(y / tile) * size_t(tiles_x) + x / tile];
+    };
+    for (size_t i = 0; i < sum.size(); ++i) {
+        int n = pixel_spp(i);
+        img.rgb[i] = n > 0 ? float(sum[i] / n) : 0.0f;
+    }
     if (opt.variance) {
         Image &v = *opt.variance;
         v.width = w, v.height = h;
         v.rgb.assign(sum.size(), 0.0f);
-        if (spp_done > 1)
-            for (size_t i = 0; i < sum.size(); ++i) {
-                double n = spp_done, m = sum[i] / n;
-                v.rgb[i] = float(std::max(0.0, (sum2[i] / n - m * m)) / (n - 1));
-            }
+        for (size_t i = 0; i < sum.size(); ++i) {
+            double n = pixel_spp(i);
+            if (n < 2) continue;
+            double m = sum[i] / n;
+            v.rgb[i] = float(std::max(0.0, (sum2[i] / n - m * m)) / (n - 1));
+        }
     }
+    st.spp = *std::min_element(tile_spp.begin(), tile_spp.end());
+    st.interrupted = opt.cancel && opt.cancel->load();
+    st.samples = 0;
+    for (int ti = 0; ti < ntiles; ++ti) {
+        int x0 = (ti % tiles_x) * tile, y0 = (ti / tiles_x) * tile;
+        st.samples += std::uint64_t(std::min(w, x0 + tile) - x0) * std::uint64_t(std::min(h, y0 + tile) - y0) *
+                      std::uint64_t(tile_spp[size_t(ti)]);
+    }
+    st.rays = rays.load();
     st.seconds = elapsed();
     if (tty) print_progress(true);
     if (stats_out) *stats_out = st;

@@ -20,6 +20,7 @@
 #pragma once
 #include "scene.hpp"
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -38,7 +39,8 @@ struct RenderStats {
     double seconds = 0;
     std::uint64_t rays = 0;     // rtcIntersect1 + rtcOccluded1 calls
     std::uint64_t samples = 0;  // camera paths
-    int spp = 0;
+    int spp = 0;               // samples per pixel, the least over the image if interrupted
+    bool interrupted = false;  // stopped by RenderOptions::cancel before the requested spp
 };
 
 struct RenderOptions {
@@ -46,6 +48,9 @@ struct RenderOptions {
     bool progress = true;      // progress bar + ETA on stderr
     std::string label;         // shown in the progress bar
     int max_pass_spp = 16;     // samples per pixel per progressive pass, at most
+    // If set and it becomes true (e.g. from a SIGINT handler), the render stops after the tiles
+    // under way; the image holds every finished tile, each the mean of its own sample count.
+    const std::atomic<bool> *cancel = nullptr;
     // Called after each pass with the running mean image; return false to stop early.
     std::function<bool(const Image &, const RenderStats &)> on_pass;
     // If set, receives per pixel and channel the estimated variance of the pixel's mean

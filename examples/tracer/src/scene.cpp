@@ -3,7 +3,11 @@
 // scene.cpp — parser of the scene format described in scene.hpp.
 #include "scene.hpp"
 
+#include <cerrno>
+#include <cfloat>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -93,20 +97,47 @@ public:
     }
     double num(const std::string &k, double dflt) { return has(k) ? num(k) : dflt; }
 
+    // A number stored as float: in [lo, hi], or in (0, hi] when lo is 0 and positive is set.
+    float real(const std::string &k, double lo, double hi, bool positive = false) {
+        double v = num(k);
+        if (!(positive ? v > lo : v >= lo) || !(v <= hi)) fail(k, range_text(lo, hi, positive, kv_.at(k)));
+        return float(v);
+    }
+    float real(const std::string &k, double lo, double hi, bool positive, double dflt) {
+        return has(k) ? real(k, lo, hi, positive) : float(dflt);
+    }
+    // A count: a whole number in [lo, hi].
+    long long whole(const std::string &k, long long lo, long long hi) {
+        double v = num(k);
+        if (v != std::floor(v)) fail(k, "must be a whole number, got '" + kv_.at(k) + "'");
+        if (!(v >= double(lo) && v <= double(hi)))
+            fail(k, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got '" + kv_.at(k) + "'");
+        return static_cast<long long>(v);
+    }
+    long long whole(const std::string &k, long long lo, long long hi, long long dflt) {
+        return has(k) ? whole(k, lo, hi) : dflt;
+    }
+
+    // A point or a vector: three numbers, each within ±limits::coordinate.
     glm::vec3 vec(const std::string &k) {
         std::string s = str(k);
         std::vector<double> v = split_nums(k, s);
         if (v.size() != 3) fail(k, "expected x,y,z (three numbers), got '" + s + "'");
+        for (double x : v)
+            if (!(std::fabs(x) <= limits::coordinate))
+                fail(k, "coordinates must be within ±" + short_num(limits::coordinate) + ", got '" + s + "'");
         return glm::vec3(float(v[0]), float(v[1]), float(v[2]));
     }
     glm::vec3 vec(const std::string &k, glm::vec3 dflt) { return has(k) ? vec(k) : dflt; }
 
-    // A colour: one number (grey) or r,g,b.
-    glm::dvec3 color(const std::string &k) {
+    // A colour: one number (grey) or r,g,b, each in [lo, hi].
+    glm::dvec3 color(const std::string &k, double lo, double hi) {
         std::string s = str(k);
         std::vector<double> v = split_nums(k, s);
-        if (v.size() == 1) return glm::dvec3(v[0]);
+        if (v.size() == 1) v.assign(3, v[0]);
         if (v.size() != 3) fail(k, "expected one number or r,g,b, got '" + s + "'");
+        for (double x : v)
+            if (!(x >= lo && x <= hi)) fail(k, range_text(lo, hi, false, s));
         return glm::dvec3(v[0], v[1], v[2]);
     }
 
@@ -119,6 +150,15 @@ public:
     }
 
 private:
+    static std::string short_num(double v) {
+        std::ostringstream o;
+        o << v;
+        return o.str();
+    }
+    static std::string range_text(double lo, double hi, bool positive, const std::string &got) {
+        return std::string("must be in ") + (positive ? "(" : "[") + short_num(lo) + ", " + short_num(hi) + "], got '" +
+               got + "'";
+    }
     double to_num(const std::string &k, const std::string &s) const {
         char *end = nullptr;
         double v = std::strtod(s.c_str(), &end);
@@ -157,35 +197,69 @@ void add_quad(Mesh &m, glm::vec3 c, glm::vec3 e1, glm::vec3 e2) {
     m.faces.push_back({b, b + 2, b + 3});
 }
 
+// The whole token as a number (strtod/strtoll would accept "3.9abc" as 3.9).
+bool whole_double(const std::string &w, double &v) {
+    if (w.empty()) return false;
+    char *end = nullptr;
+    v = std::strtod(w.c_str(), &end);
+    return *end == '\0' && std::isfinite(v);
+}
+bool whole_long(const std::string &w, long long &v) {
+    if (w.empty()) return false;
+    char *end = nullptr;
+    errno = 0;
+    v = std::strtoll(w.c_str(), &end, 10);
+    return *end == '\0' && errno == 0;
+}
+
 Mesh load_obj(Line &l, const std::string &path, int material, float scale, glm::vec3 translate) {
-    std::ifstream in(path);
-    if (!in) l.fail("file", "cannot open '" + path + "'");
+    std::string all;
+    try {
+        all = read_text_file(path, limits::obj_bytes, "OBJ file");
+    } catch (const SceneError &e) {
+        l.fail("file", e.what());
+    }
+    std::istringstream in(all);
     Mesh m;
     m.material = material;
     m.label = "mesh:" + path;
     std::string text;
     int ln = 0;
+    auto bad = [&](const std::string &what) { l.fail("file", path + ":" + std::to_string(ln) + ": " + what); };
     while (std::getline(in, text)) {
         ++ln;
-        std::istringstream ss(text);
+        std::istringstream ss(text.substr(0, text.find('#')));
         std::string tag;
         ss >> tag;
-        if (tag == "v") {
-            glm::vec3 p;
-            if (!(ss >> p.x >> p.y >> p.z))
-                l.fail("file", path + ":" + std::to_string(ln) + ": bad vertex");
-            m.vertices.push_back(p * scale + translate);
-        } else if (tag == "f") {
+        std::vector<std::string> w;
+        for (std::string s; ss >> s;) w.push_back(s);
+        if (tag == "v") {  // v x y z [w]
+            double x[3];
+            if (w.size() < 3 || w.size() > 4) bad("a vertex is 'v x y z [w]'");
+            for (int k = 0; k < 3; ++k) {
+                if (!whole_double(w[size_t(k)], x[k])) bad("bad vertex coordinate '" + w[size_t(k)] + "'");
+                x[k] = x[k] * double(scale) + double(translate[k]);
+                if (!(std::fabs(x[k]) <= limits::coordinate))
+                    bad("vertex outside ±" + std::to_string(long(limits::coordinate)) + " after scale and translate");
+            }
+            m.vertices.push_back(glm::vec3(float(x[0]), float(x[1]), float(x[2])));
+        } else if (tag == "f") {  // f v | v/t | v/t/n | v//n …
             std::vector<unsigned> idx;
-            std::string w;
-            while (ss >> w) {
-                long i = std::strtol(w.c_str(), nullptr, 10);  // "i", "i/t", "i/t/n", "i//n"
-                if (i < 0) i = static_cast<long>(m.vertices.size()) + i + 1;
-                if (i < 1 || i > static_cast<long>(m.vertices.size()))
-                    l.fail("file", path + ":" + std::to_string(ln) + ": face index out of range");
+            for (const std::string &t : w) {
+                std::vector<std::string> part;
+                std::stringstream ps(t);
+                for (std::string s; std::getline(ps, s, '/');) part.push_back(s);
+                if (!t.empty() && t.back() == '/') part.push_back("");
+                long long i = 0, extra = 0;
+                bool ok = part.size() >= 1 && part.size() <= 3 && whole_long(part[0], i);
+                for (size_t k = 1; ok && k < part.size(); ++k)
+                    ok = (k == 1 && part.size() == 3 && part[k].empty()) || whole_long(part[k], extra);
+                if (!ok) bad("bad face vertex '" + t + "' (v, v/t, v/t/n or v//n, whole numbers)");
+                if (i < 0) i = static_cast<long long>(m.vertices.size()) + i + 1;
+                if (i < 1 || i > static_cast<long long>(m.vertices.size())) bad("face index out of range");
                 idx.push_back(static_cast<unsigned>(i - 1));
             }
-            if (idx.size() < 3) l.fail("file", path + ":" + std::to_string(ln) + ": face with < 3 vertices");
+            if (idx.size() < 3) bad("face with < 3 vertices");
             for (size_t k = 1; k + 1 < idx.size(); ++k) m.faces.push_back({idx[0], idx[k], idx[k + 1]});
         }
     }
@@ -223,26 +297,24 @@ Scene parse_scene(const std::string &text, const std::string &file, const std::s
             if (i < 0) l.fail(field, "no material named '" + n + "' defined above");
             return i;
         };
-        auto positive = [&](const std::string &field, double v) {
-            if (!(v > 0)) l.fail(field, "must be > 0");
-            return v;
-        };
         if (kw == "image") {
-            sc.settings.width = static_cast<int>(positive("width", l.num("width")));
-            sc.settings.height = static_cast<int>(positive("height", l.num("height")));
+            sc.settings.width = int(l.whole("width", 1, limits::image_side));
+            sc.settings.height = int(l.whole("height", 1, limits::image_side));
+            if (static_cast<long long>(sc.settings.width) * sc.settings.height > limits::pixels)
+                l.fail("height", "width × height must be at most " + std::to_string(limits::pixels) + " pixels");
         } else if (kw == "camera") {
             sc.camera.position = l.vec("position");
             sc.camera.look_at = l.vec("look_at");
             sc.camera.up = l.vec("up", {0, 1, 0});
-            sc.camera.fov_deg = float(l.num("fov", 45));
-            if (!(sc.camera.fov_deg > 0 && sc.camera.fov_deg < 179)) l.fail("fov", "must be in (0, 179) degrees");
-            if (glm::length(sc.camera.look_at - sc.camera.position) <= 0)
-                l.fail("look_at", "equals position");
+            sc.camera.fov_deg = l.real("fov", 0, 179, true, 45);
+            if (!(sc.camera.fov_deg < 179)) l.fail("fov", "must be in (0, 179) degrees");
+            std::string why = camera_basis_problem(sc.camera);
+            if (!why.empty()) l.fail(why.rfind("up", 0) == 0 ? "up" : "look_at", why);
             have_camera = true;
         } else if (kw == "render") {
-            sc.settings.spp = static_cast<int>(positive("spp", l.num("spp", sc.settings.spp)));
-            sc.settings.max_depth = static_cast<int>(positive("max_depth", l.num("max_depth", sc.settings.max_depth)));
-            sc.settings.seed = static_cast<unsigned>(l.num("seed", sc.settings.seed));
+            sc.settings.spp = int(l.whole("spp", 1, limits::spp, sc.settings.spp));
+            sc.settings.max_depth = int(l.whole("max_depth", 1, limits::max_depth, sc.settings.max_depth));
+            sc.settings.seed = static_cast<unsigned>(l.whole("seed", 0, limits::seed, sc.settings.seed));
             if (l.has("mode")) {
                 try {
                     sc.settings.mode = parse_mode(l.str("mode"));
@@ -251,9 +323,9 @@ Scene parse_scene(const std::string &text, const std::string &file, const std::s
                 }
             }
         } else if (kw == "tonemap") {
-            sc.tonemap.exposure = float(positive("exposure", l.num("exposure", 1)));
-            sc.tonemap.limit = float(positive("limit", l.num("limit", 1)));
-            sc.tonemap.sharpness = float(positive("sharpness", l.num("sharpness", 2)));
+            sc.tonemap.exposure = l.real("exposure", 0, limits::tonemap, true, 1);
+            sc.tonemap.limit = l.real("limit", 0, limits::tonemap, true, 1);
+            sc.tonemap.sharpness = l.real("sharpness", 0, limits::sharpness, true, 2);
         } else if (kw == "material") {
             if (l.positional().empty()) l.fail("", "needs a name: material NAME KIND key=value…");
             std::string name = l.positional()[0];
@@ -266,11 +338,11 @@ Scene parse_scene(const std::string &text, const std::string &file, const std::s
             pgloss_status st = PGLOSS_OK;
             std::string field;
             if (kind.empty() && l.has("diffuse")) {
-                glm::dvec3 rd = l.color("diffuse");
+                glm::dvec3 rd = l.color("diffuse", -DBL_MAX, DBL_MAX);
                 p = pgloss_physical{{rd.x, rd.y, rd.z}, 0.0, 0.1, 0.1, PGLOSS_NORM_WARD};
                 field = "diffuse";
             } else if (kind == "physical") {
-                glm::dvec3 rd = l.color("rho_d");
+                glm::dvec3 rd = l.color("rho_d", -DBL_MAX, DBL_MAX);
                 double rs = l.num("rho_s"), a = l.num("alpha");
                 double ay = l.num("alpha_y", a);
                 p = pgloss_physical{{rd.x, rd.y, rd.z}, rs, a, ay, parse_norm(l)};
@@ -287,7 +359,7 @@ Scene parse_scene(const std::string &text, const std::string &file, const std::s
                 m.checker = true;
                 m.check_a = material_ref("a");
                 m.check_b = material_ref("b");
-                m.check_size = float(positive("size", l.num("size")));
+                m.check_size = l.real("size", limits::checker_min, limits::coordinate);
                 m.check_offset = l.vec("offset", glm::vec3(0));
                 if (sc.materials[size_t(m.check_a)].checker || sc.materials[size_t(m.check_b)].checker)
                     l.fail("a/b", "a checker's cells must be plain materials");
@@ -301,7 +373,7 @@ Scene parse_scene(const std::string &text, const std::string &file, const std::s
             }
             sc.materials.push_back(m);
         } else if (kw == "sphere") {
-            Sphere s{l.vec("center"), float(positive("radius", l.num("radius"))), material_ref("material")};
+            Sphere s{l.vec("center"), l.real("radius", 0, limits::coordinate, true), material_ref("material")};
             sc.spheres.push_back(s);
         } else if (kw == "box") {
             glm::vec3 a = l.vec("min"), b = l.vec("max");
@@ -328,27 +400,28 @@ Scene parse_scene(const std::string &text, const std::string &file, const std::s
             std::string f = l.str("file");
             std::string path = (!f.empty() && f[0] == '/') ? f : base_dir + "/" + f;
             int mat = material_ref("material");
-            float scale = float(positive("scale", l.num("scale", 1)));
+            float scale = l.real("scale", 0, limits::coordinate, true, 1);
             sc.meshes.push_back(load_obj(l, path, mat, scale, l.vec("translate", glm::vec3(0))));
         } else if (kw == "light") {
             AreaLight a;
             a.corner = l.vec("corner");
             a.edge1 = l.vec("edge1");
             a.edge2 = l.vec("edge2");
-            glm::dvec3 r = l.color("radiance");
-            if (r.x < 0 || r.y < 0 || r.z < 0) l.fail("radiance", "must be >= 0");
-            a.radiance = glm::vec3(r);
+            a.radiance = glm::vec3(l.color("radiance", 0, limits::radiance));
             std::string e = l.str("emission", "cosine");
             if (e != "cosine" && e != "isotropic") l.fail("emission", "must be cosine or isotropic, not '" + e + "'");
             a.isotropic = e == "isotropic";
-            glm::vec3 n = glm::cross(a.edge1, a.edge2);
-            a.area = glm::length(n);
-            if (!(a.area > 0)) l.fail("edge2", "the edges are parallel (zero area)");
-            a.normal = n / a.area;
+            // In double: |edge1 × edge2| of long edges overflows nothing, and the test for
+            // parallel edges is relative to their lengths.
+            glm::dvec3 e1(a.edge1), e2(a.edge2), n = glm::cross(e1, e2);
+            double area = glm::length(n);
+            if (!(area > 1e-6 * glm::length(e1) * glm::length(e2)) || !(area > 0))
+                l.fail("edge2", "the edges are parallel or zero (no area)");
+            a.area = float(area);
+            a.normal = glm::vec3(n / area);
             sc.lights.push_back(a);
         } else if (kw == "environment") {
-            glm::dvec3 r = l.color("radiance");
-            if (r.x < 0 || r.y < 0 || r.z < 0) l.fail("radiance", "must be >= 0");
+            glm::dvec3 r = l.color("radiance", 0, limits::radiance);
             sc.has_environment = true;
             sc.environment = glm::vec3(r);
         } else {
@@ -363,15 +436,43 @@ Scene parse_scene(const std::string &text, const std::string &file, const std::s
     return sc;
 }
 
+std::string read_text_file(const std::string &path, unsigned long long max_bytes, const std::string &what) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    fs::file_status st = fs::status(path, ec);
+    if (ec || !fs::exists(st)) throw SceneError(path + ": cannot open " + what + " (no such file)");
+    if (!fs::is_regular_file(st)) throw SceneError(path + ": " + what + " is not a regular file");
+    auto size = fs::file_size(path, ec);
+    if (ec) throw SceneError(path + ": cannot read " + what + ": " + ec.message());
+    if (size > max_bytes)
+        throw SceneError(path + ": " + what + " is larger than " + std::to_string(max_bytes >> 20) + " MiB");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw SceneError(path + ": cannot open " + what);
+    std::string text(static_cast<size_t>(size), '\0');
+    in.read(text.data(), static_cast<std::streamsize>(size));
+    text.resize(static_cast<size_t>(in.gcount()));  // a file that shrank meanwhile reads short
+    return text;
+}
+
+std::string camera_basis_problem(const Camera &c) {
+    glm::dvec3 f = glm::dvec3(c.look_at) - glm::dvec3(c.position), up(c.up);
+    if (!(glm::length(f) > 0)) return "look_at equals position";
+    if (!(glm::length(up) > 0)) return "up must not be the zero vector";
+    // sin of the angle between the view direction and up: below ~1e-3 rad the image's
+    // horizontal axis (f × up) is undefined or noise.
+    double s = glm::length(glm::cross(f, up)) / (glm::length(f) * glm::length(up));
+    if (!(s > 1e-3))
+        return "up is parallel to the view direction (position → look_at); give an up at an angle to it, "
+               "e.g. up=0,0,-1 for a camera looking straight down";
+    return "";
+}
+
 Scene load_scene(const std::string &path) {
-    std::ifstream in(path);
-    if (!in) throw SceneError(path + ": cannot open scene file");
-    std::stringstream ss;
-    ss << in.rdbuf();
+    std::string text = read_text_file(path, limits::scene_bytes, "scene file");
     std::string dir = ".";
     size_t slash = path.find_last_of('/');
     if (slash != std::string::npos) dir = path.substr(0, slash);
-    return parse_scene(ss.str(), path, dir);
+    return parse_scene(text, path, dir);
 }
 
 }  // namespace pgt

@@ -23,6 +23,10 @@
 // The area light emits from the side of edge1 × edge2. emission=cosine is a physical
 // Lambertian emitter (constant radiance L); emission=isotropic makes each element an isotropic
 // point source of intensity L·dA (radiance L / cosθ), which is what a POV-Ray area_light is.
+//
+// Every number is checked where it is parsed, against float's range and the domain below (the
+// tracer works in float): a number outside it is an error that names the field, never an Inf
+// that reaches Embree or an image of dropped samples.
 #pragma once
 #include <pgloss/pgloss.h>
 
@@ -32,6 +36,23 @@
 #include <vector>
 
 namespace pgt {
+
+// The domain of the scene format's numbers.
+namespace limits {
+constexpr double coordinate = 1e7;        // |x|, |y|, |z| of any point, edge, radius (scene units)
+constexpr double radiance = 1e12;         // per channel; with coordinate, light power stays in float
+constexpr double tonemap = 1e12;          // exposure and limit
+constexpr double sharpness = 64;          // tone-map sharpness n
+constexpr double checker_min = 1e-6;      // checker size, so that p / size fits a long
+constexpr int image_side = 1 << 15;       // width, height
+constexpr long long pixels = 1LL << 26;   // width × height (the accumulation buffers are doubles)
+constexpr int spp = 1 << 24;
+constexpr int max_depth = 1 << 10;
+constexpr int threads = 1 << 10;
+constexpr unsigned long long seed = 0xffffffffULL;
+constexpr unsigned long long scene_bytes = 64ULL << 20;   // a scene file
+constexpr unsigned long long obj_bytes = 1ULL << 30;      // an OBJ file
+}  // namespace limits
 
 struct SceneError : std::runtime_error {
     using std::runtime_error::runtime_error;
@@ -113,8 +134,13 @@ struct Scene {
 };
 
 Scene load_scene(const std::string &path);
+// Reads a whole regular file of at most max_bytes (no devices, FIFOs or endless streams);
+// throws SceneError naming `what` and the reason.
+std::string read_text_file(const std::string &path, unsigned long long max_bytes, const std::string &what);
 Scene parse_scene(const std::string &text, const std::string &path_for_messages,
                   const std::string &base_dir);
+// "" when the camera has a proper basis, else why not (up zero or parallel to the view).
+std::string camera_basis_problem(const Camera &c);
 const char *mode_name(Mode m);
 Mode parse_mode(const std::string &s);  // throws SceneError
 

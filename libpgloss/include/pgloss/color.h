@@ -23,7 +23,9 @@ extern "C" {
 #define PGLOSS_LUMA_B 0.072192315360733715
 
 /* lab = (L*, a*, b*) → linear Rec. 709 RGB. Errors: NULL, NONFINITE, LIGHTNESS (L outside
- * [0, 100]), GAMUT (a channel < 0: the exact values are still written). */
+ * [0, 100]), GAMUT (a channel < −PGLOSS_BOUNDARY_TOLERANCE: the exact values are still
+ * written). A channel in [−PGLOSS_BOUNDARY_TOLERANCE, 0) is rounding on the gamut boundary
+ * and is returned as 0 with OK; so no OK result has a negative channel. */
 PGLOSS_API pgloss_status pgloss_rgb_from_lab(const double lab[3], double rgb[3]);
 
 /* Linear Rec. 709 RGB → (L*, a*, b*). Errors: NULL, NONFINITE, NEGATIVE. */

@@ -104,13 +104,15 @@ PGLOSS_API pgloss_status pgloss_isogloss_contour(double c0, double d0, double D,
 
 /*
  * Is p inside the paper's model? Returns the first reason it is not, checked in this order:
- * NULL, NONFINITE, NEGATIVE, ALPHA, NORMALIZATION, ENERGY (max over channels of ρd + ρs > 1),
+ * NULL, NONFINITE (also |value| > FLT_MAX, as pgloss_material_init), NEGATIVE, ALPHA,
+ * NORMALIZATION, ENERGY (max over channels of ρd + ρs > 1),
  * then the warning ALPHA_UNTRUSTED (max(αx, αy) > 0.2); PGLOSS_OK otherwise.
  */
 PGLOSS_API pgloss_status pgloss_check_physical(const pgloss_physical *p);
 
 /*
- * Is q inside the model? First reason, in this order: NULL, NONFINITE, LIGHTNESS, NEGATIVE
+ * Is q inside the model? First reason, in this order: NULL, NONFINITE (also α = 1 − d above
+ * FLT_MAX, which no material holds), LIGHTNESS, NEGATIVE
  * (c < 0), ALPHA (d >= 1), GAMUT (L*a*b* has no non-negative linear Rec. 709 RGB),
  * ENVELOPE (c > envelope at L), ENERGY (a colour channel of ρd plus ρs exceeds 1, possible
  * for saturated colours inside the luminance envelope), warning ALPHA_UNTRUSTED (d < 0.8).

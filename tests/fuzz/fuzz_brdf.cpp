@@ -1,0 +1,156 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
+// libFuzzer harness: the BRDF entry points (brdf.h, batch.h), every tier and instruction set.
+// Contracts asserted (from the headers):
+//   - every status is one the function documents; outputs are finite, f, pdf, weight >= 0;
+//     a rejected sample (pdf 0) has weight 0;
+//   - the FLOAT tier is bit-identical across instruction sets;
+//   - scalar (double reference) and batch agree: on the regular range (unit directions,
+//     cosines >= 1e-3, α in [1e-3, 1]) within the tiers' stated error, which grows with the
+//     specular exponent x as ~1e-6 (4 + x); elsewhere (any cosine > 0) within a factor of 2.
+#include "fuzz_common.hpp"
+
+#include <pgloss/pgloss.h>
+
+#include <algorithm>
+#include <vector>
+
+namespace {
+
+struct Dir {
+    pgloss_vec3 v;
+    bool unit;
+};
+
+Dir direction(fz::Bytes &b) {
+    const int mode = b.byte() % 6;
+    if (mode == 0) return {{b.raw<float>(), b.raw<float>(), b.raw<float>()}, false};
+    double ct = -0.05 + 1.05 * b.unit();
+    if (mode == 1) {
+        static const double grazing[] = {0.0, 1e-30, 1e-20, 1e-12, 1e-8, 1e-4, -1e-8, 1.0};
+        ct = grazing[b.byte() % 8];
+    }
+    const double st = std::sqrt(std::max(0.0, 1 - ct * ct)), ph = 6.283185307179586 * b.unit();
+    double s = 1;
+    if (mode == 2) s = b.real(1e-20, 1e20);
+    Dir d{{float(s * st * std::cos(ph)), float(s * st * std::sin(ph)), float(s * ct)}, mode != 2};
+    const double l2 = double(d.v.x) * d.v.x + double(d.v.y) * d.v.y + double(d.v.z) * d.v.z;
+    d.unit = d.unit && std::fabs(l2 - 1) <= 0x1p-20;
+    return d;
+}
+
+bool documented_eval(pgloss_status s) { return s == PGLOSS_OK || s == PGLOSS_ERR_DIRECTION; }
+bool documented_sample(pgloss_status s) {
+    return s == PGLOSS_OK || s == PGLOSS_ERR_DIRECTION || s == PGLOSS_ERR_RANDOM;
+}
+
+// The specular exponent x = tan²δ/α² (anisotropic: ((hx/αx)² + (hy/αy)²)/hz²), in double.
+double exponent(pgloss_vec3 o, pgloss_vec3 i, double ax, double ay) {
+    const double hx = double(o.x) + i.x, hy = double(o.y) + i.y, hz = double(o.z) + i.z;
+    return ((hx / ax) * (hx / ax) + (hy / ay) * (hy / ay)) / (hz * hz);
+}
+
+void agree(float batch, float scalar, double tol, bool regular) {
+    if (!(scalar >= 1e-30f)) {  // near float's underflow only the magnitude is asked for
+        FZ_CHECK(batch <= 1e-28f);
+        return;
+    }
+    if (regular)
+        FZ_CHECK(std::fabs(double(batch) - scalar) <= tol * scalar);
+    else
+        FZ_CHECK(batch <= 2.0f * scalar && batch >= 0.5f * scalar);
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, size_t size) {
+    fz::Bytes b(data, size);
+    pgloss_physical p{};
+    const int shared = b.byte() % 2;
+    p.rho_d[0] = b.real(0, 1);
+    p.rho_d[1] = shared ? p.rho_d[0] : b.real(0, 1);
+    p.rho_d[2] = shared ? p.rho_d[0] : b.real(0, 1);
+    p.rho_s = b.real(0, 1);
+    p.alpha_x = b.real(1e-5, 2);
+    p.alpha_y = b.byte() % 2 ? p.alpha_x : b.real(1e-5, 2);
+    p.normalization = static_cast<pgloss_normalization>(b.byte() % 4);
+    pgloss_material m;
+    const pgloss_status ms = pgloss_material_init(&m, &p);
+    FZ_CHECK(ms == PGLOSS_OK || ms == PGLOSS_ERR_NONFINITE || ms == PGLOSS_ERR_NEGATIVE || ms == PGLOSS_ERR_ALPHA ||
+             ms == PGLOSS_ERR_NORMALIZATION);
+    if (ms < 0) FZ_CHECK(m.lobes == PGLOSS_LOBE_NONE);
+    const unsigned lobes = b.byte() % 4;
+    const Dir o = direction(b), i = direction(b);
+    float u[3];
+    for (float &x : u) x = b.byte() % 8 == 0 ? b.raw<float>() : float(b.unit()) * 0.99999994f;
+    const bool regular_material = ms == PGLOSS_OK && p.alpha_x >= 1e-3 && p.alpha_x <= 1 && p.alpha_y >= 1e-3 &&
+                                  p.alpha_y <= 1;
+    if (ms < 0) return 0;  // a black material: nothing more to evaluate
+
+    // Scalar reference.
+    pgloss_rgb f, f2;
+    float pdf = -1, pdf2 = -1;
+    const pgloss_status se = pgloss_eval_pdf(&m, o.v, i.v, lobes, &f, &pdf);
+    FZ_CHECK(documented_eval(se));
+    FZ_CHECK(fz::finite3(f.r, f.g, f.b) && std::isfinite(pdf));
+    FZ_CHECK(f.r >= 0 && f.g >= 0 && f.b >= 0 && pdf >= 0);
+    FZ_CHECK(pgloss_eval(&m, o.v, i.v, lobes, &f2) == se && pgloss_pdf(&m, o.v, i.v, lobes, &pdf2) == se);
+    FZ_CHECK(std::memcmp(&f, &f2, sizeof f) == 0 && std::memcmp(&pdf, &pdf2, sizeof pdf) == 0);
+    pgloss_sample_record r;
+    const pgloss_status ss = pgloss_sample(&m, o.v, u, lobes, &r);
+    FZ_CHECK(documented_sample(ss));
+    FZ_CHECK(fz::finite3(r.wi.x, r.wi.y, r.wi.z) && std::isfinite(r.pdf) && fz::finite3(r.weight.r, r.weight.g, r.weight.b));
+    FZ_CHECK(r.pdf >= 0 && r.weight.r >= 0 && r.weight.g >= 0 && r.weight.b >= 0);
+    if (r.pdf == 0) FZ_CHECK(r.weight.r == 0 && r.weight.g == 0 && r.weight.b == 0);
+
+    // Batches: n copies (the fuzzer's element among others) through every tier and ISA.
+    const size_t n = 1 + b.byte() % 40;
+    std::vector<float> ox(n, o.v.x), oy(n, o.v.y), oz(n, o.v.z), ix(n, i.v.x), iy(n, i.v.y), iz(n, i.v.z);
+    std::vector<float> u0(n, u[0]), u1(n, u[1]), u2(n, u[2]);
+    const pgloss_vec3_array wo{ox.data(), oy.data(), oz.data()}, wi{ix.data(), iy.data(), iz.data()};
+    const double x = exponent(o.v, i.v, m.alpha_x, m.alpha_y);
+    const bool regular = regular_material && o.unit && i.unit && o.v.z >= 1e-3f && i.v.z >= 1e-3f && x <= 80;
+    const bool comparable = o.unit && i.unit && o.v.z > 0 && i.v.z > 0;
+    std::vector<float> float_ref;  // FLOAT tier of the first ISA, for bit-identity
+    for (pgloss_precision tier : {PGLOSS_PRECISION_FLOAT, PGLOSS_PRECISION_FAST, PGLOSS_PRECISION_REFERENCE}) {
+        for (pgloss_isa isa : {PGLOSS_ISA_BASELINE, PGLOSS_ISA_AVX2, PGLOSS_ISA_AVX512}) {
+            if (!pgloss_isa_supported(isa)) continue;
+            const pgloss_batch_options opt{tier, isa};
+            std::vector<float> fr(n, -1), fg(n, -1), fb(n, -1), pd(n, -1);
+            const pgloss_status bs = pgloss_eval_pdf_batch_ex(&opt, &m, lobes, n, wo, wi,
+                                                              pgloss_rgb_out{fr.data(), fg.data(), fb.data()}, pd.data());
+            FZ_CHECK(bs == se);
+            for (size_t k = 0; k < n; ++k) {
+                FZ_CHECK(fz::finite3(fr[k], fg[k], fb[k]) && std::isfinite(pd[k]));
+                FZ_CHECK(fr[k] >= 0 && fg[k] >= 0 && fb[k] >= 0 && pd[k] >= 0);
+            }
+            if (se == PGLOSS_OK && comparable && tier != PGLOSS_PRECISION_REFERENCE) {
+                const double tol = 1e-6 * (4 + x) * (tier == PGLOSS_PRECISION_FAST ? 2 : 1);
+                agree(fr[0], f.r, tol, regular);
+                agree(fg[0], f.g, tol, regular);
+                agree(fb[0], f.b, tol, regular);
+                agree(pd[0], pdf, tol, regular);
+            }
+            if (tier == PGLOSS_PRECISION_FLOAT) {
+                std::vector<float> all(fr);
+                all.insert(all.end(), fg.begin(), fg.end());
+                all.insert(all.end(), fb.begin(), fb.end());
+                all.insert(all.end(), pd.begin(), pd.end());
+                if (float_ref.empty()) float_ref = all;
+                else FZ_CHECK(std::memcmp(all.data(), float_ref.data(), all.size() * sizeof(float)) == 0);
+            }
+            std::vector<float> sx(n), sy(n), sz(n), sp(n), gr(n), gg(n), gb(n);
+            std::vector<unsigned char> lb(n);
+            const pgloss_status bss = pgloss_sample_batch_ex(
+                &opt, &m, lobes, n, wo, u0.data(), u1.data(), u2.data(), pgloss_vec3_out{sx.data(), sy.data(), sz.data()},
+                sp.data(), pgloss_rgb_out{gr.data(), gg.data(), gb.data()}, lb.data());
+            FZ_CHECK(documented_sample(bss));
+            for (size_t k = 0; k < n; ++k) {
+                FZ_CHECK(fz::finite3(sx[k], sy[k], sz[k]) && std::isfinite(sp[k]) && fz::finite3(gr[k], gg[k], gb[k]));
+                FZ_CHECK(sp[k] >= 0 && gr[k] >= 0 && gg[k] >= 0 && gb[k] >= 0);
+                if (sp[k] == 0) FZ_CHECK(gr[k] == 0 && gg[k] == 0 && gb[k] == 0);
+            }
+        }
+    }
+    return 0;
+}

@@ -1,0 +1,90 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
+// One rule at the model's boundaries, the same in every function (issue 17): what one function
+// returns with OK, every other function accepts. Each case here broke that before.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "pgloss/pgloss.h"
+
+namespace {
+
+// The audit's example: L* 50, a* 0 and this b* put blue at −4.2e-13, within the boundary
+// tolerance, so rgb_from_lab said OK while material_init refused the negative channel.
+TEST(Boundaries, RgbFromLabWithinTheToleranceIsSnappedToTheGamutBoundary) {
+    const double lab[3] = {50.0, 0.0, 55.96100838829443};
+    double rgb[3];
+    ASSERT_EQ(pgloss_rgb_from_lab(lab, rgb), PGLOSS_OK);
+    for (double v : rgb) EXPECT_GE(v, 0.0);
+    EXPECT_EQ(rgb[2], 0.0);  // the exact value is −4.2e-13
+
+    const pgloss_perceptual q{50.0, 0.0, 55.96100838829443, 0.05, 0.95};
+    pgloss_physical p;
+    ASSERT_EQ(pgloss_check_perceptual(&q), PGLOSS_OK);
+    ASSERT_EQ(pgloss_physical_from_perceptual(&q, PGLOSS_NORM_WARD, &p), PGLOSS_OK);
+    EXPECT_EQ(pgloss_check_physical(&p), PGLOSS_OK);
+    pgloss_material m;
+    EXPECT_EQ(pgloss_material_init(&m, &p), PGLOSS_OK);
+}
+
+TEST(Boundaries, EveryOkColourNearTheGamutBoundaryMakesAMaterial) {
+    // Walk b* across the blue channel's zero for random L*, a*: whatever rgb_from_lab accepts
+    // has no negative channel, and physical_from_perceptual's result makes a material.
+    std::mt19937_64 rng(17);
+    std::uniform_real_distribution<double> U(0.0, 1.0);
+    int ok = 0, gamut = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const double L = 5 + 90 * U(rng), a = -20 + 40 * U(rng);
+        // Bisect b* for blue = 0 (blue falls as b* grows), then step by a few ulps around it.
+        double lo = 0, hi = 300;
+        for (int k = 0; k < 200; ++k) {
+            const double mid = 0.5 * (lo + hi), lab[3] = {L, a, mid};
+            double rgb[3];
+            pgloss_rgb_from_lab(lab, rgb);
+            (rgb[2] >= 0 ? lo : hi) = mid;
+        }
+        const double b = std::nextafter(lo, (i & 1) ? 1e9 : -1e9) + (i % 7 - 3) * 1e-14 * lo;
+        const double lab[3] = {L, a, b};
+        double rgb[3];
+        const pgloss_status s = pgloss_rgb_from_lab(lab, rgb);
+        if (s == PGLOSS_ERR_GAMUT) {
+            ++gamut;
+            continue;
+        }
+        ASSERT_EQ(s, PGLOSS_OK) << L << " " << a << " " << b;
+        ++ok;
+        for (double v : rgb) ASSERT_GE(v, 0.0) << L << " " << a << " " << b;
+        const pgloss_perceptual q{L, a, b, 0.0, 0.95};
+        pgloss_physical p;
+        if (pgloss_physical_from_perceptual(&q, PGLOSS_NORM_WARD, &p) < 0) continue;  // other reasons
+        pgloss_material m;
+        ASSERT_GE(pgloss_material_init(&m, &p), 0) << L << " " << a << " " << b;
+        ASSERT_NE(pgloss_check_physical(&p), PGLOSS_ERR_NEGATIVE) << L << " " << a << " " << b;  // ENERGY may be
+    }
+    std::printf("near the blue gamut boundary: %d OK, %d out of gamut\n", ok, gamut);
+    EXPECT_GT(ok, 1000);
+}
+
+// d = 1 − α rounds to 1 for α ≤ 2^-54, and eq. 8 rejects d = 1: gloss_from_physical must not
+// return a d that its own inverse refuses.
+TEST(Boundaries, TinyAlphaGivesADoiThatEq8Accepts) {
+    for (double alpha : {1e-300, 1e-20, 0x1p-54, 0x1p-53, 1e-16, 1e-8}) {
+        double L, c, d;
+        ASSERT_EQ(pgloss_gloss_from_physical(0.2, 0.05, alpha, &L, &c, &d), PGLOSS_OK) << alpha;
+        EXPECT_LT(d, 1.0) << alpha;
+        EXPECT_LE(std::fabs(d - (1.0 - alpha)), 0x1p-53) << alpha;  // within an ulp of 1 − α
+        double rd, rs, a2;
+        ASSERT_EQ(pgloss_physical_from_gloss(L, c, d, &rd, &rs, &a2), PGLOSS_OK) << alpha;
+        EXPECT_GT(a2, 0.0) << alpha;
+        const pgloss_physical p{{0.2, 0.2, 0.2}, 0.05, alpha, alpha, PGLOSS_NORM_WARD};
+        pgloss_perceptual q;
+        ASSERT_EQ(pgloss_perceptual_from_physical(&p, &q), PGLOSS_OK) << alpha;
+        EXPECT_LT(q.d, 1.0) << alpha;
+        pgloss_physical back;
+        EXPECT_GE(pgloss_physical_from_perceptual(&q, PGLOSS_NORM_WARD, &back), 0) << alpha;
+    }
+}
+
+}  // namespace
