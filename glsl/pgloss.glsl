@@ -340,6 +340,17 @@ float pgloss_impl_specular_probability(pgloss_material m, uint act)
     return m.weight_specular / (m.weight_diffuse + m.weight_specular);
 }
 
+/* 1 − Ps, written as wd / (wd + ws): for a weak diffuse lobe (wd ≪ ws) 1 − Ps cancels to
+ * nothing in float (the C core's pgloss_inl_consts_of does the same). */
+float pgloss_impl_diffuse_probability(pgloss_material m, uint act)
+{
+    if (act == PGLOSS_LOBE_DIFFUSE)
+        return 1.0;
+    if (act != PGLOSS_LOBE_ALL)
+        return 0.0;
+    return m.weight_diffuse / (m.weight_diffuse + m.weight_specular);
+}
+
 /* ws / (wd + ws) over the active lobes (mask & m.lobes); 1 or 0 for one lobe; 0 for none. */
 float pgloss_specular_probability(pgloss_material m, uint lobes)
 {
@@ -376,7 +387,7 @@ void pgloss_impl_eval_pdf(pgloss_material m, uint act, vec3 o, vec3 i, out vec3 
 #ifndef PGLOSS_NO_DIFFUSE
         if ((act & PGLOSS_LOBE_DIFFUSE) != 0u) {
             fd = m.rho_d * PGLOSS_INV_PI;
-            p += (1.0 - ps) * cos_i * PGLOSS_INV_PI;
+            p += pgloss_impl_diffuse_probability(m, act) * cos_i * PGLOSS_INV_PI;
         }
 #endif
 #ifndef PGLOSS_NO_SPECULAR

@@ -718,6 +718,15 @@ float pgloss__specular_probability_active(pgloss_material m, int active)
     return m.weight_specular / (m.weight_diffuse + m.weight_specular);
 }
 
+// 1 - Ps, written as wd / (wd + ws): for a weak diffuse lobe (wd << ws) 1 - Ps cancels to
+// nothing in float (the C core's pgloss_inl_consts_of does the same).
+float pgloss__diffuse_probability_active(pgloss_material m, int active)
+{
+    if (active == PGLOSS_LOBE_DIFFUSE) return 1.0;
+    if (active != PGLOSS_LOBE_ALL) return 0.0;
+    return m.weight_diffuse / (m.weight_diffuse + m.weight_specular);
+}
+
 float pgloss_specular_probability(pgloss_material m, int lobes)
 {
     return pgloss__specular_probability_active(m, lobes & m.lobes & PGLOSS_LOBE_ALL);
@@ -748,7 +757,7 @@ void pgloss__eval_pdf_unit(pgloss_material m, int active, vector o, vector i,
         float cos_o = o[2] * ro, cos_i = i[2] * ri;
         if (active & PGLOSS_LOBE_DIFFUSE) {
             fd = m.rho_d * PGLOSS__INV_PI;
-            p += (1.0 - ps) * cos_i * PGLOSS__INV_PI;
+            p += pgloss__diffuse_probability_active(m, active) * cos_i * PGLOSS__INV_PI;
         }
         if (active & PGLOSS_LOBE_SPECULAR) {
             float sx = i[0] + o[0], sy = i[1] + o[1], sz = i[2] + o[2];

@@ -1668,6 +1668,8 @@ def brdf_materials() -> Dict[str, Tuple[Dict[str, Any], Material]]:
         for rs in PAPER_RS:
             for al in PAPER_AL:
                 add((rd, rd, rd), rs, al, al, NORM_WARD, "paper Experiment 1 stimulus")
+    for rd in (1e-5, 1e-6, 1e-8, 1e-12):  # 1 − Ps cancels in float unless written wd/(wd + ws)
+        add((rd, rd, rd), 0.34, 0.1, 0.1, NORM_WARD, "weak diffuse lobe")
     return out
 
 
@@ -1795,7 +1797,8 @@ def gen_eval(mats: Dict[str, Tuple[Dict[str, Any], Material]]) -> Dict[str, Any]
             case["info"] = info
         cl.append(case)
 
-    generic = [k for k, (p, _m) in mats.items() if "paper" not in p["_note"] and "huge" not in p["_note"]]
+    generic = [k for k, (p, _m) in mats.items()
+               if "paper" not in p["_note"] and "huge" not in p["_note"] and "weak" not in p["_note"]]
     paper = [k for k, (p, _m) in mats.items() if "paper" in p["_note"]]
     huge = [k for k, (p, _m) in mats.items() if "huge" in p["_note"]]
     for mid in huge:
@@ -1872,6 +1875,12 @@ def gen_eval(mats: Dict[str, Tuple[Dict[str, Any], Material]]) -> Dict[str, Any]
             wi2 = near_specular(wo, m, x, 2 * math.pi * rng.random())
             if wi2 is not None:
                 add(mid, wo, wi2, 3, ["regular", "paper", "near_specular"])
+    # A weak diffuse lobe beside a strong specular one: far from the mirror direction the pdf is
+    # its diffuse part, (1 − Ps) cos/π with 1 − Ps ~ 3e-5 .. 3e-12 (fixed directions).
+    for mid in [k for k, (p, _m) in mats.items() if "weak" in p["_note"]]:
+        wo = dir_from(0.8, 0.0)
+        for wi in (dir_from(0.5, 2.0), dir_from(0.9, 4.0), dir_from(0.2, 1.0)):
+            add(mid, wo, wi, 3, ["regular", "weak_diffuse"])
 
     tol = {"eval": {"f": tol_both(1e-35)}, "pdf": {"pdf": tol_both(1e-35)},
            "eval_pdf": {"f": tol_both(1e-35), "pdf": tol_both(1e-35)}}
@@ -1932,7 +1941,8 @@ def gen_sample(mats: Dict[str, Tuple[Dict[str, Any], Material]]) -> Dict[str, An
         cl.append(case)
         return True
 
-    generic = [k for k, (p, _m) in mats.items() if "paper" not in p["_note"] and "huge" not in p["_note"]]
+    generic = [k for k, (p, _m) in mats.items()
+               if "paper" not in p["_note"] and "huge" not in p["_note"] and "weak" not in p["_note"]]
     paper = [k for k, (p, _m) in mats.items() if "paper" in p["_note"]]
     j = 0
     for mid in generic:
