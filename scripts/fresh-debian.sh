@@ -31,29 +31,35 @@ die() { log "ERROR: $*" >&2; exit 2; }
 if [[ ${1:-} == --inside ]]; then
   shift
   root=$1 repo=$2 commit=$3 cache=$4; shift 4
-  stage_start=$SECONDS
+  stage_start=$SECONDS stage_times=()
   stage() { # NAME: closes the previous stage with its time, opens NAME
-    [[ -n ${stage_name:-} ]] && log "stage '$stage_name' done in $((SECONDS - stage_start)) s"
+    if [[ -n ${stage_name:-} ]]; then
+      log "stage '$stage_name' done in $((SECONDS - stage_start)) s"
+      stage_times+=("$stage_name $((SECONDS - stage_start)) s")
+    fi
     stage_name=$1 stage_start=$SECONDS
     [[ -n $1 ]] && log "stage '$1' ..."
     return 0
   }
   mount --make-rprivate /   # belt and braces: nothing below propagates back to the host
 
-  stage "mmdebstrap bookworm (variant apt + ca-certificates, git)"
+  stage "mmdebstrap"
+  log "mmdebstrap --variant=apt --include=ca-certificates,git bookworm $root"
   # Without a mirror argument mmdebstrap uses deb.debian.org with bookworm, -updates and
   # -security, as a Debian 12 installation does. It copies the host's resolv.conf in.
   mmdebstrap --quiet --variant=apt --include=ca-certificates,git bookworm "$root"
   log "root: $(du -sh --one-file-system "$root" | cut -f1), $(chroot "$root" dpkg-query -W | wc -l) packages," \
     "Debian $(cat "$root/etc/debian_version")"
 
-  stage "network set-up (CA certificates, pip.conf)"
+  stage "network set-up"
+  # What Debian's installer writes on every machine (no package owns it): localhost resolves.
+  [[ -e $root/etc/hosts ]] || printf '127.0.0.1\tlocalhost\n::1\t\tlocalhost ip6-localhost ip6-loopback\n' >"$root/etc/hosts"
   n=0
   for crt in /usr/local/share/ca-certificates/*.crt; do
     [[ -f $crt ]] || continue
     cp "$crt" "$root/usr/local/share/ca-certificates/"; n=$((n + 1))
   done
-  chroot "$root" /usr/sbin/update-ca-certificates >/dev/null
+  chroot "$root" /usr/sbin/update-ca-certificates 2>&1 | { grep -v -e '^rehash: warning: skipping ca-certificates.crt' -e '^Updating' -e 'added, .* removed' -e '^Running hooks' -e '^done\.$' || true; }
   log "carried $n extra CA certificate(s) from /usr/local/share/ca-certificates"
   if [[ -f /etc/pip.conf ]]; then
     cp /etc/pip.conf "$root/etc/pip.conf"
@@ -71,12 +77,12 @@ if [[ ${1:-} == --inside ]]; then
     log "carried /etc/pip.conf ($(grep -cvE '^[[:space:]]*(#|;|$)' /etc/pip.conf) setting line(s))"
   fi
 
-  stage "clone the project (commit ${commit:0:12})"
+  stage "clone"
   git clone --quiet --no-hardlinks "$repo" "$root/root/pgloss"
   git -C "$root/root/pgloss" -c advice.detachedHead=false checkout --quiet --detach "$commit"
   log "cloned $repo at $(git -C "$root/root/pgloss" log -1 --format='%h %s')"
 
-  stage "mounts (/proc, /sys, private /dev, /dev/pts, /dev/shm, caches)"
+  stage "mounts"
   mount -t proc proc "$root/proc"          # this PID namespace's processes only
   mount -t sysfs -o ro sysfs "$root/sys"
   # A private /dev: only the usual character devices, a new devpts instance and an empty
@@ -94,6 +100,7 @@ if [[ ${1:-} == --inside ]]; then
   ln -s /proc/self/fd/2 "$root/dev/stderr"
   mount -t tmpfs -o mode=1777,nosuid,nodev tmpfs "$root/tmp"
   chmod 1777 "$root/var/tmp"
+  log "mounted /proc, /sys (ro), a private /dev (+ devpts, /dev/shm tmpfs), /tmp tmpfs"
   if [[ $cache != none ]]; then
     # Downloads only: apt's .deb files, pip's HTTP cache (http/ for pip < 23.3, as in
     # Debian 12's venvs, http-v2/ after). Not pip's wheels/ (wheels built here could hide
@@ -108,19 +115,23 @@ if [[ ${1:-} == --inside ]]; then
     log "download caches from $cache: apt $(du -sh "$cache/apt" | cut -f1)," \
       "pip $(du -shc "$cache/pip-http" "$cache/pip-http-v2" | tail -1 | cut -f1)"
   fi
+  # dpkg without fsync (a throwaway root): faster installs, the same packages.
+  echo force-unsafe-io >"$root/etc/dpkg/dpkg.cfg.d/99pgloss-unsafe-io"
   # apt keeps what it downloads, so that the cache fills (a fresh root has no docker-clean).
   echo 'Binary::apt-get::APT::Keep-Downloaded-Packages "true";' >"$root/etc/apt/apt.conf.d/99pgloss-keep-debs"
 
   env_args=(PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin HOME=/root
             LANG=C.UTF-8 USER=root LOGNAME=root SHELL=/bin/bash)
   while (($#)) && [[ $1 =~ ^[A-Za-z_][A-Za-z0-9_]*= ]]; do env_args+=("$1"); shift; done
-  stage "run: $* (environment: ${env_args[*]})"
+  stage "run"
+  log "command: $*"
+  log "environment: ${env_args[*]} (nothing else)"
   set +e
   chroot "$root" /usr/bin/env -i "${env_args[@]}" /bin/bash -c 'cd /root/pgloss && exec "$@"' bash "$@"
   rc=$?
   set -e
   stage ""
-  log "command exit status $rc"
+  log "command exit status $rc; stage times: ${stage_times[*]}"
   exit "$rc"
 fi
 
