@@ -12,10 +12,11 @@
 #
 # What comes in from this machine: its network set-up only — the extra CA certificates in
 # /usr/local/share/ca-certificates (update-ca-certificates runs inside), /etc/pip.conf (and
-# any certificate file it names), /etc/resolv.conf (mmdebstrap copies it). Download caches
-# (apt's .deb archives and pip's HTTP cache) are bind-mounted from PGLOSS_FRESH_CACHE
-# (default /var/cache/pgloss-fresh; "none" for no cache): they save downloads but hold no
-# installed package, venv, built wheel or build tree, so they cannot hide a missing install.
+# any certificate file it names), /etc/resolv.conf (mmdebstrap copies it), and a localhost
+# /etc/hosts as Debian's installer writes. Download caches (apt's .deb files, linked in and
+# back out; pip's HTTP cache, bind-mounted) live in PGLOSS_FRESH_CACHE (default
+# /var/cache/pgloss-fresh; "none" for no cache): they save downloads but hold no installed
+# package, venv, built wheel or build tree, so they cannot hide a missing install.
 # The mounts (/proc, /sys, a private /dev with its own /dev/pts and /dev/shm, the caches)
 # live in a private mount and PID namespace: nothing stays mounted and nothing keeps running
 # when the run ends or is killed, and the root is deleted afterwards (PGLOSS_FRESH_KEEP=1
@@ -102,18 +103,20 @@ if [[ ${1:-} == --inside ]]; then
   chmod 1777 "$root/var/tmp"
   log "mounted /proc, /sys (ro), a private /dev (+ devpts, /dev/shm tmpfs), /tmp tmpfs"
   if [[ $cache != none ]]; then
-    # Downloads only: apt's .deb files, pip's HTTP cache (http/ for pip < 23.3, as in
-    # Debian 12's venvs, http-v2/ after). Not pip's wheels/ (wheels built here could hide
-    # a missing compiler), no venv, no installed package.
-    for pair in apt:/var/cache/apt/archives pip-http:/root/.cache/pip/http \
-                pip-http-v2:/root/.cache/pip/http-v2; do
-      src=$cache/${pair%%:*} dst=$root${pair#*:}
-      mkdir -p "$src" "$dst"
-      mount --bind "$src" "$dst"
+    # Downloads only. apt's .deb files are linked in (not bind-mounted: apt locks its
+    # archive folder, and several fresh roots may run at once) and new ones linked back out
+    # after the run; pip's HTTP cache (http/ for pip < 23.3, as in Debian 12's venvs,
+    # http-v2/ after) is bind-mounted, pip writes it atomically. Not pip's wheels/ (wheels
+    # built here could hide a missing compiler), no venv, no installed package.
+    mkdir -p "$cache/apt" "$root/var/cache/apt/archives/partial"
+    find "$cache/apt" -maxdepth 1 -name '*.deb' -exec cp -l -t "$root/var/cache/apt/archives/" {} + 2>/dev/null ||
+      find "$cache/apt" -maxdepth 1 -name '*.deb' -exec cp -t "$root/var/cache/apt/archives/" {} +
+    for d in http http-v2; do
+      mkdir -p "$cache/pip-$d" "$root/root/.cache/pip/$d"
+      mount --bind "$cache/pip-$d" "$root/root/.cache/pip/$d"
     done
-    mkdir -p "$root/var/cache/apt/archives/partial"
-    log "download caches from $cache: apt $(du -sh "$cache/apt" | cut -f1)," \
-      "pip $(du -shc "$cache/pip-http" "$cache/pip-http-v2" | tail -1 | cut -f1)"
+    log "download caches from $cache: apt $(find "$cache/apt" -maxdepth 1 -name '*.deb' | wc -l) .deb files" \
+      "($(du -sh "$cache/apt" | cut -f1)), pip $(du -shc "$cache/pip-http" "$cache/pip-http-v2" | tail -1 | cut -f1)"
   fi
   # dpkg without fsync (a throwaway root): faster installs, the same packages.
   echo force-unsafe-io >"$root/etc/dpkg/dpkg.cfg.d/99pgloss-unsafe-io"
@@ -131,13 +134,18 @@ if [[ ${1:-} == --inside ]]; then
   rc=$?
   set -e
   stage ""
+  if [[ $cache != none ]]; then  # new downloads back to the cache (same file name, same file)
+    find "$root/var/cache/apt/archives" -maxdepth 1 -name '*.deb' -links 1 \
+      -exec cp -n -l -t "$cache/apt/" {} + 2>/dev/null ||
+      find "$root/var/cache/apt/archives" -maxdepth 1 -name '*.deb' -exec cp -n -t "$cache/apt/" {} +
+  fi
   log "command exit status $rc; stage times: ${stage_times[*]}"
   exit "$rc"
 fi
 
 # ---------------------------------------------------------------------------------------
 # Outside: check, make the root, enter the namespaces, clean up.
-(($#)) || { sed -n '4,22p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
+(($#)) || { sed -n '4,/^set -euo/{/^#/s/^# \{0,1\}//p}' "$0"; exit 2; }
 [[ $(id -u) -eq 0 ]] || die "needs root (mmdebstrap's root mode, chroot, mounts)"
 for tool in mmdebstrap git unshare chroot; do
   command -v "$tool" >/dev/null || die "$tool not found (bash scripts/bootstrap.sh apt mmdebstrap git)"
