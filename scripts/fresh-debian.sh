@@ -192,9 +192,11 @@ trap 'log "terminated"; exit 143' TERM HUP
 
 log "fresh Debian 12 root $root for: $*"
 t0=$SECONDS
-# New mount namespace (private propagation: no mount reaches the host) and PID namespace
-# (killing the runner kills everything inside, --kill-child).
-unshare --mount --propagation private --pid --fork --kill-child -- \
+# New mount namespace (private propagation: no mount reaches the host) and PID namespace:
+# when this script dies, even by SIGKILL, unshare gets SIGKILL (setpriv --pdeathsig), its
+# child, PID 1 inside, gets SIGKILL (--kill-child), and with it everything inside; the mounts
+# go with the namespace. A root left by a SIGKILL is removed by the next run (above).
+setpriv --pdeathsig KILL unshare --mount --propagation private --pid --fork --kill-child -- \
   "$BASH" "$repo/scripts/fresh-debian.sh" --inside "$root" "$repo" "$commit" "$cache" "$@" &
 child=$!
 set +e
