@@ -174,7 +174,8 @@ chmod 755 "$root"
 cleanup() {
   local rc=$?
   trap - EXIT INT TERM HUP
-  if [[ -n ${child:-} ]]; then kill "$child" 2>/dev/null; wait "$child" 2>/dev/null; fi
+  # unshare --fork ignores SIGTERM; SIGKILL it, and --kill-child takes everything inside.
+  if [[ -n ${child:-} ]]; then kill -KILL "$child" 2>/dev/null; wait "$child" 2>/dev/null; fi
   if [[ ${PGLOSS_FRESH_KEEP:-0} == 1 ]]; then
     log "kept the root $root (PGLOSS_FRESH_KEEP=1; remove it with rm -rf --one-file-system)"
   else
