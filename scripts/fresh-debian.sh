@@ -16,7 +16,8 @@
 # /etc/hosts as Debian's installer writes. Download caches (apt's .deb files, linked in and
 # back out; pip's HTTP cache, bind-mounted) live in PGLOSS_FRESH_CACHE (default
 # /var/cache/pgloss-fresh; "none" for no cache): they save downloads but hold no installed
-# package, venv, built wheel or build tree, so they cannot hide a missing install.
+# package, venv, built wheel or build tree, so they cannot hide a missing install. (pip only
+# caches responses with caching headers; an egress proxy that strips them leaves it empty.)
 # The mounts (/proc, /sys, a private /dev with its own /dev/pts and /dev/shm, the caches)
 # live in a private mount and PID namespace: nothing stays mounted and nothing keeps running
 # when the run ends or is killed, and the root is deleted afterwards (PGLOSS_FRESH_KEEP=1
