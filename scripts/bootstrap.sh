@@ -6,6 +6,8 @@
 #   bootstrap.sh core    C compiler, CMake, Ninja (all the core needs)
 #   bootstrap.sh test    + GoogleTest, nlohmann-json, Python venv with pinned mpmath
 #   bootstrap.sh apt P…  + the Debian packages P… (what a layer's own script needs)
+#   bootstrap.sh fresh-root   only what scripts/fresh-debian.sh needs on the host (mmdebstrap,
+#                        git; no compiler: the project's own needs are installed in the root)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -15,7 +17,8 @@ case $mode in
   core) ;;
   test) want+=(g++ libgtest-dev nlohmann-json3-dev python3 python3-venv) ;;
   apt) shift; want+=("$@") ;;
-  *) echo "bootstrap: unknown mode '$mode' (core | test | apt PACKAGE…)" >&2; exit 2 ;;
+  fresh-root) want=(mmdebstrap git ca-certificates) ;;
+  *) echo "bootstrap: unknown mode '$mode' (core | test | apt PACKAGE… | fresh-root)" >&2; exit 2 ;;
 esac
 
 missing=()

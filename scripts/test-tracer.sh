@@ -8,8 +8,10 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PGLOSS_REQUIRE_ALL="${PGLOSS_REQUIRE_ALL:-1}"
-bash scripts/bootstrap.sh apt g++ pkg-config libembree-dev libopenimageio-dev libopencolorio-dev \
-  libglm-dev fonts-dejavu-core libgtest-dev povray
+# openimageio-tools: Debian's OpenImageIOTargets.cmake names its tools (/usr/bin/iconvert, …)
+# and find_package(OpenImageIO) fails without them.
+bash scripts/bootstrap.sh apt g++ pkg-config libembree-dev libopenimageio-dev openimageio-tools \
+  libopencolorio-dev libglm-dev fonts-dejavu-core libgtest-dev povray
 echo "== configure + build build-tracer-test"
 cmake --preset tracer-test >/dev/null
 cmake --build --preset tracer-test
