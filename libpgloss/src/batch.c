@@ -22,7 +22,7 @@ static pgloss__batch_consts make_consts(const pgloss_material *m, unsigned activ
                           : m->normalization == PGLOSS_NORM_BOUNDED ? 0.25 / (cm2 * cm2) /* 4/(2cm)⁴ */
                                                                     : 1.0 / cm;
     const double f_max = fmax(l->fd[0], fmax(l->fd[1], l->fd[2])) + (double)l->spec_scale * nn_max;
-    const double pdf_max = l->pd * PGLOSS_INV_PI + (double)l->ps * l->pdf2 * (0.5 / (cm2 * cm)); /* 4/(2cm)³ */
+    const double pdf_max = l->pdf_d + (double)l->pdf_s * (0.5 / (cm2 * cm)); /* 4/(2cm)³ */
     k.may_overflow = !(f_max <= 0.5 * FLT_MAX && pdf_max <= 0.5 * FLT_MAX);
     return k;
 }

@@ -75,7 +75,7 @@ PGLOSS_INLINE_FN int v_eval_pdf_block(const pgloss__batch_consts *restrict kb, c
     const pgloss__m upper = VBOTH_POSITIVE(co, ci);
     pgloss__v fs = VZERO(), p = VZERO();
     if ((active & PGLOSS_LOBE_DIFFUSE) && want_p) /* 2. diffuse pdf (f: at the stores) */
-        p = VMUL(V1(k->pd * PGLOSS_INL_INV_PI), ci);
+        p = VMUL(V1(k->pdf_d), ci);
     if (active & PGLOSS_LOBE_SPECULAR) {
         /* 3. h = s − (D/4) d, here as 4h = 4s − D d: the factor 4 (two exact doublings, on
          * the add pipes) cancels in the exponent and is taken back in the constants of hh. */
@@ -121,8 +121,8 @@ PGLOSS_INLINE_FN int v_eval_pdf_block(const pgloss__batch_consts *restrict kb, c
             if (kb->may_overflow)
                 fs = VMIN(fs, V1(FLT_MAX));
         }
-        if (want_p) /* 7. Walter 2005: pdf += Ps pdf2 e hh / hzc³ */
-            p = VFMADD(VMUL(V1(0.0625f * k->ps * k->pdf2), VMUL(e, hh16)),
+        if (want_p) /* 7. Walter 2005: pdf += Ps 2 pdf_scale e hh / hzc³ */
+            p = VFMADD(VMUL(V1(0.0625f * k->pdf_s), VMUL(e, hh16)),
                        VMUL(VMUL(inv_hzc, inv_hzc), inv_hzc), p);
     }
     /* 2., 8. f = ρd/π + fs above the horizon, 0 below; ρd/π + FLT_MAX rounds to FLT_MAX. */
