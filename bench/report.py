@@ -73,6 +73,8 @@ def main() -> int:
     d, dst = Path(sys.argv[1]), Path(sys.argv[2])
     core = (d / "core.md").read_text()
     peers = (d / "peers.md").read_text() if (d / "peers.md").exists() else "(peers not run)\n"
+    inline = "".join((d / f"inline_{v}.md").read_text() + "\n" for v in ("v3", "plain")
+                     if (d / f"inline_{v}.md").exists()) or "(bench_inline not run)\n"
     plot = pareto(d)
     rows = list(csv.DictReader(open(d / "core.csv")))
     def ns(fn, path, tier, isa, material="both"):
@@ -153,6 +155,13 @@ covers them).
 {targets}## The C core (`build-bench/bench/pgloss_bench_core`)
 
 {core}
+## One shading point (`bench/bench_inline.c`)
+
+Renderer-style loops over pgloss/inline.h, the scalar library call, the batch at n = 1 and 16,
+and a plain float transcription of eq. 2 (see the program's header for the loops). Regenerate
+with `bash bench/run.sh`; the critical path in cycles: `bash bench/mca.sh --inline`.
+
+{inline}
 ## Peers (`bench/peers.py`)
 
 {peers}"""
