@@ -5,16 +5,7 @@
  * well as through the header compiled as C++. */
 #include "pgloss/inline.h"
 
-pgloss_status pgloss_test_eval_inline_c99(const pgloss_material *m, pgloss_vec3 wo, pgloss_vec3 wi,
-                                          unsigned lobes, pgloss_rgb *f);
-pgloss_status pgloss_test_pdf_inline_c99(const pgloss_material *m, pgloss_vec3 wo, pgloss_vec3 wi,
-                                         unsigned lobes, float *pdf);
-pgloss_status pgloss_test_eval_pdf_inline_c99(const pgloss_material *m, pgloss_vec3 wo,
-                                              pgloss_vec3 wi, unsigned lobes, pgloss_rgb *f,
-                                              float *pdf);
-pgloss_status pgloss_test_sample_inline_c99(const pgloss_material *m, pgloss_vec3 wo,
-                                            const float u[3], unsigned lobes,
-                                            pgloss_sample_record *s);
+#include "test_inline_c99.h"
 
 pgloss_status pgloss_test_eval_inline_c99(const pgloss_material *m, pgloss_vec3 wo, pgloss_vec3 wi,
                                           unsigned lobes, pgloss_rgb *f)

@@ -41,17 +41,7 @@
 
 extern "C" {
 #include "pgloss/pgloss.h"
-// test_inline_c99.c: the inline functions compiled as C99.
-pgloss_status pgloss_test_eval_inline_c99(const pgloss_material *m, pgloss_vec3 wo, pgloss_vec3 wi,
-                                          unsigned lobes, pgloss_rgb *f);
-pgloss_status pgloss_test_pdf_inline_c99(const pgloss_material *m, pgloss_vec3 wo, pgloss_vec3 wi,
-                                         unsigned lobes, float *pdf);
-pgloss_status pgloss_test_eval_pdf_inline_c99(const pgloss_material *m, pgloss_vec3 wo,
-                                              pgloss_vec3 wi, unsigned lobes, pgloss_rgb *f,
-                                              float *pdf);
-pgloss_status pgloss_test_sample_inline_c99(const pgloss_material *m, pgloss_vec3 wo,
-                                            const float u[3], unsigned lobes,
-                                            pgloss_sample_record *s);
+#include "test_inline_c99.h"
 // test_vectors_shim.c: pgloss_physical_from_perceptual with the normalization as an int.
 pgloss_status pgloss_test_physical_from_perceptual(const pgloss_perceptual *q, int normalization,
                                                    pgloss_physical *p);
@@ -883,7 +873,11 @@ void check_sample(const json &doc, const std::string &fn, const json &c, const d
     }
 }
 
-TEST(Vectors, sample_scalar) {
+using sample_fn = pgloss_status (*)(const pgloss_material *, pgloss_vec3, const float[3], unsigned,
+                                     pgloss_sample_record *);
+
+// Every case of brdf_sample.json through one per-point sampler.
+void sample_cases(const char *fn, sample_fn call) {
     const json *doc = doc_or_fail("brdf_sample.json");
     if (!doc) return;
     const auto mats = materials_of(*doc);
@@ -897,44 +891,23 @@ TEST(Vectors, sample_scalar) {
             r.pdf = -1;
             r.weight = pgloss_rgb{-1, -1, -1};
             r.lobe = 77;
-            const pgloss_status st = pgloss_sample(&m, wo, u, c["input"]["lobes"].get<unsigned>(), &r);
-            check_status("sample", c, st);
+            const pgloss_status st = call(&m, wo, u, c["input"]["lobes"].get<unsigned>(), &r);
+            check_status(fn, c, st);
             const double wi[3] = {r.wi.x, r.wi.y, r.wi.z}, w[3] = {r.weight.r, r.weight.g, r.weight.b};
-            check_sample(*doc, "sample", c, wi, r.pdf, w, r.lobe);
+            check_sample(*doc, fn, c, wi, r.pdf, w, r.lobe);
         } catch (const std::exception &e) {
             ADD_FAILURE() << case_id(c) << ": malformed case: " << e.what();
         }
     }
 }
 
+TEST(Vectors, sample_scalar) { sample_cases("sample", pgloss_sample); }
+
 // pgloss/inline.h's sampler as C++ and as C99.
 TEST(Vectors, sample_inline) {
-    const json *doc = doc_or_fail("brdf_sample.json");
-    if (!doc) return;
-    const auto mats = materials_of(*doc);
-    for (int lang = 0; lang < 2; ++lang) {
-        const std::string fn = lang == 0 ? "sample_inline" : "sample_inline (C99)";
-        for (const auto &c : (*doc)["cases"]) {
-            try {
-                const pgloss_material &m = material_of(mats, c);
-                const pgloss_vec3 wo = vec3(c["input"]["wo"]);
-                const float u[3] = {numf(c["input"]["u"][0]), numf(c["input"]["u"][1]), numf(c["input"]["u"][2])};
-                const unsigned lobes = c["input"]["lobes"].get<unsigned>();
-                pgloss_sample_record r;
-                r.wi = pgloss_vec3{kNaNf, kNaNf, kNaNf};
-                r.pdf = -1;
-                r.weight = pgloss_rgb{-1, -1, -1};
-                r.lobe = 77;
-                const pgloss_status st = lang == 0 ? pgloss_sample_inline(&m, wo, u, lobes, &r)
-                                                   : pgloss_test_sample_inline_c99(&m, wo, u, lobes, &r);
-                check_status(fn, c, st);
-                const double wi[3] = {r.wi.x, r.wi.y, r.wi.z}, w[3] = {r.weight.r, r.weight.g, r.weight.b};
-                check_sample(*doc, fn, c, wi, r.pdf, w, r.lobe);
-            } catch (const std::exception &e) {
-                ADD_FAILURE() << case_id(c) << ": malformed case: " << e.what();
-            }
-        }
-    }
+    sample_cases("sample_inline", [](const pgloss_material *m, pgloss_vec3 wo, const float u[3], unsigned lobes,
+                                     pgloss_sample_record *s) { return pgloss_sample_inline(m, wo, u, lobes, s); });
+    sample_cases("sample_inline (C99)", pgloss_test_sample_inline_c99);
 }
 
 TEST(Vectors, sample_batch) {
