@@ -89,8 +89,9 @@ static ref_material ref_from(const pgloss_material *m)
     r.ax = m->alpha_x;
     r.ay = m->alpha_y;
     r.norm = (int)m->normalization;
-    /* Lobe selection by albedo: luminance of ρd (Rec. 709 weights) against ρs. */
-    const long double wd = 0.2126L * r.rd[0] + 0.7152L * r.rd[1] + 0.0722L * r.rd[2];
+    /* Lobe selection by albedo: luminance of ρd against ρs. The weights are the model's
+     * definition (pgloss/color.h), not part of what the reference checks. */
+    const long double wd = PGLOSS_LUMA_R * r.rd[0] + PGLOSS_LUMA_G * r.rd[1] + PGLOSS_LUMA_B * r.rd[2];
     r.ps = (wd + r.rs) > 0 ? r.rs / (wd + r.rs) : 0;
     return r;
 }

@@ -6,11 +6,8 @@
 #include <float.h>
 
 #include "batch_internal.h"
-#include "kernel_float.h"
+#include "pgloss/inline.h"
 
-#define COS_MIN_F ((float)PGLOSS_COS_MIN)
-#define UNIT_L2_LO (1.0f - 0x1p-20f)
-#define UNIT_L2_HI (1.0f + 0x1p-20f)
 #include "batch_avx512_fast.h"
 #include "batch_fast_block.h"
 

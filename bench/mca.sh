@@ -4,12 +4,29 @@
 # Static throughput of the FAST tier's AVX-512 eval block on AMD Zen 4 (llvm-mca 19): the
 # operation count and FP-pipe bound quoted in BENCHMARKS.md. Informational; not part of
 # bench/run.sh or the tests (it installs Debian's llvm-19 for llvm-mca).
-#   bash bench/mca.sh [CPU]      (default znver4)
+#   bash bench/mca.sh [CPU]            (default znver4)
+#   bash bench/mca.sh --inline [CPU]   pgloss/inline.h's eval_pdf and sample (bench/inline_mca.c)
+#                                      compiled -O2 -march=x86-64-v3 and -O2: throughput of
+#                                      independent calls, and one call's critical path
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/bootstrap.sh apt llvm-19
-cpu=${1:-znver4}
 mkdir -p out/bench
+if [[ ${1:-} == --inline ]]; then
+  cpu=${2:-znver4}
+  echo "| compiled | function | instructions | cycles per call, independent calls | critical path of one call (cycles) |"
+  echo "|---|---|---:|---:|---:|"
+  for flags in "-O2 -march=x86-64-v3" "-O2"; do
+    cc $flags -S -o out/bench/inline_mca.s -Ilibpgloss/include bench/inline_mca.c
+    llvm-mca-19 -mcpu="$cpu" -iterations=200 out/bench/inline_mca.s >out/bench/inline_mca_thr.txt
+    llvm-mca-19 -mcpu="$cpu" -iterations=1 out/bench/inline_mca.s >out/bench/inline_mca_lat.txt
+    paste <(awk '/Code Region - /{r=$NF} /^Instructions:/{i=$2} /^Total Cycles:/{print r, i / 200, $3 / 200}' out/bench/inline_mca_thr.txt) \
+          <(awk '/^Total Cycles:/{print $3}' out/bench/inline_mca_lat.txt) |
+      awk -v f="$flags" '{printf "| %s | %s | %.0f | %.1f | %d |\n", f, $1, $2, $3, $4}'
+  done
+  exit 0
+fi
+cpu=${1:-znver4}
 cc -O3 -S -o out/bench/fast_block_mca.s -Ilibpgloss/include -Ilibpgloss/src \
   -mavx2 -mfma -mavx512f -mavx512vl -mavx512dq -mavx512bw -mprefer-vector-width=512 \
   -fno-math-errno -fno-trapping-math -ffp-contract=off bench/fast_block_mca.c

@@ -73,6 +73,8 @@ def main() -> int:
     d, dst = Path(sys.argv[1]), Path(sys.argv[2])
     core = (d / "core.md").read_text()
     peers = (d / "peers.md").read_text() if (d / "peers.md").exists() else "(peers not run)\n"
+    inline = "".join((d / f"inline_{v}.md").read_text() + "\n" for v in ("v3", "plain", "mca")
+                     if (d / f"inline_{v}.md").exists()) or "(bench_inline not run)\n"
     plot = pareto(d)
     rows = list(csv.DictReader(open(d / "core.csv")))
     def ns(fn, path, tier, isa, material="both"):
@@ -100,8 +102,8 @@ def main() -> int:
 | scalar `eval` <= 10 ns | {scalar[0]:.1f} ns (double arithmetic inside) | {yes(scalar[0] <= 10.0)} |
 
 **Where the error comes from.** Every float kernel here computes eq. 2's exponent x =
-tan²δ/α² from a half vector that is free of cancellation (`kernel_eval_pdf` in
-`libpgloss/src/batch_isa.c`): for unit directions as every renderer passes them, the only
+tan²δ/α² from a half vector that is free of cancellation (`pgloss_inl_eval_pdf_unit` in
+`libpgloss/include/pgloss/inline.h`, docs/kernels.md): for unit directions as every renderer passes them, the only
 roundings left are relative to the small quantities themselves, and the error of f grows as
 about 2.5e-7 per unit of x, as it must for exp(-x) evaluated from a float x: merely rounding h
 and x to float, with every other step exact, costs up to {floor:.1e} on the same inputs (the
@@ -125,9 +127,8 @@ The core's peak, 48 single-precision flops per cycle with FMA and adds perfectly
 would be {76 / 48 / ghz:.2f} ns for 76 flops. The FLOAT tier keeps IEEE division and square root
 (two divisions and one square root per evaluation): the divider bounds it.
 
-The scalar functions are the double-precision reference; their fast path (ordinary inputs)
-needs one square root, one division and an inline exp, but a call is a dependency chain of
-about 70 cycles (root, division, exp) and ~100 instructions, and the loop with an empty
+The scalar functions are the double-precision reference (one path: both directions normalised,
+then the literal formulas); a call is a dependency chain of roots, divisions and an exp, and the loop with an empty
 call of the same signature already takes {empty:.1f} ns (the "(empty call)" row). For float speed on single evaluations, batch them:
 n = 16 already amortises the per-call overhead (see the size table).
 
@@ -153,6 +154,13 @@ covers them).
 {targets}## The C core (`build-bench/bench/pgloss_bench_core`)
 
 {core}
+## One shading point (`bench/bench_inline.c`)
+
+Renderer-style loops over pgloss/inline.h, the scalar library call, the batch at n = 1 and 16,
+and a plain float transcription of eq. 2 (see the program's header for the loops). Regenerate
+with `bash bench/run.sh`; the critical path in cycles: `bash bench/mca.sh --inline`.
+
+{inline}
 ## Peers (`bench/peers.py`)
 
 {peers}"""

@@ -13,6 +13,9 @@
 // and sens from the case. A summary of the largest errors per function and output is
 // printed to stdout at the end of the run.
 //
+// The BRDF cases also run through the header-only functions of pgloss/inline.h, compiled here
+// as C++ and in test_inline_c99.c as C99, with the tolerance of the file's float precision.
+//
 // A missing vectors directory, file or field is a failure, never a skip.
 
 #include <gtest/gtest.h>
@@ -34,8 +37,11 @@
 #include <utility>
 #include <vector>
 
+#include "pgloss/inline.h"
+
 extern "C" {
 #include "pgloss/pgloss.h"
+#include "test_inline_c99.h"
 // test_vectors_shim.c: pgloss_physical_from_perceptual with the normalization as an int.
 pgloss_status pgloss_test_physical_from_perceptual(const pgloss_perceptual *q, int normalization,
                                                    pgloss_physical *p);
@@ -696,6 +702,48 @@ TEST(Vectors, eval_pdf_scalar) {
     }
 }
 
+// pgloss/inline.h as C++ and as C99: eval, pdf and eval_pdf of every case.
+TEST(Vectors, eval_pdf_inline) {
+    const json *doc = doc_or_fail("brdf_eval.json");
+    if (!doc) return;
+    const auto mats = materials_of(*doc);
+    for (int lang = 0; lang < 2; ++lang) {
+        const std::string sfx = lang == 0 ? "_inline" : "_inline (C99)";
+        for (const auto &c : (*doc)["cases"]) {
+            try {
+                const pgloss_material &m = material_of(mats, c);
+                const pgloss_vec3 wo = vec3(c["input"]["wo"]), wi = vec3(c["input"]["wi"]);
+                const unsigned lobes = c["input"]["lobes"].get<unsigned>();
+                pgloss_rgb f{-1, -1, -1};
+                float pdf = -1;
+                check_status("eval" + sfx, c, lang == 0 ? pgloss_eval_inline(&m, wo, wi, lobes, &f)
+                                                        : pgloss_test_eval_inline_c99(&m, wo, wi, lobes, &f));
+                const Tol tf = tolerance(*doc, "eval", "f"), tp = tolerance(*doc, "pdf", "pdf");
+                const bool s = sanity_float(*doc, c);
+                auto check_rgb = [&](const std::string &fn, const pgloss_rgb &v) {
+                    const double got[3] = {v.r, v.g, v.b};
+                    for (int k = 0; k < 3; ++k)
+                        check(fn, "f", c, got[k], c["expected"]["f"][static_cast<size_t>(k)],
+                              sens_at(c, "f", k), tf, s, true);
+                };
+                check_rgb("eval" + sfx, f);
+                check_status("pdf" + sfx, c, lang == 0 ? pgloss_pdf_inline(&m, wo, wi, lobes, &pdf)
+                                                       : pgloss_test_pdf_inline_c99(&m, wo, wi, lobes, &pdf));
+                check("pdf" + sfx, "pdf", c, pdf, c["expected"]["pdf"], sens_at(c, "pdf", -1), tp, s, true);
+                f = pgloss_rgb{-1, -1, -1};
+                pdf = -1;
+                check_status("eval_pdf" + sfx, c,
+                             lang == 0 ? pgloss_eval_pdf_inline(&m, wo, wi, lobes, &f, &pdf)
+                                       : pgloss_test_eval_pdf_inline_c99(&m, wo, wi, lobes, &f, &pdf));
+                check_rgb("eval_pdf" + sfx, f);
+                check("eval_pdf" + sfx, "pdf", c, pdf, c["expected"]["pdf"], sens_at(c, "pdf", -1), tp, s, true);
+            } catch (const std::exception &e) {
+                ADD_FAILURE() << case_id(c) << ": malformed case: " << e.what();
+            }
+        }
+    }
+}
+
 // Cases grouped by (material, lobes), in file order; expected batch status: first non-OK.
 std::map<std::pair<std::string, unsigned>, std::vector<const json *>> groups_of(const json &doc) {
     std::map<std::pair<std::string, unsigned>, std::vector<const json *>> g;
@@ -825,7 +873,11 @@ void check_sample(const json &doc, const std::string &fn, const json &c, const d
     }
 }
 
-TEST(Vectors, sample_scalar) {
+using sample_fn = pgloss_status (*)(const pgloss_material *, pgloss_vec3, const float[3], unsigned,
+                                     pgloss_sample_record *);
+
+// Every case of brdf_sample.json through one per-point sampler.
+void sample_cases(const char *fn, sample_fn call) {
     const json *doc = doc_or_fail("brdf_sample.json");
     if (!doc) return;
     const auto mats = materials_of(*doc);
@@ -839,14 +891,23 @@ TEST(Vectors, sample_scalar) {
             r.pdf = -1;
             r.weight = pgloss_rgb{-1, -1, -1};
             r.lobe = 77;
-            const pgloss_status st = pgloss_sample(&m, wo, u, c["input"]["lobes"].get<unsigned>(), &r);
-            check_status("sample", c, st);
+            const pgloss_status st = call(&m, wo, u, c["input"]["lobes"].get<unsigned>(), &r);
+            check_status(fn, c, st);
             const double wi[3] = {r.wi.x, r.wi.y, r.wi.z}, w[3] = {r.weight.r, r.weight.g, r.weight.b};
-            check_sample(*doc, "sample", c, wi, r.pdf, w, r.lobe);
+            check_sample(*doc, fn, c, wi, r.pdf, w, r.lobe);
         } catch (const std::exception &e) {
             ADD_FAILURE() << case_id(c) << ": malformed case: " << e.what();
         }
     }
+}
+
+TEST(Vectors, sample_scalar) { sample_cases("sample", pgloss_sample); }
+
+// pgloss/inline.h's sampler as C++ and as C99.
+TEST(Vectors, sample_inline) {
+    sample_cases("sample_inline", [](const pgloss_material *m, pgloss_vec3 wo, const float u[3], unsigned lobes,
+                                     pgloss_sample_record *s) { return pgloss_sample_inline(m, wo, u, lobes, s); });
+    sample_cases("sample_inline (C99)", pgloss_test_sample_inline_c99);
 }
 
 TEST(Vectors, sample_batch) {

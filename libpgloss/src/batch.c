@@ -9,28 +9,20 @@
 static pgloss__batch_consts make_consts(const pgloss_material *m, unsigned active)
 {
     pgloss__batch_consts k;
-    for (int c = 0; c < 3; ++c)
-        k.fd[c] = (float)(m->rho_d[c] * PGLOSS_INV_PI);
-    k.spec_scale = m->spec_scale;
-    k.pdf2 = 2.0f * m->pdf_scale;
+    k.lobe = pgloss_inl_consts_of(m, active);
+    k.alpha_x = m->alpha_x;
+    k.alpha_y = m->alpha_y;
     const double ax2 = (double)m->alpha_x * m->alpha_x, ay2 = (double)m->alpha_y * m->alpha_y;
-    k.inv_ax2 = (float)(1.0 / ax2);
-    k.inv_ay2 = (float)(1.0 / ay2);
     k.inv_ax2_log2 = (float)(1.4426950408889634 / ax2); /* log2 e */
     k.inv_ay2_log2 = (float)(1.4426950408889634 / ay2);
-    const double g = fmax(1.0, fmax(m->alpha_x, m->alpha_y));
-    k.ax_g = (float)(m->alpha_x / g);
-    k.ay_g = (float)(m->alpha_y / g);
-    k.inv_g = (float)(1.0 / g);
-    k.ps = (float)pgloss__specular_probability_d(m, active);
-    k.pd = 1.0f - k.ps;
     /* The largest f and pdf over all directions: e <= 1, h·h <= 4, cosines >= COS_MIN. */
+    const pgloss_inl_consts *l = &k.lobe;
     const double cm = PGLOSS_COS_MIN, cm2 = cm * cm;
     const double nn_max = m->normalization == PGLOSS_NORM_WARD_DUR ? 1.0 / cm2
                           : m->normalization == PGLOSS_NORM_BOUNDED ? 0.25 / (cm2 * cm2) /* 4/(2cm)⁴ */
                                                                     : 1.0 / cm;
-    const double f_max = fmax(k.fd[0], fmax(k.fd[1], k.fd[2])) + (double)k.spec_scale * nn_max;
-    const double pdf_max = k.pd * PGLOSS_INV_PI + (double)k.ps * k.pdf2 * (0.5 / (cm2 * cm)); /* 4/(2cm)³ */
+    const double f_max = fmax(l->fd[0], fmax(l->fd[1], l->fd[2])) + (double)l->spec_scale * nn_max;
+    const double pdf_max = l->pdf_d + (double)l->pdf_s * (0.5 / (cm2 * cm)); /* 4/(2cm)³ */
     k.may_overflow = !(f_max <= 0.5 * FLT_MAX && pdf_max <= 0.5 * FLT_MAX);
     return k;
 }

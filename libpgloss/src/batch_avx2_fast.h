@@ -23,22 +23,18 @@ typedef __m256 pgloss__m;
 #define VMIN _mm256_min_ps
 #define VFMADD _mm256_fmadd_ps
 #define VFNMADD _mm256_fnmadd_ps
-#define VCMP(a, b, op) _mm256_cmp_ps(a, b, op)
-#define MAND(a, b) _mm256_and_ps(a, b)
 #define VKEEP(m, v) _mm256_and_ps(m, v) /* v where m, else 0 */
 #define VRSQRT_EST _mm256_rsqrt_ps
 #define VRCP_EST _mm256_rcp_ps
 #define VRCP_EST_BITS 11 /* relative error <= 1.5·2^-12 */
-/* g - floor(g), and p · 2^floor(g) for g >= -127: the float whose biased exponent is
- * floor(g) + 127, which is 0 (so the product is 0) at floor(g) = -127. */
+/* g - floor(g), and p · 2^floor(g) for g >= -127 (v_exp2_neg clamps g there): the float
+ * whose biased exponent is floor(g) + 127, which is 0 (so the product is 0) at -127. */
 #define VFRAC(g) _mm256_sub_ps(g, _mm256_floor_ps(g))
 #define VSCALE_FLOOR(p, g, frac)                                                                   \
     _mm256_mul_ps(p, _mm256_castsi256_ps(_mm256_slli_epi32(                                        \
                          _mm256_add_epi32(_mm256_cvtps_epi32(_mm256_sub_ps(g, frac)),              \
                                           _mm256_set1_epi32(127)),                                 \
                          23)))
-/* max(g, -127), with NaN to -127 too (maxps returns its second operand when one is NaN). */
-#define VEXP2_CLAMP(g) _mm256_max_ps(g, V1(-127.0f))
 /* a > 0 and b > 0, for floats that are not NaN: on the bits, a positive float is a positive
  * integer and -0 or a negative one is negative. */
 #define VBOTH_POSITIVE(a, b)                                                                       \
@@ -52,7 +48,7 @@ typedef __m256 pgloss__m;
 
 /* Whether every squared length of two blocks lies in [lo, hi] (positive normals): on the
  * bits, as signed integers, so that NaN and Inf fail too. */
-PGLOSS_INLINE int v_all_in(pgloss__v a, pgloss__v b, float lo, float hi)
+PGLOSS_INLINE_FN int v_all_in(pgloss__v a, pgloss__v b, float lo, float hi)
 {
     const __m256i ia = _mm256_castps_si256(a), ib = _mm256_castps_si256(b);
     const __m256i mn = _mm256_min_epi32(ia, ib), mx = _mm256_max_epi32(ia, ib);

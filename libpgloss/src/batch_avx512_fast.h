@@ -22,18 +22,15 @@ typedef __mmask16 pgloss__m;
 #define VMIN _mm512_min_ps
 #define VFMADD _mm512_fmadd_ps
 #define VFNMADD _mm512_fnmadd_ps
-#define VCMP(a, b, op) _mm512_cmp_ps_mask(a, b, op)
-#define MAND(a, b) ((pgloss__m)((a) & (b)))
 #define VKEEP(m, v) _mm512_maskz_mov_ps(m, v) /* v where m, else 0 */
 #define VRSQRT_EST _mm512_rsqrt14_ps
 #define VRCP_EST _mm512_rcp14_ps
 #define VRCP_EST_BITS 14
-/* g - floor(g), and p · 2^floor(g) for g >= -126, 0 below: results stay normal, as a
- * subnormal result costs a microcode assist on some cores (many times the whole block). */
+/* g - floor(g), and p · 2^floor(g) for g >= -127 (v_exp2_neg clamps g there), 0 at
+ * floor(g) = -127: scalef would give a subnormal there. */
 #define VFRAC(g) _mm512_reduce_ps(g, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC)
 #define VSCALE_FLOOR(p, g, frac)                                                                   \
     _mm512_maskz_scalef_ps(_mm512_cmp_ps_mask(g, V1(-126.0f), _CMP_GE_OQ), p, g)
-#define VEXP2_CLAMP(g) (g) /* -Inf and NaN fail the mask of VSCALE_FLOOR */
 /* a > 0 and b > 0, for floats that are not NaN: on the bits, a positive float is a positive
  * integer and -0 or a negative one is negative (integer ops leave the FP multiply pipes free). */
 #define VBOTH_POSITIVE(a, b)                                                                       \
@@ -47,7 +44,7 @@ typedef __mmask16 pgloss__m;
 
 /* Whether every squared length of two blocks lies in [lo, hi] (positive normals): on the
  * bits, as signed integers, so that NaN and Inf fail too. */
-PGLOSS_INLINE int v_all_in(pgloss__v a, pgloss__v b, float lo, float hi)
+PGLOSS_INLINE_FN int v_all_in(pgloss__v a, pgloss__v b, float lo, float hi)
 {
     const __m512i ia = _mm512_castps_si512(a), ib = _mm512_castps_si512(b);
     const __m512i mn = _mm512_min_epi32(ia, ib), mx = _mm512_max_epi32(ia, ib);

@@ -6,7 +6,7 @@
  * from its integer and fractional parts — no division and no square root, which bound the
  * FLOAT tier on these ISAs.
  *
- * Blocks of PGLOSS_VW whose directions are all near-unit (UNIT_L2_LO/HI of batch_isa.c)
+ * Blocks of PGLOSS_VW whose directions are all near-unit (pgloss_inl_near_unit)
  * take this path; any other block, and the tail, take the generic loop, which normalises
  * other directions and handles every edge as the FLOAT tier does. */
 #ifndef PGLOSS_BATCH_FAST_BLOCK_H
@@ -14,14 +14,14 @@
 
 /* 2/sqrt(x), x normal: estimate y + one Newton step without its factor 1/2, y (3 - x y²);
  * the caller absorbs the 2 (it is exact). */
-PGLOSS_INLINE pgloss__v v_rsqrt2(pgloss__v x)
+PGLOSS_INLINE_FN pgloss__v v_rsqrt2(pgloss__v x)
 {
     const pgloss__v y = VRSQRT_EST(x);
     return VMUL(y, VFNMADD(VMUL(x, y), y, V1(3.0f)));
 }
 
 /* 1/x, x normal: estimate + one Newton step r (2 - x r). */
-PGLOSS_INLINE pgloss__v v_rcp(pgloss__v x)
+PGLOSS_INLINE_FN pgloss__v v_rcp(pgloss__v x)
 {
     const pgloss__v r = VRCP_EST(x);
     return VMUL(r, VFNMADD(x, r, V1(2.0f)));
@@ -35,12 +35,13 @@ PGLOSS_INLINE pgloss__v v_rcp(pgloss__v x)
 #define RCP_FOR_QUOTIENT(x) v_rcp(x)
 #endif
 
-/* 2^g for g <= 0, 0 below -126 and for g = NaN: g = floor(g) + f, 2^f on [0, 1) by a
- * degree-5 polynomial with p(0) = 1, minimax in relative error (8.2e-8; 1.4e-7 as evaluated
- * with FMA). */
-PGLOSS_INLINE pgloss__v v_exp2_neg(pgloss__v g)
+/* 2^g for g <= 0, exactly 0 below -126 and for NaN on both ISAs (no subnormal result: it
+ * costs a microcode assist on some cores): g is clamped to -127 (maxps takes its second
+ * operand for NaN), and VSCALE_FLOOR gives 0 where floor(g) = -127. g = floor(g) + f, 2^f on
+ * [0, 1) by a degree-5 polynomial with p(0) = 1, minimax in relative error (8.2e-8). */
+PGLOSS_INLINE_FN pgloss__v v_exp2_neg(pgloss__v g)
 {
-    const pgloss__v gc = VEXP2_CLAMP(g);
+    const pgloss__v gc = VMAX(g, V1(-127.0f));
     const pgloss__v f = VFRAC(gc);
     pgloss__v p = V1(1.867124462e-03f);
     p = VFMADD(p, f, V1(9.017041884e-03f));
@@ -51,58 +52,59 @@ PGLOSS_INLINE pgloss__v v_exp2_neg(pgloss__v g)
     return VSCALE_FLOOR(p, gc, f);
 }
 
-/* PGLOSS_VW evaluations of kernel_eval_pdf (the same formulas: near-unit directions, the
- * cancellation-free half vector h = s − ((|i|² − |o|²)/4) d, 1/|v| = 1.5 − |v|²/2);
- * returns 0 (nothing written) if a direction is not near-unit (squared length within 2^-20
- * of 1, as every float unit vector is), for the generic loop to normalise. want_f / want_p
- * are constants of the caller's instance. */
-PGLOSS_INLINE int v_eval_pdf_block(const pgloss__batch_consts *restrict k, const unsigned active,
+/* PGLOSS_VW evaluations of pgloss_inl_eval_pdf_unit (pgloss/inline.h), step by step (the
+ * step numbers are that function's); returns 0 (nothing written) if a direction is not
+ * near-unit, for the generic loop to normalise. want_f / want_p are constants of the
+ * caller's instance. */
+PGLOSS_INLINE_FN int v_eval_pdf_block(const pgloss__batch_consts *restrict kb, const unsigned active,
                                    const int norm, const float *ox_, const float *oy_,
                                    const float *oz_, const float *ix_, const float *iy_,
                                    const float *iz_, float *fr_, float *fg_, float *fb_,
                                    float *pdf_, const int want_f, const int want_p)
 {
+    const pgloss_inl_consts *k = &kb->lobe;
     const pgloss__v ox = VLOAD(ox_), oy = VLOAD(oy_), oz = VLOAD(oz_);
     const pgloss__v ix = VLOAD(ix_), iy = VLOAD(iy_), iz = VLOAD(iz_);
     const pgloss__v lo2 = VFMADD(ox, ox, VFMADD(oy, oy, VMUL(oz, oz)));
     const pgloss__v li2 = VFMADD(ix, ix, VFMADD(iy, iy, VMUL(iz, iz)));
-    if (!v_all_in(lo2, li2, UNIT_L2_LO, UNIT_L2_HI))
+    if (!v_all_in(lo2, li2, PGLOSS_INL_UNIT_L2_LO, PGLOSS_INL_UNIT_L2_HI)) /* pgloss_inl_near_unit */
         return 0;
+    /* 1. ro, ri = 1.5 − |v|²/2; cosines; one-sided mask */
     const pgloss__v ro = VFNMADD(lo2, V1(0.5f), V1(1.5f)), ri = VFNMADD(li2, V1(0.5f), V1(1.5f));
-    const pgloss__v co = VMUL(oz, ro), ci = VMUL(iz, ri); /* cosθo, cosθi */
+    const pgloss__v co = VMUL(oz, ro), ci = VMUL(iz, ri);
     const pgloss__m upper = VBOTH_POSITIVE(co, ci);
     pgloss__v fs = VZERO(), p = VZERO();
-    if ((active & PGLOSS_LOBE_DIFFUSE) && want_p)
-        p = VMUL(V1(k->pd * PGLOSS_INV_PI_F), ci);
+    if ((active & PGLOSS_LOBE_DIFFUSE) && want_p) /* 2. diffuse pdf (f: at the stores) */
+        p = VMUL(V1(k->pdf_d), ci);
     if (active & PGLOSS_LOBE_SPECULAR) {
+        /* 3. h = s − (D/4) d, here as 4h = 4s − D d: the factor 4 (two exact doublings, on
+         * the add pipes) cancels in the exponent and is taken back in the constants of hh. */
         const pgloss__v sx = VADD(ix, ox), sy = VADD(iy, oy), sz = VADD(iz, oz);
         const pgloss__v dx = VSUB(ix, ox), dy = VSUB(iy, oy), dz = VSUB(iz, oz);
-        /* 4h = 4s − D d: the factor 4 (two exact doublings, on the add pipes) cancels in
-         * tan²δ and is taken back in the constants of h·h below. */
         const pgloss__v dd = VFMADD(dx, sx, VFMADD(dy, sy, VMUL(dz, sz)));
         const pgloss__v s2x = VADD(sx, sx), s2y = VADD(sy, sy), s2z = VADD(sz, sz);
         const pgloss__v hx = VFNMADD(dd, dx, VADD(s2x, s2x)), hy = VFNMADD(dd, dy, VADD(s2y, s2y));
         const pgloss__v hz = VFNMADD(dd, dz, VADD(s2z, s2z));
-        /* eq. 2's exponent in base 2: the constants carry log2 e. No clamp of hz²:
-         * where it underflows (both cosines below ~1e-19) the exponent is NaN or -Inf,
-         * which v_exp2_neg maps to 0, the value there. */
-        const pgloss__v t2 = VFMADD(VMUL(hx, hx), V1(k->inv_ax2_log2),
-                                    VMUL(VMUL(hy, hy), V1(k->inv_ay2_log2)));
-        /* -t2/hz² from a reciprocal estimate and one correction of the quotient itself,
-         * g = g0 − r (t2 + g0 hz²) (the residual is exact with FMA): within an ulp or so,
-         * where a Newton-refined reciprocal times t2 is ~3 ulp, i.e. 2e-7·x more error in f. */
+        /* 4. the exponent in base 2, (hx² log2e/αx² + hy² log2e/αy²)/hz², then 2^−x. No clamp
+         * of hz²: where it underflows (both cosines below ~1e-19) the exponent is NaN or -Inf,
+         * which v_exp2_neg maps to 0, the value there. The quotient: a reciprocal estimate and
+         * one correction of the quotient itself, g = g0 − r (t2 + g0 hz²) (exact residual with
+         * FMA): within an ulp or so. */
+        const pgloss__v t2 = VFMADD(VMUL(hx, hx), V1(kb->inv_ax2_log2),
+                                    VMUL(VMUL(hy, hy), V1(kb->inv_ay2_log2)));
         const pgloss__v hz2 = VMUL(hz, hz);
         const pgloss__v r = RCP_FOR_QUOTIENT(hz2);
         const pgloss__v g0 = VFNMADD(t2, r, VZERO());
         const pgloss__v e = v_exp2_neg(VFNMADD(VFMADD(g0, hz2, t2), r, g0));
-        const pgloss__v cic = VMAX_POS(ci, V1(COS_MIN_F)), coc = VMAX_POS(co, V1(COS_MIN_F));
-        pgloss__v hh16 = VZERO(), inv_hzc = VZERO(); /* 16 × unit h·h, and 1/hzc: pdf, BOUNDED */
+        /* 5. cosines raised to COS_MIN; 16 hh = |4h|² ro ri; 1/hzc */
+        const pgloss__v cic = VMAX_POS(ci, V1((float)PGLOSS_COS_MIN)), coc = VMAX_POS(co, V1((float)PGLOSS_COS_MIN));
+        pgloss__v hh16 = VZERO(), inv_hzc = VZERO();
         if (want_p || (want_f && norm == PGLOSS_NORM_BOUNDED)) {
             const pgloss__v h2 = VFMADD(hx, hx, VFMADD(hy, hy, VMUL(hz, hz)));
             hh16 = VMUL(h2, VMUL(ro, ri));
             inv_hzc = v_rcp(VADD(cic, coc));
         }
-        if (want_f) {
+        if (want_f) { /* 6. the normalisation, fs = spec_scale e norm */
             pgloss__v nn, scale = V1(k->spec_scale);
             if (norm == PGLOSS_NORM_WARD_DUR) { /* 1/(ci co) */
                 nn = v_rcp(VMUL(cic, coc));
@@ -114,17 +116,16 @@ PGLOSS_INLINE int v_eval_pdf_block(const pgloss__batch_consts *restrict k, const
                 nn = v_rsqrt2(VMUL(cic, coc));
                 scale = V1(0.5f * k->spec_scale);
             }
-            /* min(·, FLT_MAX): an overflow to Inf becomes FLT_MAX (only for materials whose
-             * f can overflow at all); finite input gives no NaN. */
+            /* 8. min(·, FLT_MAX), only for materials whose f can overflow at all */
             fs = VMUL(VMUL(scale, e), nn);
-            if (k->may_overflow)
+            if (kb->may_overflow)
                 fs = VMIN(fs, V1(FLT_MAX));
         }
-        if (want_p) /* Walter 2005: 2 pdf_scale e hh/hzc³ */
-            p = VFMADD(VMUL(V1(0.0625f * k->ps * k->pdf2), VMUL(e, hh16)),
+        if (want_p) /* 7. Walter 2005: pdf += Ps 2 pdf_scale e hh / hzc³ */
+            p = VFMADD(VMUL(V1(0.0625f * k->pdf_s), VMUL(e, hh16)),
                        VMUL(VMUL(inv_hzc, inv_hzc), inv_hzc), p);
     }
-    /* f = ρd/π + fs above the horizon, 0 below; ρd/π + FLT_MAX rounds to FLT_MAX. */
+    /* 2., 8. f = ρd/π + fs above the horizon, 0 below; ρd/π + FLT_MAX rounds to FLT_MAX. */
     if (want_f && active == PGLOSS_LOBE_ALL) {
         VSTORE(fr_, VADD_KEEP(upper, V1(k->fd[0]), fs));
         VSTORE(fg_, VADD_KEEP(upper, V1(k->fd[1]), fs));
@@ -139,7 +140,7 @@ PGLOSS_INLINE int v_eval_pdf_block(const pgloss__batch_consts *restrict k, const
         VSTORE(fb_, VKEEP(upper, fs));
     }
     if (want_p)
-        VSTORE(pdf_, VKEEP(upper, k->may_overflow ? VMIN(p, V1(FLT_MAX)) : p));
+        VSTORE(pdf_, VKEEP(upper, kb->may_overflow ? VMIN(p, V1(FLT_MAX)) : p));
     return 1;
 }
 

@@ -7,17 +7,13 @@
 
 #include <stddef.h>
 #include "pgloss/batch.h"
+#include "pgloss/inline.h"
 
 /* Per-call constants of the loops, derived from the material and the active lobes. */
 typedef struct pgloss__batch_consts {
-    float fd[3];            /* ρd/π */
-    float spec_scale, pdf2; /* the specular constant of eq. 2; 2 × its pdf's constant */
-    float inv_ax2, inv_ay2;           /* 1/α², rounded once */
+    pgloss_inl_consts lobe;           /* what the inline functions take (pgloss/inline.h) */
+    float alpha_x, alpha_y;           /* for the sampler */
     float inv_ax2_log2, inv_ay2_log2; /* log2(e)/α²: eq. 2's exponent in base 2 (FAST blocks) */
-    /* Half-vector sampling works on (αx/g, αy/g, 1/g), g = max(1, αx, αy): the same
-     * direction as (αx, αy, 1), without overflowing float for α up to FLT_MAX. */
-    float ax_g, ay_g, inv_g;
-    float ps, pd;           /* lobe-selection probabilities */
     int may_overflow;       /* f or pdf can exceed FLT_MAX/2 at some direction (FAST blocks) */
 } pgloss__batch_consts;
 

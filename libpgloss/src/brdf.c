@@ -1,29 +1,10 @@
 // SPDX-FileCopyrightText: 2026 The pgloss authors
 // SPDX-License-Identifier: Apache-2.0
 /* Scalar evaluation of the Ward BRDF (paper eq. 2 and its two later normalisations) and of
- * the sampling density. Double internally: this is the reference the float batches and the
- * shader ports are held to.
- *
- * Two paths compute the same formulas:
- *   - the general path (eval_pdf_general, pgloss__eval_pdf_d) normalises both directions and
- *     applies the COS_MIN clamps literally; it takes every input;
- *   - the fast path takes "regular" inputs — squared lengths in [2^-100, 2^100] and both
- *     cosines >= PGLOSS_COS_MIN (so no clamp is active) — and evaluates the same
- *     expressions without normalising the directions, using that everything but the
- *     diffuse pdf is a ratio of homogeneous polynomials in the unnormalised half vector:
- *       with S = |wo| |wi| = sqrt(|wo|² |wi|²) and H = wo S + wi |wo|² = |wo|² |wi| h,
- *       (h = wo/|wo| + wi/|wi|, the h of brdf.h), tan²δ = (Hx² + Hy²)/Hz², ci co = wo.z wi.z/S,
- *       (h·h)/hz⁴ = (H·H) |wo|⁴|wi|² / Hz⁴, (h·h)/hz³ = (H·H) |wo|²|wi|² / (Hz³ |wi|).
- *     f takes one division (1/(Hz² wo.z wi.z) gives both 1/Hz² and 1/(wo.z wi.z)) and the
- *     root S (plus sqrt(S wo.z wi.z) for eq. 2's normalisation); the pdf adds |wi| and a
- *     second division, 1/(Hz |wi| W) (W the lobe weights' sum). The general path takes four
- *     divisions and three roots for f, six and three for f and pdf. The ranges above keep
- *     every intermediate product within 2^±900, so nothing overflows or underflows; the
- *     result differs from the general path's only by rounding. Against a long-double
- *     transcription (2·10^6 random cases, tan²δ/α² <= 20) both are within 1e-15 typically;
- *     the worst case, grazing directions whose half vector's horizontal part cancels, is
- *     1.5e-12 here and 6e-13 in the general path.
- * Both paths use exp_parts below instead of libm's exp. */
+ * the sampling density. Double internally: this is the reference the float paths
+ * (pgloss/inline.h, the batches) and the shader ports are held to. One path: both directions
+ * are normalised (pgloss__normalize), then pgloss__eval_pdf_d applies the formulas of brdf.h
+ * literally, with exp_parts below instead of libm's exp. */
 #include <stdint.h>
 #include <string.h>
 #include "internal.h"
@@ -33,10 +14,8 @@
 
 #if defined(__GNUC__) || defined(__clang__)
 #define BRDF_INLINE static inline __attribute__((always_inline))
-#define BRDF_NOINLINE static __attribute__((noinline))
 #else
 #define BRDF_INLINE static inline
-#define BRDF_NOINLINE static
 #endif
 
 /* 2^(j/32), j = 0..31, correctly rounded (Python: float(Decimal(2) ** (Decimal(j) / 32)) at
@@ -148,10 +127,8 @@ void pgloss__eval_pdf_d(const pgloss_material *m, unsigned active, const double 
         *pdf = p;
 }
 
-/* Every input: normalise, then the literal formulas. */
-BRDF_NOINLINE pgloss_status eval_pdf_general(const pgloss_material *m, unsigned active,
-                                             pgloss_vec3 wo, pgloss_vec3 wi, double f[3],
-                                             double *pdf, double *cos_i)
+pgloss_status pgloss__eval_pdf_raw(const pgloss_material *m, unsigned active, pgloss_vec3 wo,
+                                   pgloss_vec3 wi, double f[3], double *pdf, double *cos_i)
 {
     double o[3], i[3];
     const int ok_o = pgloss__normalize(wo, o);
@@ -165,113 +142,6 @@ BRDF_NOINLINE pgloss_status eval_pdf_general(const pgloss_material *m, unsigned 
     if (cos_i)
         *cos_i = i[2];
     return PGLOSS_OK;
-}
-
-/* Squared lengths of the fast path (see the top of the file). */
-#define LEN2_MIN 0x1p-100
-#define LEN2_MAX 0x1p100
-
-/* f and pdf of the active lobes at the directions wo, wi as given (not yet normalised);
- * either output may be NULL (inlined with constant NULLs, the unused work disappears), and
- * each output is computed the same way whether or not the other one is asked for, so that
- * eval_pdf = (eval, pdf) and a sample's record = pdf/eval at its wi, bit for bit.
- * *cos_i (if cos_i and pdf are not NULL) receives wi.z/|wi| when the pdf is computed.
- * PGLOSS_ERR_DIRECTION (outputs 0) for a zero or non-finite direction. */
-BRDF_INLINE pgloss_status eval_pdf_body(const pgloss_material *m, unsigned active,
-                                        pgloss_vec3 wo, pgloss_vec3 wi, double f[3],
-                                        double *pdf, double *cos_i)
-{
-    const double ox = wo.x, oy = wo.y, oz = wo.z, ix = wi.x, iy = wi.y, iz = wi.z;
-    const double l2o = ox * ox + oy * oy + oz * oz, l2i = ix * ix + iy * iy + iz * iz;
-    /* Also false for zero, NaN and Inf: the general path sorts those out. */
-    if (!(l2o >= LEN2_MIN && l2o <= LEN2_MAX && l2i >= LEN2_MIN && l2i <= LEN2_MAX))
-        return eval_pdf_general(m, active, wo, wi, f, pdf, cos_i);
-    /* One-sided BRDF: wo.z, wi.z <= 0 (the sign survives normalisation) give 0. */
-    if (!(oz > 0.0 && iz > 0.0) || !active) {
-        if (f) f[0] = f[1] = f[2] = 0.0;
-        if (pdf) *pdf = 0.0;
-        return PGLOSS_OK;
-    }
-    /* Cosine below COS_MIN: the clamps apply; the general path has them. */
-    const double cos_min2 = (double)PGLOSS_COS_MIN * (double)PGLOSS_COS_MIN;
-    if (!(oz * oz >= cos_min2 * l2o && iz * iz >= cos_min2 * l2i))
-        return eval_pdf_general(m, active, wo, wi, f, pdf, cos_i);
-
-    const int diffuse = (active & PGLOSS_LOBE_DIFFUSE) != 0;
-    double fd[3] = {0.0, 0.0, 0.0};
-    if (f && diffuse)
-        for (int k = 0; k < 3; ++k)
-            fd[k] = m->rho_d[k] * PGLOSS_INV_PI;
-    if (!(active & PGLOSS_LOBE_SPECULAR)) { /* diffuse alone: f = ρd/π, pdf = ci/π */
-        if (f)
-            for (int k = 0; k < 3; ++k)
-                f[k] = fd[k];
-        if (pdf) {
-            const double ci = iz / sqrt(l2i);
-            *pdf = ci * PGLOSS_INV_PI;
-            if (cos_i)
-                *cos_i = ci;
-        }
-        return PGLOSS_OK;
-    }
-
-    const double s = sqrt(l2o * l2i); /* |wo| |wi| */
-    const double hx = ox * s + ix * l2o, hy = oy * s + iy * l2o, hz = oz * s + iz * l2o;
-    const double hz2 = hz * hz, b = oz * iz;
-    /* WARD's sqrt(S wo.z wi.z), ahead of the division in program order (it waits for S only) */
-    const int ward =
-        m->normalization != PGLOSS_NORM_WARD_DUR && m->normalization != PGLOSS_NORM_BOUNDED;
-    const double root_sb = (f && ward) ? sqrt(s * b) : 0.0;
-    const double rcp = 1.0 / (hz2 * b);     /* 1/(Hz² wo.z wi.z) */
-    const double inv_hz2 = rcp * b;
-    const double ex = hx * m->inv_alpha_x, ey = hy * m->inv_alpha_y;
-    double scale; /* exp(-tan²δ/α²) = scale · poly: eq. 2, anisotropic form (Ward 1992) */
-    const double poly = exp_parts(((ex * ex + ey * ey) * (NEG_32_OVER_LN2 * b)) * rcp, &scale);
-    const int bounded = m->normalization == PGLOSS_NORM_BOUNDED;
-    const double hh = (pdf || bounded) ? hx * hx + hy * hy + hz2 : 0.0;
-
-    if (f) {
-        double norm;
-        switch (m->normalization) {
-        case PGLOSS_NORM_WARD_DUR: /* Dür 2006: 1/(ci co) = S/(wo.z wi.z) */
-            norm = s * (rcp * hz2);
-            break;
-        case PGLOSS_NORM_BOUNDED: /* GM&D 2010: (h·h)/hz⁴ = (H·H)/Hz² · |wo|⁴|wi|²/Hz² */
-            norm = (hh * inv_hz2) * ((l2o * l2o * l2i) * inv_hz2);
-            break;
-        default: /* eq. 2: 1/sqrt(ci co) = sqrt(S wo.z wi.z) / (wo.z wi.z) */
-            norm = root_sb * (rcp * hz2);
-            break;
-        }
-        const double fs = ((m->spec_scale * norm) * scale) * poly;
-        for (int k = 0; k < 3; ++k)
-            f[k] = fd[k] + fs;
-    }
-    if (pdf) {
-        const double li = sqrt(l2i);
-        /* Second division: 1/(Hz |wi| W), W = wd + ws the lobe weights (1 for one lobe). */
-        const double wd = m->weight_diffuse, ws = m->weight_specular;
-        const double w = diffuse ? wd + ws : 1.0;
-        const double rcp2 = 1.0 / (hz * li * w);
-        const double inv_hzli = rcp2 * w;                 /* 1/(Hz |wi|) */
-        const double ci = iz * (inv_hzli * hz);           /* wi.z / |wi| */
-        /* Walter 2005: p(wi) = D(h) / (4 (wo·h)), and for unit wo, wi: wo·ĥ ĥz³ = hz³ / (2 h·h);
-         * (h·h)/hz³ = (H·H)/Hz² · 1/(Hz |wi|) · |wo|²|wi|². */
-        const double g = ((hh * inv_hz2) * inv_hzli) * (l2o * l2i);
-        double p = ((2.0 * m->pdf_scale * g) * scale) * poly;
-        if (diffuse) /* (1 - Ps) ci/π + Ps p_spec, Ps = ws/W (pgloss_specular_probability) */
-            p = (wd * (ci * PGLOSS_INV_PI) + ws * p) * (rcp2 * (hz * li));
-        if (cos_i)
-            *cos_i = ci;
-        *pdf = p;
-    }
-    return PGLOSS_OK;
-}
-
-pgloss_status pgloss__eval_pdf_raw(const pgloss_material *m, unsigned active, pgloss_vec3 wo,
-                                   pgloss_vec3 wi, double f[3], double *pdf, double *cos_i)
-{
-    return eval_pdf_body(m, active, wo, wi, f, pdf, cos_i);
 }
 
 static void store_rgb(pgloss_rgb *out, const double f[3])
@@ -290,13 +160,8 @@ pgloss_status pgloss_eval_pdf(const pgloss_material *m, pgloss_vec3 wo, pgloss_v
         return PGLOSS_ERR_NULL;
     double fv[3], p;
     const unsigned active = lobes & m->lobes & PGLOSS_LOBE_ALL;
-    pgloss_status st;
-    if (f && pdf)
-        st = eval_pdf_body(m, active, wo, wi, fv, &p, NULL);
-    else if (f)
-        st = eval_pdf_body(m, active, wo, wi, fv, NULL, NULL);
-    else
-        st = eval_pdf_body(m, active, wo, wi, NULL, &p, NULL);
+    const pgloss_status st =
+        pgloss__eval_pdf_raw(m, active, wo, wi, f ? fv : NULL, pdf ? &p : NULL, NULL);
     if (st != PGLOSS_OK)
         return st;
     if (f) store_rgb(f, fv);
@@ -314,7 +179,7 @@ pgloss_status pgloss_eval(const pgloss_material *m, pgloss_vec3 wo, pgloss_vec3 
         return PGLOSS_ERR_NULL;
     double fv[3];
     const pgloss_status st =
-        eval_pdf_body(m, lobes & m->lobes & PGLOSS_LOBE_ALL, wo, wi, fv, NULL, NULL);
+        pgloss__eval_pdf_raw(m, lobes & m->lobes & PGLOSS_LOBE_ALL, wo, wi, fv, NULL, NULL);
     if (st == PGLOSS_OK)
         store_rgb(f, fv);
     return st;
@@ -330,7 +195,7 @@ pgloss_status pgloss_pdf(const pgloss_material *m, pgloss_vec3 wo, pgloss_vec3 w
         return PGLOSS_ERR_NULL;
     double p;
     const pgloss_status st =
-        eval_pdf_body(m, lobes & m->lobes & PGLOSS_LOBE_ALL, wo, wi, NULL, &p, NULL);
+        pgloss__eval_pdf_raw(m, lobes & m->lobes & PGLOSS_LOBE_ALL, wo, wi, NULL, &p, NULL);
     if (st == PGLOSS_OK)
         *pdf = pgloss__to_float(p);
     return st;

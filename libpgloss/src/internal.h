@@ -55,8 +55,7 @@ void pgloss__eval_pdf_d(const pgloss_material *m, unsigned active, const double 
 
 /* f, pdf of the active lobes at directions wo, wi as the caller gave them (any length):
  * PGLOSS_ERR_DIRECTION, with f and pdf 0, for a zero or non-finite direction. Either output
- * may be NULL; *cos_i (cos_i may be NULL; only set when pdf is not) receives wi.z/|wi| where
- * the pdf is computed and positive-horizon. Fast for ordinary inputs (brdf.c). */
+ * may be NULL; *cos_i (cos_i may be NULL) receives wi.z/|wi| for valid directions. */
 pgloss_status pgloss__eval_pdf_raw(const pgloss_material *m, unsigned active, pgloss_vec3 wo,
                                    pgloss_vec3 wi, double f[3], double *pdf, double *cos_i);
 

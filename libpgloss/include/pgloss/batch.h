@@ -5,9 +5,9 @@
  *
  * Same semantics as the scalar functions of pgloss/brdf.h (normalisation of inputs,
  * one-sided BRDF, rejected samples, lobe masks), element by element, in float
- * arithmetic written so that the compiler vectorises the loops (no branches in the
- * loop bodies, restrict-qualified arrays, an inlined float exp). They agree with the
- * scalar reference within a few float ulps times the conditioning of exp (tests assert it).
+ * arithmetic: the per-point functions of pgloss/inline.h over the arrays, which the compiler
+ * vectorises. They agree with the scalar reference within a few float ulps times the
+ * conditioning of exp (tests assert it).
  *
  * The functions below run the float tier on the best instruction set of the running CPU;
  * the *_ex forms choose the tier and the instruction set explicitly (pgloss_batch_options).
@@ -53,23 +53,14 @@ PGLOSS_API pgloss_status pgloss_sample_batch(const pgloss_material *m, unsigned 
 
 /* ---- accuracy tiers and instruction sets --------------------------------------------- */
 
-/* How the batched loops compute. Maximum relative errors against a long-double reference
- * (bench/, listed in BENCHMARKS.md) on the regular range (specular exponent tan²δ/α² <= 10),
- * and against the shared vectors' exact values (tests/vectors):
- *   FLOAT      float arithmetic, IEEE division and square root, an exp within 2 ulp (the
- *              default). Unit directions (squared length within 2^-20 of 1, as every unit
- *              vector rounded to float is) enter the formulas as they are, with a half
- *              vector free of cancellation near the mirror direction; the error grows with
- *              the exponent as ~2.5e-7 per unit (5.4e-7 on the paper's Experiment 1
- *              material, 2.2e-6 for a specular lobe alone at exponent 10, where rounding
- *              the exponent to float alone costs 2.0e-6). Other directions are normalised
- *              first, which adds up to ~6e-8/α near the mirror direction;
- *   FAST       the same formulas with a degree-5 exp; on AVX2 and AVX-512, blocks of unit
- *              directions run in intrinsics with hardware reciprocal and rsqrt estimates
- *              and no division or square root (2.4x faster than FLOAT on AVX-512; 5.8e-7
- *              and 3.1e-6 in the two cases above);
- *   REFERENCE  the scalar functions (double arithmetic) element by element: the slowest,
- *              the most accurate (float rounding of the result). */
+/* How the batched loops compute (errors on the regular range and against the shared vectors:
+ * docs/kernels.md and BENCHMARKS.md):
+ *   FLOAT      the float lobe of pgloss/inline.h: IEEE division and square root, an exp within
+ *              2 ulp (the default);
+ *   FAST       on AVX2 and AVX-512, blocks of unit directions in intrinsics with hardware
+ *              reciprocal and rsqrt estimates and a degree-5 exp2, no division or square root;
+ *              elsewhere (other ISAs, tails, other directions, the sampler's directions) FLOAT;
+ *   REFERENCE  the scalar functions (double arithmetic) element by element. */
 typedef enum pgloss_precision {
     PGLOSS_PRECISION_FLOAT = 0,
     PGLOSS_PRECISION_FAST = 1,

@@ -19,11 +19,8 @@
  *       WARD, WARD_DUR   ci, co in the denominators below are max(ci, COS_MIN), max(co, COS_MIN);
  *       BOUNDED          (h.z)^4 in the denominator is hzc^4 (h·h uses the true h);
  *       pdf (every normalisation; it does not depend on the normalisation)
- *                        p_spec = E (h·h) / (2π αx αy hzc³), which equals pgloss_pdf's
- *                        formula below (wo·ĥ ĥz³ = h.z³ / (2 h·h) for unit wo, wi) when both
- *                        cosines >= COS_MIN, and is otherwise that formula with h.z -> hzc
- *                        (hzc - h.z < 2·COS_MIN, so the relative change is below
- *                        6·COS_MIN/h.z, and the value stays finite as both cosines -> 0⁺).
+ *                        p_spec = E (h·h) / (2π αx αy hzc³): pgloss_pdf's formula below
+ *                        (wo·ĥ ĥz³ = h.z³ / (2 h·h) for unit wo, wi) with h.z -> hzc.
  *     Outputs are finally clamped to at most FLT_MAX. So no finite input overflows to Inf;
  *   - eval returns the BRDF f, without the cosine factor.
  *
