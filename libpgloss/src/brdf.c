@@ -93,7 +93,11 @@ void pgloss__eval_pdf_d(const pgloss_material *m, unsigned active, const double 
         if (active & PGLOSS_LOBE_DIFFUSE) {
             for (int k = 0; k < 3; ++k)
                 fd[k] = m->rho_d[k] * PGLOSS_INV_PI;
-            p += (1.0 - ps) * i[2] * PGLOSS_INV_PI;
+            /* 1 − Ps as wd / (wd + ws), exact for a weak diffuse lobe too */
+            const double pd = active == PGLOSS_LOBE_ALL
+                                  ? m->weight_diffuse / ((double)m->weight_diffuse + m->weight_specular)
+                                  : 1.0;
+            p += pd * i[2] * PGLOSS_INV_PI;
         }
         if (active & PGLOSS_LOBE_SPECULAR) {
             const double hx = o[0] + i[0], hy = o[1] + i[1], hz = o[2] + i[2];

@@ -208,7 +208,11 @@ PGLOSS_INLINE_FN pgloss_inl_consts pgloss_inl_consts_of(const pgloss_material *m
     k.ps = active == PGLOSS_LOBE_SPECULAR ? 1.0f
            : active == PGLOSS_LOBE_ALL    ? ws / (wd + ws)
                                           : 0.0f;
-    k.pdf_d = (1.0f - k.ps) * PGLOSS_INL_INV_PI;
+    /* 1 − Ps as wd / (wd + ws): for a weak diffuse lobe (wd ≪ ws) 1 − Ps cancels in float */
+    const float pd = active == PGLOSS_LOBE_DIFFUSE ? 1.0f
+                     : active == PGLOSS_LOBE_ALL   ? wd / (wd + ws)
+                                                   : 0.0f;
+    k.pdf_d = pd * PGLOSS_INL_INV_PI;
     k.pdf_s = k.ps * (2.0f * m->pdf_scale);
     return k;
 }
