@@ -14,4 +14,5 @@ bash scripts/test-glsl.sh
 bash scripts/test-osl.sh
 bash scripts/test-tracer.sh
 bash scripts/test-web.sh
+bash scripts/test-experiment.sh
 echo "== every test passed ($((SECONDS - start)) s)"
