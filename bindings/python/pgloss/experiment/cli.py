@@ -15,7 +15,7 @@ import signal
 import sys
 from pathlib import Path
 
-from .stimuli import SpecError
+from .manifest import SpecError
 
 
 def _size(text: str):
@@ -63,11 +63,13 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Runs the ``experiment`` subcommand; returns the exit status."""
-    from .stimuli import load_manifest, render, sha256
+    from .manifest import load_manifest, sha256
     from .store import Store, StoreError
 
     try:
         if args.action == "stimuli":
+            from .stimuli import render
+
             path = render(args.spec, args.out, tracer=args.tracer, scene=args.scene, size=args.size, spp=args.spp,
                           seed=args.seed, threads=args.threads)
             print(f"manifest: {path}")

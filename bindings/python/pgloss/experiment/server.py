@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import functools
 import hmac
+import csv
 import io
 import json
 import mimetypes
@@ -34,7 +35,6 @@ import re
 import secrets
 import sys
 import tempfile
-from http import HTTPStatus
 from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
 from pathlib import Path
 from typing import Any, Dict, List, Optional, Tuple
@@ -207,6 +207,8 @@ class Handler(BaseHTTPRequestHandler):
         url = urlsplit(self.path)
         path, query = url.path, parse_qs(url.query)
         ex = self.experiment
+        if path == "/favicon.ico":
+            return self._send(204, b"", "image/x-icon")
         if path in ("/", "/index.html"):
             return self._static("index.html")
         if path == "/experimenter":
@@ -264,7 +266,6 @@ class Handler(BaseHTTPRequestHandler):
             rows = [r for r in ex.store.responses("pairs") if r["subject"] == m.group(2)]
             if not rows:
                 raise BadRequest(404, f"no pair ratings from subject {m.group(2)}")
-            import csv
             buf = io.StringIO()
             csv.writer(buf, lineterminator="\r\n").writerows(proximity_rows(rows, ex.ids))
             data = buf.getvalue().encode()
@@ -279,7 +280,7 @@ class Handler(BaseHTTPRequestHandler):
 def make_server(manifest: dict, db: Path, *, host: str = "127.0.0.1", port: int = 8000, token: Optional[str] = None,
                 display: Optional[Tuple[int, int]] = None, quiet: bool = False) -> Tuple[ThreadingHTTPServer, str]:
     """The server (not yet serving) and the experimenter's token."""
-    from .stimuli import sha256
+    from .manifest import sha256
 
     store = Store(db, sha256(Path(manifest["path"])), [s["id"] for s in manifest["stimuli"]])
     r = manifest["renderer"]

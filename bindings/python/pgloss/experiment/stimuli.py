@@ -20,7 +20,6 @@ settings; the server refuses images whose hash no longer matches.
 
 from __future__ import annotations
 
-import hashlib
 import itertools
 import json
 import os
@@ -34,24 +33,14 @@ import numpy as np
 
 import pgloss
 
+from .manifest import SpecError, sha256
+
 MANIFEST_VERSION = 1
 #: Experiment 1's levels (§3.2.3.1).
 FIG4 = {"rho_d": [0.03, 0.193, 0.767], "rho_s": [0.033, 0.066, 0.099], "alpha": [0.04, 0.07, 0.10]}
 PHYSICAL = ("rho_d", "rho_s", "alpha")
 PERCEPTUAL = ("L", "c", "d")
 _PAINT = re.compile(r"^\s*material\s+paint\b.*$", re.MULTILINE)
-
-
-class SpecError(ValueError):
-    """A stimulus SPEC that cannot be used; the message names the reason."""
-
-
-def sha256(path: Path) -> str:
-    h = hashlib.sha256()
-    with open(path, "rb") as f:
-        for block in iter(lambda: f.read(1 << 16), b""):
-            h.update(block)
-    return h.hexdigest()
 
 
 def parse_spec(spec: Optional[str]) -> Dict[str, List[float]]:
@@ -165,23 +154,3 @@ def render(spec: Optional[str], outdir: Path, *, tracer: Optional[str] = None, s
     path = outdir / "manifest.json"
     path.write_text(json.dumps(manifest, indent=1) + "\n", encoding="utf-8")
     return path
-
-
-def load_manifest(path: Path, *, verify: bool = True) -> dict:
-    """Reads and checks a manifest: ids unique, the images present and (verify) unchanged."""
-    try:
-        m = json.loads(Path(path).read_text(encoding="utf-8"))
-        ids = [s["id"] for s in m["stimuli"]]
-        w, h = int(m["renderer"]["width"]), int(m["renderer"]["height"])
-    except (OSError, ValueError, KeyError, TypeError) as e:
-        raise SpecError(f"{path}: not a stimulus manifest ({e})") from None
-    if len(set(ids)) != len(ids) or len(ids) < 3 or w < 1 or h < 1:
-        raise SpecError(f"{path}: want ≥ 3 stimuli with unique ids")
-    for s in m["stimuli"]:
-        if not re.fullmatch(r"[A-Za-z0-9_-]{1,32}", s["id"]) or "/" in s["file"] or s["file"].startswith("."):
-            raise SpecError(f"{path}: bad stimulus id or file name {s['id']!r} {s['file']!r}")
-        img = Path(path).parent / s["file"]
-        if verify and (not img.is_file() or sha256(img) != s["sha256"]):
-            raise SpecError(f"{img}: missing or changed since the manifest was written (SHA-256 differs)")
-    m["path"] = str(Path(path).resolve())
-    return m
