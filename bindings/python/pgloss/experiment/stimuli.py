@@ -112,7 +112,10 @@ def render(spec: Optional[str], outdir: Path, *, tracer: Optional[str] = None, s
            log=print) -> Path:
     """Renders the stimulus set of SPEC into outdir; returns the manifest's path."""
     exe = find_tracer(tracer)
-    scene = Path(scene) if scene else Path(__file__).resolve().parents[4] / "examples/tracer/scenes/stimulus.scene"
+    if scene is None:  # the repository's Fig. 4 environment: from the working directory or this source tree
+        rel = Path("examples/tracer/scenes/stimulus.scene")
+        scene = next((p for p in (rel, Path(__file__).resolve().parents[4] / rel) if p.is_file()), rel)
+    scene = Path(scene)
     if not scene.is_file():
         raise SpecError(f"no scene file {scene} (give --scene)")
     text = scene.read_text(encoding="utf-8")
