@@ -277,6 +277,13 @@ class Handler(BaseHTTPRequestHandler):
         self._send(200, data, "text/csv; charset=utf-8", {"Content-Disposition": f'attachment; filename="{name}"'})
 
 
+class _Server(ThreadingHTTPServer):
+    daemon_threads = True
+    # The default listen backlog (5) overflows when a room of browsers (or the concurrency test's
+    # 20 threads) connect at once; the kernel then drops or resets connections.
+    request_queue_size = 128
+
+
 def make_server(manifest: dict, db: Path, *, host: str = "127.0.0.1", port: int = 8000, token: Optional[str] = None,
                 display: Optional[Tuple[int, int]] = None, quiet: bool = False) -> Tuple[ThreadingHTTPServer, str]:
     """The server (not yet serving) and the experimenter's token."""
@@ -285,8 +292,7 @@ def make_server(manifest: dict, db: Path, *, host: str = "127.0.0.1", port: int 
     store = Store(db, sha256(Path(manifest["path"])), [s["id"] for s in manifest["stimuli"]])
     r = manifest["renderer"]
     ex = Experiment(manifest, store, token or secrets.token_urlsafe(16), display or (r["width"], r["height"]))
-    server = ThreadingHTTPServer((host, port), Handler)
-    server.daemon_threads = True
+    server = _Server((host, port), Handler)
     real_port = server.server_address[1]
     loopback = host in ("127.0.0.1", "localhost", "::1")
     hosts = None
