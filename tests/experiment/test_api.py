@@ -47,6 +47,26 @@ def test_manifest(manifest: Path):
     assert abs(116 * m["stimuli"][0]["rho_d"] ** (1 / 3) - 16 - 51) < 1e-6
 
 
+def test_fig4_default_and_json_spec(tmp_path: Path):
+    """Without SPEC the set is Fig. 4's 27 paints (§3.2.3.1, levels from the paper's text); a JSON
+    file works as a SPEC. Rendered tiny (16 × 12, 1 spp): this checks the set, not the images."""
+    from conftest import ROOT, TRACER
+    scene = str(ROOT / "examples/tracer/scenes/stimulus.scene")
+    pgloss_cli("experiment", "stimuli", "--out", str(tmp_path / "fig4"), "--tracer", TRACER, "--size", "16x12",
+               "--spp", "1", "--scene", scene)
+    m = json.loads((tmp_path / "fig4/manifest.json").read_text())
+    got = sorted((s["rho_d"], s["rho_s"], s["alpha"]) for s in m["stimuli"])
+    assert got == sorted(itertools.product((0.03, 0.193, 0.767), (0.033, 0.066, 0.099), (0.04, 0.07, 0.10)))
+    assert m["spec"] == "fig4" and len({s["sha256"] for s in m["stimuli"]}) == 27
+    spec = tmp_path / "grid.json"
+    spec.write_text(json.dumps({"rho_d": [0.193], "rho_s": [0.033, 0.099], "alpha": [0.04, 0.1]}))
+    pgloss_cli("experiment", "stimuli", str(spec), "--out", str(tmp_path / "json"), "--tracer", TRACER,
+               "--size", "16x12", "--spp", "1", "--scene", scene)
+    m = json.loads((tmp_path / "json/manifest.json").read_text())
+    assert len(m["stimuli"]) == 4 and (tmp_path / "json/scenes/s04.scene").read_text().count(
+        "material paint physical rho_d=0.193 rho_s=0.099 alpha=0.1") == 1
+
+
 def test_bad_specs(tmp_path: Path):
     for spec, why in (("rho_d=0.1 c=0.2", "want exactly"), ("L=50 c=x d=0.9", "numbers"),
                       ("L=50 c=0.05 d=0.9", "at least 3"), ("rho_d=0.9 rho_s=0.5,0.6,0.7 alpha=0.05", "rho")):
@@ -125,7 +145,7 @@ def test_bad_requests_store_nothing(manifest: Path, server_factory, tmp_path: Pa
     assert again["sitting"] != ses["sitting"]
 
 
-def test_database_bound_to_manifest(manifest: Path, tmp_path: Path):
+def test_database_bound_to_manifest(manifest: Path, server_factory, tmp_path: Path):
     """A database that holds another stimulus set's responses is refused, not mixed."""
     other = tmp_path / "other"
     other.mkdir()
@@ -135,14 +155,17 @@ def test_database_bound_to_manifest(manifest: Path, tmp_path: Path):
         (other / s["file"]).write_bytes((manifest.parent / s["file"]).read_bytes())
     (other / "manifest.json").write_text(json.dumps(m))
     db = tmp_path / "db.sqlite"
+    run = pgloss_cli("experiment", "export", str(manifest), "--db", str(db), "--out", str(tmp_path / "e"), check=False)
+    assert run.returncode == 2 and "no database" in run.stderr
+    server_factory(manifest, db).start().stop()  # creates the database, bound to this manifest
     assert pgloss_cli("experiment", "export", str(manifest), "--db", str(db), "--out", str(tmp_path / "e")).returncode == 0
     run = pgloss_cli("experiment", "export", str(other / "manifest.json"), "--db", str(db), "--out",
                      str(tmp_path / "e"), check=False)
     assert run.returncode == 2 and "another stimulus set" in run.stderr
     # A changed image is refused too.
     (other / m["stimuli"][0]["file"]).write_bytes(b"\x89PNG not the same")
-    run = pgloss_cli("experiment", "export", str(other / "manifest.json"), "--db", str(tmp_path / "n.sqlite"),
-                     "--out", str(tmp_path / "e"), check=False)
+    run = pgloss_cli("experiment", "serve", str(other / "manifest.json"), "--db", str(tmp_path / "n.sqlite"),
+                     "--port", "0", check=False, timeout=60)
     assert run.returncode == 2 and "SHA-256" in run.stderr
 
 

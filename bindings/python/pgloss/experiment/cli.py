@@ -79,6 +79,9 @@ def run(args: argparse.Namespace) -> int:
         if args.action == "export":
             from .export import export
 
+            if not db.is_file():
+                raise SpecError(f"no database {db} (give --db)")
+
             store = Store(db, sha256(args.manifest), [s["id"] for s in manifest["stimuli"]])
             for p in export(store, manifest, args.out):
                 print(p)
