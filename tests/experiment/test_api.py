@@ -18,7 +18,7 @@ from typing import List
 import numpy as np
 import pytest
 
-from conftest import PY, TOKEN, pgloss_cli
+from conftest import LEVELS_C, LEVELS_D, MAGNITUDE, N, PAIRS, PY, TOKEN, pgloss_cli
 
 
 def stored(db: Path) -> List[tuple]:
@@ -31,8 +31,8 @@ def test_manifest(manifest: Path):
     parameters give the requested (c, d) by eqs. 3–4, computed here independently of pgloss."""
     m = json.loads(manifest.read_text())
     assert m["renderer"]["width"] == 48 and m["renderer"]["height"] == 36 and m["renderer"]["spp"] == 16
-    assert len(m["stimuli"]) == 9
-    wanted = set(itertools.product((0.04, 0.08, 0.12), (0.90, 0.93, 0.96)))
+    assert len(m["stimuli"]) == N
+    wanted = set(itertools.product(LEVELS_C, LEVELS_D))
     got = set()
     for s in m["stimuli"]:
         png = (manifest.parent / s["file"]).read_bytes()
@@ -79,7 +79,7 @@ def test_bad_specs(tmp_path: Path):
 def test_bad_requests_store_nothing(manifest: Path, server_factory, tmp_path: Path):
     srv = server_factory(manifest).start()
     status, ses = srv.request("/api/session", {"subject": "alice", "procedure": "pairs"})
-    assert status == 200 and len(ses["trials"]) == 36 and ses["done"] == []
+    assert status == 200 and len(ses["trials"]) == PAIRS and ses["done"] == []
     t0 = ses["trials"][0]
     good = {"sitting": ses["sitting"], "subject": "alice", "procedure": "pairs", "trial": 0, "stimuli": t0,
             "rating": 40, "rt_ms": 1234.5}
@@ -101,7 +101,7 @@ def test_bad_requests_store_nothing(manifest: Path, server_factory, tmp_path: Pa
         ("rt negative", bad(rt_ms=-1), 400), ("rt huge", bad(rt_ms=1e12), 400),
         ("unknown stimulus", bad(stimuli=[t0[0], "s99"]), 404), ("stimuli not strings", bad(stimuli=[1, 2]), 404),
         ("left/right swapped", bad(stimuli=t0[::-1]), 409), ("another trial's stimuli", bad(trial=1), 409),
-        ("trial -1", bad(trial=-1), 404), ("trial 36", bad(trial=36), 404),
+        ("trial -1", bad(trial=-1), 404), ("trial past the end", bad(trial=PAIRS), 404),
         ("unknown sitting", bad(sitting=10**6), 404), ("another subject's sitting", bad(sitting=other["sitting"]), 404),
         ("procedure mismatch", bad(procedure="magnitude"), 404),
         ("extra field", bad(admin=True), 400), ("missing rating", bad(rating=KeyError), 400),
@@ -138,7 +138,7 @@ def test_bad_requests_store_nothing(manifest: Path, server_factory, tmp_path: Pa
     assert stored(srv.db) == [("alice", "pairs", 0, ",".join(t0), 40)]
     status, prog = srv.request(f"/api/progress?token={TOKEN}")
     assert status == 200 and {(p["subject"], p["responses"], p["trials"]) for p in prog["subjects"]} == {
-        ("alice", 1, 36), ("bob", 0, 36)}
+        ("alice", 1, PAIRS), ("bob", 0, PAIRS)}
     # Resuming: the same seed and trials, the trial done reported.
     status, again = srv.request("/api/session", {"subject": "alice", "procedure": "pairs"})
     assert again["seed"] == ses["seed"] and again["trials"] == ses["trials"] and again["done"] == [0]
@@ -242,8 +242,8 @@ def test_seed_reproduces_trial_order(manifest: Path, server_factory):
         if procedure == "pairs":
             for ses in (a, b):
                 assert sorted(tuple(sorted(t)) for t in ses["trials"]) == sorted(itertools.combinations(ids, 2))
-                assert 0 < sum(t[0] < t[1] for t in ses["trials"]) < 36
+                assert 0 < sum(t[0] < t[1] for t in ses["trials"]) < PAIRS
         else:
             for ses in (a, b):
                 flat = [t[0] for t in ses["trials"]]
-                assert len(flat) == 27 and all(sorted(flat[k:k + 9]) == sorted(ids) for k in (0, 9, 18))
+                assert len(flat) == MAGNITUDE and all(sorted(flat[k:k + N]) == sorted(ids) for k in (0, N, 2 * N))

@@ -23,7 +23,7 @@ import numpy as np
 import pytest
 from playwright.sync_api import Browser, Page, sync_playwright
 
-from conftest import OUT, TOKEN, pgloss_cli
+from conftest import MAGNITUDE, N, OUT, PAIRS, TOKEN, pgloss_cli
 
 CHROMIUM = os.environ.get("PGLOSS_CHROMIUM", "/usr/bin/chromium")
 FLAGS = ["--headless=new", "--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--no-sandbox",
@@ -54,11 +54,12 @@ class Observer:
         self.answers: Dict[Tuple[str, int], int] = {}  # (procedure, trial) → rating given
         self.shown: Dict[str, List[str]] = {"pairs": [], "magnitude": []}
         self.page: Page = None  # type: ignore[assignment]
+        self.checked = False
 
     def rating(self, stimuli: List[str]) -> int:
         if len(stimuli) == 2:
             (c1, d1), (c2, d2) = self.cd[stimuli[0]], self.cd[stimuli[1]]
-            value = 500.0 * np.hypot(c1 - c2, D_WEIGHT * (d1 - d2))  # the grid's largest ΔD ≈ 0.13 → 65
+            value = 500.0 * np.hypot(c1 - c2, D_WEIGHT * (d1 - d2))  # the grid's largest ΔD ≈ 0.14 → 70
         else:
             c, d = self.cd[stimuli[0]]
             value = 100.0 * (0.5 * (c - 0.02) / 0.12 + 0.5 * (d - 0.87) / 0.12)
@@ -67,6 +68,7 @@ class Observer:
     def open(self, browser: Browser, url: str, procedure: str) -> None:
         # bypass_csp: Playwright's wait_for_function evaluates strings, which the page's CSP forbids.
         self.page = browser.new_page(viewport={"width": 1000, "height": 700}, bypass_csp=True)
+        self.checked = False
         self.page.goto(f"{url}/?procedure={procedure}")
         self.page.wait_for_function("document.body.dataset.ready === '1'")
         self.page.fill("#subject", self.name)
@@ -99,17 +101,23 @@ class Observer:
     def answer(self, procedure: str, submit: bool = True) -> Tuple[str, List[str], int]:
         """Answers the trial on screen; returns (label, stimuli, rating)."""
         page = self.page
-        assert self.screen() == "trial"
-        label = page.evaluate("document.body.dataset.trialLabel")
-        stimuli = page.eval_on_selector_all("#images img", "els => els.map(e => e.dataset.stimulus)")
-        assert page.is_disabled("#next"), "Next must wait for a slider movement"
-        assert page.inner_text("#readout") == "–"
-        # The paper's display: the images at their fixed size, on black, nothing else but the scale.
-        sizes = page.eval_on_selector_all("#images img", "els => els.map(e => [e.width, e.height, e.naturalWidth])")
-        assert all(s == [48, 36, 48] for s in sizes)
-        assert page.evaluate("getComputedStyle(document.body).backgroundColor") == "rgb(0, 0, 0)"
-        low = "0, small difference" if procedure == "pairs" else "0, not glossy"
-        assert page.inner_text("#label-low") == low
+        state = page.evaluate("""() => ({screen: document.body.dataset.screen, label: document.body.dataset.trialLabel,
+            stimuli: [...document.querySelectorAll('#images img')].map(e => e.dataset.stimulus),
+            disabled: document.getElementById('next').disabled,
+            readout: document.getElementById('readout').textContent})""")
+        assert state["screen"] == "trial"
+        label, stimuli = state["label"], state["stimuli"]
+        assert state["disabled"] and state["readout"] == "–", "Next must wait for a slider movement"
+        if not self.checked:  # once per page: the paper's display, images at a fixed size on black
+            sizes = page.eval_on_selector_all("#images img", "els => els.map(e => [e.width, e.height, e.naturalWidth])")
+            assert sizes == [[48, 36, 48]] * (2 if procedure == "pairs" else 1)
+            assert page.evaluate("getComputedStyle(document.body).backgroundColor") == "rgb(0, 0, 0)"
+            low = "0, small difference" if procedure == "pairs" else "0, not glossy"
+            assert page.inner_text("#label-low") == low
+            visible = page.evaluate("""() => [...document.querySelectorAll('body *')].filter(e =>
+                e.offsetParent !== null && !e.children.length && e.textContent.trim()).map(e => e.id)""")
+            assert sorted(visible) == ["label-high", "label-low", "next", "progress", "readout"], visible
+            self.checked = True
         rating = self.rating(stimuli)
         self.set_slider(rating)
         if submit:
@@ -164,31 +172,34 @@ def test_full_loop(manifest: Path, server_factory, browser: Browser, tmp_path: P
     o1.open(browser, srv.url, "pairs")
     o1.begin()
     o1.practice("pairs")
-    for _ in range(18):
-        assert o1.main_trial("pairs", 36)
-    assert o1.page.evaluate("document.body.dataset.acked") == "18"
+    half = PAIRS // 2
+    for _ in range(half):
+        assert o1.main_trial("pairs", PAIRS)
+    assert o1.page.evaluate("document.body.dataset.acked") == str(half)
     assert {t: r for t, (_, r) in db_rows(db, "obs1", "pairs").items()} == {
-        t: o1.answers[("pairs", t)] for t in range(18)}
+        t: o1.answers[("pairs", t)] for t in range(half)}
     label, shown, rating = o1.answer("pairs", submit=False)
+    o1.page.screenshot(path=str(OUT / "trial-pairs.png"))
     srv.kill()
-    o1.page.click("#next")  # the answer to trial 18 is now in flight to a dead server
+    o1.page.click("#next")  # the answer to trial `half` is now in flight to a dead server
     o1.page.wait_for_selector("#connection", state="visible")
-    assert o1.page.evaluate("document.body.dataset.pending") == "18"
+    assert o1.page.evaluate("document.body.dataset.pending") == str(half)
     o1.record("pairs", shown, rating)
     before = db_rows(db, "obs1", "pairs")
-    assert len(before) == 18 and all(before[t][1] == o1.answers[("pairs", t)] for t in range(18))
+    assert len(before) == half and all(before[t][1] == o1.answers[("pairs", t)] for t in range(half))
     srv.start()  # same port, same database
-    o1.page.wait_for_function("document.body.dataset.acked === '19'", timeout=30000)
+    o1.page.wait_for_function("n => document.body.dataset.acked === String(n)", arg=half + 1, timeout=30000)
     o1.page.wait_for_selector("#connection", state="hidden")
     after = db_rows(db, "obs1", "pairs")
-    assert len(after) == 19 and all(after[t] == before[t] for t in before) and after[18] == (",".join(shown), rating)
-    # The subject's browser is closed; they come back in a new page and resume at trial 20.
+    assert len(after) == half + 1 and all(after[t] == before[t] for t in before)
+    assert after[half] == (",".join(shown), rating)
+    # The subject's browser is closed; they come back in a new page and resume after the last one stored.
     o1.page.close()
     o1.open(browser, srv.url, "pairs")
-    assert o1.page.is_visible("#instructions-resume") and o1.page.inner_text("#resume-done") == "19"
+    assert o1.page.is_visible("#instructions-resume") and o1.page.inner_text("#resume-done") == str(half + 1)
     o1.begin()
-    assert o1.page.evaluate("document.body.dataset.trialLabel") == "20 of 36"
-    while o1.main_trial("pairs", 36):
+    assert o1.page.evaluate("document.body.dataset.trialLabel") == f"{half + 2} of {PAIRS}"
+    while o1.main_trial("pairs", PAIRS):
         pass
 
     # Observers 2 and 3 at the same time, trial by trial.
@@ -196,7 +207,7 @@ def test_full_loop(manifest: Path, server_factory, browser: Browser, tmp_path: P
         o.open(browser, srv.url, "pairs")
         o.begin()
         o.practice("pairs")
-    while any([o.main_trial("pairs", 36) for o in obs[1:]]):
+    while any([o.main_trial("pairs", PAIRS) for o in obs[1:]]):
         pass
 
     # --- magnitude estimation: all three at once.
@@ -205,12 +216,12 @@ def test_full_loop(manifest: Path, server_factory, browser: Browser, tmp_path: P
         o.open(browser, srv.url, "magnitude")
         o.begin()
         o.practice("magnitude")
-    while any([o.main_trial("magnitude", 27) for o in obs]):
+    while any([o.main_trial("magnitude", MAGNITUDE) for o in obs]):
         pass
 
     # Every answer is in the database, once, as given, in the order shown.
     for o in obs:
-        for procedure, n in (("pairs", 36), ("magnitude", 27)):
+        for procedure, n in (("pairs", PAIRS), ("magnitude", MAGNITUDE)):
             rows = db_rows(db, o.name, procedure)
             assert len(rows) == n
             assert rows == {t: (o.shown[procedure][t], o.answers[(procedure, t)]) for t in range(n)}
@@ -231,6 +242,7 @@ def test_full_loop(manifest: Path, server_factory, browser: Browser, tmp_path: P
     view.goto(f"{srv.url}/experimenter?token={TOKEN}")
     view.wait_for_function("document.body.dataset.loaded === '1'")
     assert view.locator("#progress tbody tr.complete").count() == 6
+    view.screenshot(path=str(OUT / "experimenter.png"))
     http_csv = view.request.get(f"{srv.url}/export/pairs/obs1.csv?token={TOKEN}").text()
     view.close()
     for o in obs:
@@ -253,15 +265,14 @@ def test_full_loop(manifest: Path, server_factory, browser: Browser, tmp_path: P
             assert mat[a, b] == o.answers[("pairs", t)]
     with (out / "magnitude.csv").open() as f:
         mag = list(csv.DictReader(f))
-    assert len(mag) == 81
+    assert len(mag) == 3 * MAGNITUDE
     for r in mag:
         o = obs[int(r["subject"][3:]) - 1]
         t = int(r["trial"])
         assert r["stimulus"] == o.shown["magnitude"][t] and int(r["rating"]) == o.answers[("magnitude", t)]
-        assert int(r["repetition"]) == t // 9 + 1
-    # --max-dims 3: 9 stimuli cannot support a non-metric 4-D solution (Kruskal & Wish: more than 4
-    # stimuli per dimension); with 4 the last drop measured 30–56 %, noise fitted by a near-degenerate
-    # configuration, and no elbow could ever be "confirmed" by it.
+        assert int(r["repetition"]) == t // N + 1
+    # --max-dims 3: 12 stimuli support at most a 2- or 3-D non-metric solution (Kruskal & Wish: about
+    # 4 stimuli per dimension); a 4-D fit is near-degenerate (with 9 stimuli its drop measured 30–56 %).
     run = pgloss_cli("mds", *(str(out / "pairs" / f"{o.name}.csv") for o in obs), "--max-dims", "3",
                      "--stimuli", str(out / "stimuli.csv"), "--out", str(OUT / "mds"))
     print(run.stdout)

@@ -47,12 +47,22 @@ async function persist(path, body) {
   }
 }
 
-function loadImage(id) {
-  const img = new Image(config.width, config.height);
-  img.alt = "";
-  img.dataset.stimulus = id;
-  img.src = `/stimuli/${encodeURIComponent(id)}`;
-  return img.decode().then(() => img);
+// Loads one stimulus; like persist(), waits out a server that is down instead of failing the trial.
+async function loadImage(id) {
+  for (;;) {
+    const img = new Image(config.width, config.height);
+    img.alt = "";
+    img.dataset.stimulus = id;
+    img.src = `/stimuli/${encodeURIComponent(id)}`;
+    try {
+      await img.decode();
+      $("connection").classList.add("hidden");
+      return img;
+    } catch (e) {
+      $("connection").classList.remove("hidden");
+      await new Promise((ok) => setTimeout(ok, RETRY_MS));
+    }
+  }
 }
 
 // One trial: shows the images, waits for a slider movement and Next; resolves to {rating, rt_ms}.
