@@ -42,6 +42,8 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     s.add_argument("--spp", type=int, default=256, help="samples per pixel (default 256)")
     s.add_argument("--seed", type=int, default=1, help="the renderer's seed")
     s.add_argument("--threads", type=int, help="render threads (default: all)")
+    s.add_argument("--dry-run", action="store_true", help="print the stimuli (CSV: id, rho_d, rho_s, alpha, L, c, d) "
+                   "and render nothing")
 
     v = sub.add_parser("serve", help="the local web server that runs both procedures",
                        description="Serves the experiment: subjects open http://HOST:PORT/, the experimenter "
@@ -68,8 +70,13 @@ def run(args: argparse.Namespace) -> int:
 
     try:
         if args.action == "stimuli":
-            from .stimuli import render
+            from .stimuli import paints, parse_spec, render
 
+            if args.dry_run:
+                print("id,rho_d,rho_s,alpha,L,c,d")
+                for i, p in enumerate(paints(parse_spec(args.spec))):
+                    print(f"s{i + 1:02d}," + ",".join(f"{p[k]:.9g}" for k in ("rho_d", "rho_s", "alpha", "L", "c", "d")))
+                return 0
             path = render(args.spec, args.out, tracer=args.tracer, scene=args.scene, size=args.size, spp=args.spp,
                           seed=args.seed, threads=args.threads)
             print(f"manifest: {path}")
