@@ -16,7 +16,6 @@ from pathlib import Path
 from typing import List
 
 import numpy as np
-import pytest
 
 from conftest import LEVELS_C, LEVELS_D, MAGNITUDE, N, PAIRS, PY, TOKEN, pgloss_cli
 

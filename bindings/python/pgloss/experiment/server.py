@@ -26,6 +26,7 @@ without a CORS preflight, which is never granted.
 from __future__ import annotations
 
 import functools
+import hashlib
 import hmac
 import csv
 import io
@@ -42,6 +43,7 @@ from urllib.parse import parse_qs, urlsplit
 
 from . import design
 from .export import export, proximity_rows
+from .manifest import SpecError
 from .store import Conflict, Store
 
 STATIC = Path(__file__).resolve().parent / "static"
@@ -77,7 +79,14 @@ class Experiment:
         self.token = token
         self.ids: List[str] = [s["id"] for s in manifest["stimuli"]]
         self.folder = Path(manifest["path"]).parent
-        self.files = {s["id"]: self.folder / s["file"] for s in manifest["stimuli"]}
+        # The images are read once, checked against the manifest's hashes and served from memory:
+        # what a subject sees is what the manifest describes, even if a file changes later.
+        self.files: Dict[str, bytes] = {}
+        for s in manifest["stimuli"]:
+            data = (self.folder / s["file"]).read_bytes()
+            if hashlib.sha256(data).hexdigest() != s["sha256"]:
+                raise SpecError(f"{self.folder / s['file']}: changed since the manifest was written (SHA-256 differs)")
+            self.files[s["id"]] = data
         self.display = display
 
     @functools.lru_cache(maxsize=256)
@@ -142,10 +151,10 @@ class Handler(BaseHTTPRequestHandler):
         self.send_response(status)
         self.send_header("Content-Type", ctype)
         self.send_header("Content-Length", str(len(body)))
-        self.send_header("Cache-Control", "no-store")
-        self.send_header("X-Content-Type-Options", "nosniff")
-        self.send_header("Content-Security-Policy", "default-src 'self'; img-src 'self'; frame-ancestors 'none'")
-        for k, v in (extra or {}).items():
+        headers = {"Cache-Control": "no-store", "X-Content-Type-Options": "nosniff",
+                   "Content-Security-Policy": "default-src 'self'; img-src 'self'; frame-ancestors 'none'"}
+        headers.update(extra or {})
+        for k, v in headers.items():
             self.send_header(k, v)
         self.end_headers()
         if self.command != "HEAD":
@@ -221,7 +230,7 @@ class Handler(BaseHTTPRequestHandler):
             sid = path[len("/stimuli/"):]
             if sid not in ex.files:
                 raise BadRequest(404, "unknown stimulus id")
-            return self._send(200, ex.files[sid].read_bytes(), "image/png", {"Cache-Control": "max-age=3600"})
+            return self._send(200, ex.files[sid], "image/png", {"Cache-Control": "max-age=3600"})
         if path == "/api/config":
             r = ex.manifest["renderer"]
             return self._json(200, {"stimuli": ex.ids, "width": ex.display[0], "height": ex.display[1],

@@ -150,7 +150,7 @@ def render(spec: Optional[str], outdir: Path, *, tracer: Optional[str] = None, s
     manifest = {
         "version": MANIFEST_VERSION,
         "spec": spec or "fig4",
-        "renderer": {"program": "pgloss-tracer", "scene": scene.name, "width": w, "height": h, "spp": spp,
+        "renderer": {"program": "pgloss-tracer", "scene": scene.name, "scene_sha256": sha256(scene), "width": w, "height": h, "spp": spp,
                      "seed": seed, "pgloss": pgloss.__version__},
         "stimuli": stimuli,
     }
