@@ -46,8 +46,10 @@ class Observer:
 
     def __init__(self, name: str, stimuli: Dict[str, dict], seed: int, noise: float):
         self.name = name
-        self.rng = np.random.default_rng(seed)
+        self.seed = seed
         self.noise = noise
+        self.index = {k: i for i, k in enumerate(stimuli)}
+        self.seen: Dict[str, int] = {}  # magnitude: how often each stimulus was rated in main trials
         # (c, d) from the manifest's physical parameters by eqs. 3–4, independently of pgloss.
         self.cd = {k: (float(np.cbrt(s["rho_s"] + s["rho_d"] / 2) - np.cbrt(s["rho_d"] / 2)), 1 - s["alpha"])
                    for k, s in stimuli.items()}
@@ -56,14 +58,25 @@ class Observer:
         self.page: Page = None  # type: ignore[assignment]
         self.checked = False
 
-    def rating(self, stimuli: List[str]) -> int:
+    def rating(self, stimuli: List[str], practice: bool = False) -> int:
+        """The model's answer plus noise. The noise is a function of the pair (or of the stimulus and
+        its repetition), not of the order, so that the ratings — and so the MDS — do not depend on
+        the random trial order: the test is deterministic."""
+        key = sorted(self.index[s] for s in stimuli)
+        if len(stimuli) == 1:
+            if practice:
+                key.append(99)
+            else:
+                key.append(self.seen.get(stimuli[0], 0))
+                self.seen[stimuli[0]] = key[-1] + 1
+        noise = np.random.default_rng([self.seed, *key]).normal(0.0, self.noise)
         if len(stimuli) == 2:
             (c1, d1), (c2, d2) = self.cd[stimuli[0]], self.cd[stimuli[1]]
             value = 500.0 * np.hypot(c1 - c2, D_WEIGHT * (d1 - d2))  # the grid's largest ΔD ≈ 0.14 → 70
         else:
             c, d = self.cd[stimuli[0]]
             value = 100.0 * (0.5 * (c - 0.02) / 0.12 + 0.5 * (d - 0.87) / 0.12)
-        return int(np.clip(round(value + self.rng.normal(0.0, self.noise)), 0, 100))
+        return int(np.clip(round(value + noise), 0, 100))
 
     def open(self, browser: Browser, url: str, procedure: str) -> None:
         # bypass_csp: Playwright's wait_for_function evaluates strings, which the page's CSP forbids.
@@ -98,7 +111,7 @@ class Observer:
             page.keyboard.press("ArrowRight" if shown < value else "ArrowLeft")
         raise AssertionError(f"the slider did not reach {value}")
 
-    def answer(self, procedure: str, submit: bool = True) -> Tuple[str, List[str], int]:
+    def answer(self, procedure: str, submit: bool = True, practice: bool = False) -> Tuple[str, List[str], int]:
         """Answers the trial on screen; returns (label, stimuli, rating)."""
         page = self.page
         state = page.evaluate("""() => ({screen: document.body.dataset.screen, label: document.body.dataset.trialLabel,
@@ -118,7 +131,7 @@ class Observer:
                 e.offsetParent !== null && !e.children.length && e.textContent.trim()).map(e => e.id)""")
             assert sorted(visible) == ["label-high", "label-low", "next", "progress", "readout"], visible
             self.checked = True
-        rating = self.rating(stimuli)
+        rating = self.rating(stimuli, practice)
         self.set_slider(rating)
         if submit:
             self.next(label)
@@ -131,7 +144,7 @@ class Observer:
 
     def practice(self, procedure: str) -> None:
         for k in range(3):
-            label, _, _ = self.answer(procedure)
+            label, _, _ = self.answer(procedure, practice=True)
             assert label == f"practice {k + 1} of 3"
         assert self.screen() == "interlude"
         self.page.click("#interlude-button")
