@@ -73,8 +73,9 @@ def run(args: argparse.Namespace) -> int:
             from .stimuli import paints, parse_spec, render
 
             if args.dry_run:
+                rows = paints(parse_spec(args.spec))  # errors before any output
                 print("id,rho_d,rho_s,alpha,L,c,d")
-                for i, p in enumerate(paints(parse_spec(args.spec))):
+                for i, p in enumerate(rows):
                     print(f"s{i + 1:02d}," + ",".join(f"{p[k]:.9g}" for k in ("rho_d", "rho_s", "alpha", "L", "c", "d")))
                 return 0
             path = render(args.spec, args.out, tracer=args.tracer, scene=args.scene, size=args.size, spp=args.spp,
