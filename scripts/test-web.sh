@@ -34,14 +34,7 @@ cmake -S . -B build-tracer-test -G Ninja -DCMAKE_BUILD_TYPE=Release -DPGLOSS_BUI
 cmake --build build-tracer-test --target pgloss-tracer >/dev/null
 
 venv=.venv-web
-pins=(playwright==1.49.1 pytest==8.3.4 numpy==2.2.1)
-if [[ ! -x $venv/bin/python ]] || [[ "$(cat "$venv/.pgloss-pins" 2>/dev/null)" != "${pins[*]}" ]]; then
-  echo "== creating $venv (${pins[*]})"
-  rm -rf "$venv"
-  /usr/bin/python3 -m venv "$venv"
-  PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 "$venv/bin/pip" install -q --disable-pip-version-check "${pins[@]}"
-  echo "${pins[*]}" >"$venv/.pgloss-pins"
-fi
+bash scripts/venv-web.sh
 
 echo "== pytest tests/web (headless Chromium $(chromium --version 2>/dev/null | awk '{print $2}'), SwiftShader)"
 export PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1

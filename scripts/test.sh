@@ -15,6 +15,7 @@ bash scripts/test-glsl.sh
 bash scripts/test-osl.sh
 bash scripts/test-tracer.sh
 bash scripts/test-web.sh
+bash scripts/test-experiment.sh
 bash scripts/test-tsan.sh
 bash scripts/fuzz.sh "${PGLOSS_FUZZ_SECONDS:-30}"
 echo "== every test passed ($((SECONDS - start)) s)"

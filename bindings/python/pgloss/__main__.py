@@ -6,7 +6,9 @@ Commands (``python -m pgloss COMMAND --help`` for each):
 
 * ``figures OUTDIR`` — the paper's Figs. 9, 10 and 11, computed by the library (below);
 * ``mds …`` — the paper's MDS analysis (§3) on proximity matrices in CSV
-  (:mod:`pgloss.psychophysics.cli`).
+  (:mod:`pgloss.psychophysics.cli`);
+* ``experiment stimuli|serve|export …`` — run the paper's experiments in a browser
+  (:mod:`pgloss.experiment.cli`).
 
 A command is one entry of :data:`COMMANDS`: its name, help line, a function that adds its
 arguments to an ``argparse`` parser and one that runs it (imported only when it is used).
@@ -193,6 +195,18 @@ def _mds_run(args: argparse.Namespace) -> int:
     return cli.run(args)
 
 
+def _experiment_arguments(p: argparse.ArgumentParser) -> None:
+    from .experiment import cli
+
+    cli.add_arguments(p)
+
+
+def _experiment_run(args: argparse.Namespace) -> int:
+    from .experiment import cli
+
+    return cli.run(args)
+
+
 class Command(NamedTuple):
     """One subcommand: name, help line, argument set-up and runner (returns the exit status)."""
 
@@ -210,6 +224,10 @@ COMMANDS: Tuple[Command, ...] = (
     Command("mds", "MDS analysis of proximity matrices (CSV): stress curve, dimensionality, weighted Euclidean "
             "non-metric fit, confirmatory MDS; --example cities reproduces Figs. 2 and 3", _mds_arguments, _mds_run,
             "The paper's §3 analysis on proximity matrices, one CSV per subject (see pgloss.psychophysics.cli)."),
+    Command("experiment", "run the paper's experiments: render stimuli (stimuli), the browser experiment "
+            "(serve), proximity matrices and magnitude table (export)", _experiment_arguments, _experiment_run,
+            "Pairwise gloss differences (§3.2.3) and magnitude estimation (§3.3.3) in a browser, stored in "
+            "SQLite (see pgloss.experiment)."),
 )
 
 

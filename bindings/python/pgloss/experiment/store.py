@@ -1,0 +1,162 @@
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
+"""The response store: SQLite in WAL mode, every response committed before it is acknowledged.
+
+Durability. ``journal_mode=WAL`` lets the experimenter's view and the export read while subjects
+write, and a killed process loses nothing that was committed. ``synchronous=FULL`` also fsyncs
+the WAL at every commit, so a response survives a power cut or OS crash once the subject's
+browser has its acknowledgement (with NORMAL, WAL commits since the last checkpoint can be lost
+then). The cost, one fsync per response, is milliseconds against a subject's seconds per trial.
+
+Idempotence. ``UNIQUE(subject, procedure, trial)``: a repeated submission of the same trial
+with the same answer (a browser retrying after a lost acknowledgement) is a no-op; a different
+answer to a trial already recorded is a conflict, and the first answer stays.
+
+Each request opens its own connection (``sqlite3`` connections are not shared between threads);
+writers serialise on SQLite's lock (``BEGIN IMMEDIATE``, 30 s busy timeout).
+"""
+
+from __future__ import annotations
+
+import json
+import secrets
+import sqlite3
+import time
+from contextlib import contextmanager
+from pathlib import Path
+from typing import Dict, Iterator, List, Optional, Sequence
+
+SCHEMA = """
+CREATE TABLE IF NOT EXISTS meta (key TEXT PRIMARY KEY, value TEXT NOT NULL);
+CREATE TABLE IF NOT EXISTS subjects (
+  subject TEXT NOT NULL, procedure TEXT NOT NULL, seed INTEGER NOT NULL, created_at TEXT NOT NULL,
+  PRIMARY KEY (subject, procedure));
+CREATE TABLE IF NOT EXISTS sittings (
+  id INTEGER PRIMARY KEY, subject TEXT NOT NULL, procedure TEXT NOT NULL, started_at TEXT NOT NULL,
+  client TEXT NOT NULL, FOREIGN KEY (subject, procedure) REFERENCES subjects (subject, procedure));
+CREATE TABLE IF NOT EXISTS responses (
+  subject TEXT NOT NULL, procedure TEXT NOT NULL, trial INTEGER NOT NULL,
+  stimuli TEXT NOT NULL,              -- the ids shown, left to right, comma-separated
+  rating INTEGER NOT NULL CHECK (rating BETWEEN 0 AND 100),
+  rt_ms REAL NOT NULL CHECK (rt_ms >= 0),
+  received_at TEXT NOT NULL,          -- UTC, ISO 8601, when the server committed it
+  sitting INTEGER NOT NULL REFERENCES sittings (id),
+  UNIQUE (subject, procedure, trial),
+  FOREIGN KEY (subject, procedure) REFERENCES subjects (subject, procedure));
+"""
+
+
+class StoreError(Exception):
+    """The database does not belong to this manifest, or is unusable."""
+
+
+class Conflict(Exception):
+    """A trial already has a different answer."""
+
+
+def utc_now() -> str:
+    t = time.time()
+    return time.strftime("%Y-%m-%dT%H:%M:%S", time.gmtime(t)) + f".{int(t % 1 * 1000):03d}Z"
+
+
+class Store:
+    """The experiment's database at ``path``, bound to one stimulus manifest."""
+
+    def __init__(self, path: Path, manifest_sha256: str, stimulus_ids: Sequence[str]):
+        self.path = Path(path)
+        with self._connect() as db:
+            db.execute("PRAGMA journal_mode=WAL")
+            db.executescript(SCHEMA)
+            row = db.execute("SELECT value FROM meta WHERE key='manifest_sha256'").fetchone()
+            if row is None:
+                db.execute("INSERT INTO meta VALUES ('manifest_sha256', ?), ('stimuli', ?), ('created_at', ?)",
+                           (manifest_sha256, json.dumps(list(stimulus_ids)), utc_now()))
+            elif row[0] != manifest_sha256:
+                raise StoreError(f"{path} holds responses to another stimulus set (manifest SHA-256 {row[0][:12]}…, "
+                                 f"this one {manifest_sha256[:12]}…): use a new database")
+
+    @contextmanager
+    def _connect(self) -> Iterator[sqlite3.Connection]:
+        db = sqlite3.connect(self.path, timeout=30.0, isolation_level=None)
+        try:
+            db.execute("PRAGMA synchronous=FULL")
+            db.execute("PRAGMA foreign_keys=ON")
+            yield db
+        finally:
+            db.close()
+
+    @contextmanager
+    def _write(self) -> Iterator[sqlite3.Connection]:
+        with self._connect() as db:
+            db.execute("BEGIN IMMEDIATE")
+            try:
+                yield db
+            except BaseException:
+                db.execute("ROLLBACK")
+                raise
+            db.execute("COMMIT")
+
+    def open_sitting(self, subject: str, procedure: str, client: str, seed: Optional[int] = None) -> Dict:
+        """Starts (or resumes) a subject's procedure: their seed, the trials done, the new sitting's id."""
+        with self._write() as db:
+            row = db.execute("SELECT seed FROM subjects WHERE subject=? AND procedure=?", (subject, procedure)).fetchone()
+            if row is None:
+                # 53 bits: exact in JavaScript numbers too.
+                seed = secrets.randbelow(1 << 53) if seed is None else int(seed)
+                db.execute("INSERT INTO subjects VALUES (?, ?, ?, ?)", (subject, procedure, seed, utc_now()))
+            else:
+                seed = int(row[0])
+            cur = db.execute("INSERT INTO sittings (subject, procedure, started_at, client) VALUES (?, ?, ?, ?)",
+                             (subject, procedure, utc_now(), client[:200]))
+            sitting = int(cur.lastrowid)
+            done = [r[0] for r in db.execute("SELECT trial FROM responses WHERE subject=? AND procedure=? ORDER BY trial",
+                                             (subject, procedure))]
+        return {"seed": seed, "sitting": sitting, "done": done}
+
+    def sitting(self, sitting: int) -> Optional[tuple]:
+        with self._connect() as db:
+            return db.execute("SELECT subject, procedure FROM sittings WHERE id=?", (sitting,)).fetchone()
+
+    def seed(self, subject: str, procedure: str) -> Optional[int]:
+        with self._connect() as db:
+            row = db.execute("SELECT seed FROM subjects WHERE subject=? AND procedure=?", (subject, procedure)).fetchone()
+        return None if row is None else int(row[0])
+
+    def add_response(self, subject: str, procedure: str, trial: int, stimuli: Sequence[str], rating: int,
+                     rt_ms: float, sitting: int) -> bool:
+        """Commits one response; True if stored, False if this exact answer was already there.
+        Raises Conflict if the trial has a different answer."""
+        shown = ",".join(stimuli)
+        with self._write() as db:
+            old = db.execute("SELECT stimuli, rating FROM responses WHERE subject=? AND procedure=? AND trial=?",
+                             (subject, procedure, trial)).fetchone()
+            if old is not None:
+                if old == (shown, rating):
+                    return False
+                raise Conflict(f"trial {trial} of {subject}/{procedure} already has rating {old[1]}")
+            db.execute("INSERT INTO responses VALUES (?, ?, ?, ?, ?, ?, ?, ?)",
+                       (subject, procedure, trial, shown, rating, float(rt_ms), utc_now(), sitting))
+        return True
+
+    def progress(self) -> List[Dict]:
+        """Per subject and procedure: seed, responses, sittings, first and last activity."""
+        with self._connect() as db:
+            rows = db.execute("""
+              SELECT s.subject, s.procedure, s.seed, s.created_at,
+                     (SELECT COUNT(*) FROM responses r WHERE r.subject=s.subject AND r.procedure=s.procedure),
+                     (SELECT COUNT(*) FROM sittings t WHERE t.subject=s.subject AND t.procedure=s.procedure),
+                     (SELECT MAX(received_at) FROM responses r WHERE r.subject=s.subject AND r.procedure=s.procedure)
+              FROM subjects s ORDER BY s.subject, s.procedure""").fetchall()
+        keys = ("subject", "procedure", "seed", "created_at", "responses", "sittings", "last_response_at")
+        return [dict(zip(keys, r)) for r in rows]
+
+    def responses(self, procedure: Optional[str] = None) -> List[Dict]:
+        q = "SELECT subject, procedure, trial, stimuli, rating, rt_ms, received_at, sitting FROM responses"
+        args: tuple = ()
+        if procedure:
+            q += " WHERE procedure=?"
+            args = (procedure,)
+        with self._connect() as db:
+            rows = db.execute(q + " ORDER BY subject, procedure, trial", args).fetchall()
+        keys = ("subject", "procedure", "trial", "stimuli", "rating", "rt_ms", "received_at", "sitting")
+        return [dict(zip(keys, r)) for r in rows]

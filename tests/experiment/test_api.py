@@ -1,0 +1,248 @@
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
+"""The server's API without a browser: stimuli and manifest, bad requests (4xx, nothing stored),
+idempotent resubmission, concurrent subjects, and the seed reproducing the trial order."""
+from __future__ import annotations
+
+import hashlib
+import itertools
+import json
+import sqlite3
+import struct
+import subprocess
+import threading
+import time
+from pathlib import Path
+from typing import List
+
+import numpy as np
+
+from conftest import LEVELS_C, LEVELS_D, MAGNITUDE, N, PAIRS, PY, TOKEN, pgloss_cli
+
+
+def stored(db: Path) -> List[tuple]:
+    with sqlite3.connect(f"file:{db}?mode=ro", uri=True) as con:
+        return con.execute("SELECT subject, procedure, trial, stimuli, rating FROM responses ORDER BY 1, 2, 3").fetchall()
+
+
+def test_manifest(manifest: Path):
+    """The manifest's images exist with their recorded hash and size, and each paint's physical
+    parameters give the requested (c, d) by eqs. 3–4, computed here independently of pgloss."""
+    m = json.loads(manifest.read_text())
+    assert m["renderer"]["width"] == 48 and m["renderer"]["height"] == 36 and m["renderer"]["spp"] == 16
+    assert len(m["stimuli"]) == N
+    wanted = set(itertools.product(LEVELS_C, LEVELS_D))
+    got = set()
+    for s in m["stimuli"]:
+        png = (manifest.parent / s["file"]).read_bytes()
+        assert hashlib.sha256(png).hexdigest() == s["sha256"]
+        assert png[:8] == b"\x89PNG\r\n\x1a\n" and struct.unpack(">II", png[16:24]) == (48, 36)
+        c = np.cbrt(s["rho_s"] + s["rho_d"] / 2) - np.cbrt(s["rho_d"] / 2)  # eq. 4
+        d = 1 - s["alpha"]  # eq. 3
+        assert abs(c - s["c"]) < 1e-6 and abs(d - s["d"]) < 1e-6 and abs(s["L"] - 51) < 1e-6
+        got.add((round(float(c), 6), round(d, 6)))
+    assert got == wanted
+    # The grey of Fig. 4 (ρd = 0.193) is L* ≈ 51 (CIE 1976: 116·Y^(1/3) − 16).
+    assert abs(116 * m["stimuli"][0]["rho_d"] ** (1 / 3) - 16 - 51) < 1e-6
+
+
+def test_fig4_default_and_json_spec(tmp_path: Path):
+    """Without SPEC the set is Fig. 4's 27 paints (§3.2.3.1, levels from the paper's text); a JSON
+    file works as a SPEC. --dry-run: this checks the set; rendering is the `manifest` fixture's."""
+    def listed(*args: str) -> List[dict]:
+        lines = pgloss_cli("experiment", "stimuli", *args, "--dry-run").stdout.split()
+        return [dict(zip(lines[0].split(",")[1:], map(float, line.split(",")[1:]))) for line in lines[1:]]
+
+    got = sorted((p["rho_d"], p["rho_s"], p["alpha"]) for p in listed())
+    assert got == sorted(itertools.product((0.03, 0.193, 0.767), (0.033, 0.066, 0.099), (0.04, 0.07, 0.10)))
+    spec = tmp_path / "grid.json"
+    spec.write_text(json.dumps({"rho_d": [0.193], "rho_s": [0.033, 0.099], "alpha": [0.04, 0.1]}))
+    got = listed(str(spec))
+    assert [(p["rho_s"], p["alpha"]) for p in got] == [(0.033, 0.04), (0.033, 0.1), (0.099, 0.04), (0.099, 0.1)]
+    # d = 1 − α (eq. 3), c = ∛(ρs + ρd/2) − ∛(ρd/2) (eq. 4), L* of ρd (CIE 1976)
+    for p in got:
+        assert abs(p["d"] - (1 - p["alpha"])) < 1e-8
+        assert abs(p["c"] - (np.cbrt(p["rho_s"] + p["rho_d"] / 2) - np.cbrt(p["rho_d"] / 2))) < 1e-8
+        assert abs(p["L"] - (116 * p["rho_d"] ** (1 / 3) - 16)) < 1e-6
+
+
+def test_bad_specs(tmp_path: Path):
+    for spec, why in (("rho_d=0.1 c=0.2", "want exactly"), ("L=50 c=x d=0.9", "numbers"),
+                      ("L=50 c=0.05 d=0.9", "at least 3"), ("rho_d=0.9 rho_s=0.5,0.6,0.7 alpha=0.05", "rho")):
+        run = pgloss_cli("experiment", "stimuli", spec, "--out", str(tmp_path), "--tracer", "/bin/true", check=False)
+        assert run.returncode == 2 and why in run.stderr, (spec, run.stderr)
+    run = pgloss_cli("experiment", "stimuli", "--out", str(tmp_path), "--tracer", str(tmp_path / "nope"), check=False)
+    assert run.returncode == 2 and "PGLOSS_TRACER" in run.stderr
+
+
+def test_bad_requests_store_nothing(manifest: Path, server_factory, tmp_path: Path):
+    srv = server_factory(manifest).start()
+    status, ses = srv.request("/api/session", {"subject": "alice", "procedure": "pairs"})
+    assert status == 200 and len(ses["trials"]) == PAIRS and ses["done"] == []
+    t0 = ses["trials"][0]
+    good = {"sitting": ses["sitting"], "subject": "alice", "procedure": "pairs", "trial": 0, "stimuli": t0,
+            "rating": 40, "rt_ms": 1234.5}
+    _, other = srv.request("/api/session", {"subject": "bob", "procedure": "pairs"})
+
+    def bad(**change):
+        b = dict(good)
+        for k, v in change.items():
+            if v is KeyError:
+                del b[k]
+            else:
+                b[k] = v
+        return b
+
+    cases = [
+        ("rating 101", bad(rating=101), 400), ("rating -1", bad(rating=-1), 400),
+        ("rating 50.5", bad(rating=50.5), 400), ("rating '50'", bad(rating="50"), 400),
+        ("rating true", bad(rating=True), 400), ("rating null", bad(rating=None), 400),
+        ("rt negative", bad(rt_ms=-1), 400), ("rt huge", bad(rt_ms=1e12), 400),
+        ("unknown stimulus", bad(stimuli=[t0[0], "s99"]), 404), ("stimuli not strings", bad(stimuli=[1, 2]), 404),
+        ("left/right swapped", bad(stimuli=t0[::-1]), 409), ("another trial's stimuli", bad(trial=1), 409),
+        ("trial -1", bad(trial=-1), 404), ("trial past the end", bad(trial=PAIRS), 404),
+        ("unknown sitting", bad(sitting=10**6), 404), ("another subject's sitting", bad(sitting=other["sitting"]), 404),
+        ("procedure mismatch", bad(procedure="magnitude"), 404),
+        ("extra field", bad(admin=True), 400), ("missing rating", bad(rating=KeyError), 400),
+    ]
+    for name, body, want in cases:
+        status, reply = srv.request("/api/response", body)
+        assert status == want, (name, status, reply)
+        assert "error" in reply and reply["error"], name
+    raw_cases = [
+        ("not JSON", b"{rating: 40}", {}, 400), ("JSON array", b"[1, 2]", {}, 400),
+        ("NaN", json.dumps(good).replace("1234.5", "NaN").encode(), {}, 400),
+        ("not UTF-8", b"\xff\xfe{}", {}, 400), ("too big", b" " * 5000, {}, 413),
+        ("form post", json.dumps(good).encode(), {"Content-Type": "application/x-www-form-urlencoded"}, 415),
+    ]
+    for name, raw, hdr, want in raw_cases:
+        status, reply = srv.request("/api/response", raw=raw, headers=hdr)
+        assert status == want, (name, status, reply)
+    for body, want in (({"subject": "../etc", "procedure": "pairs"}, 400), ({"subject": "", "procedure": "pairs"}, 400),
+                       ({"subject": "x" * 33, "procedure": "pairs"}, 400), ({"subject": "a", "procedure": "ranking"}, 400),
+                       ({"subject": "a"}, 400), ({"subject": 7, "procedure": "pairs"}, 400)):
+        assert srv.request("/api/session", body)[0] == want, body
+    for path, want in (("/api/progress", 403), ("/api/progress?token=wrong", 403), ("/experimenter", 403),
+                       ("/export/magnitude.csv", 403), ("/stimuli/s99", 404), ("/stimuli/..%2Fmanifest.json", 404),
+                       ("/static/../store.py", 404), ("/nope", 404)):
+        assert srv.request(path)[0] == want, path
+    # DNS rebinding: another Host header is refused.
+    assert srv.request("/api/config", headers={"Host": f"evil.example:{srv.port}"})[0] == 421
+    assert stored(srv.db) == []
+
+    # The good response, then the same again (a retry): stored once; a different answer: 409.
+    assert srv.request("/api/response", good) == (200, {"stored": True, "duplicate": False, "trial": 0})
+    assert srv.request("/api/response", good) == (200, {"stored": False, "duplicate": True, "trial": 0})
+    assert srv.request("/api/response", bad(rating=41))[0] == 409
+    assert stored(srv.db) == [("alice", "pairs", 0, ",".join(t0), 40)]
+    status, prog = srv.request(f"/api/progress?token={TOKEN}")
+    assert status == 200 and {(p["subject"], p["responses"], p["trials"]) for p in prog["subjects"]} == {
+        ("alice", 1, PAIRS), ("bob", 0, PAIRS)}
+    # Resuming: the same seed and trials, the trial done reported.
+    status, again = srv.request("/api/session", {"subject": "alice", "procedure": "pairs"})
+    assert again["seed"] == ses["seed"] and again["trials"] == ses["trials"] and again["done"] == [0]
+    assert again["sitting"] != ses["sitting"]
+
+
+def test_database_bound_to_manifest(manifest: Path, server_factory, tmp_path: Path):
+    """A database that holds another stimulus set's responses is refused, not mixed."""
+    other = tmp_path / "other"
+    other.mkdir()
+    m = json.loads(manifest.read_text())
+    m["stimuli"] = m["stimuli"][:3]
+    for s in m["stimuli"]:
+        (other / s["file"]).write_bytes((manifest.parent / s["file"]).read_bytes())
+    (other / "manifest.json").write_text(json.dumps(m))
+    db = tmp_path / "db.sqlite"
+    run = pgloss_cli("experiment", "export", str(manifest), "--db", str(db), "--out", str(tmp_path / "e"), check=False)
+    assert run.returncode == 2 and "no database" in run.stderr
+    server_factory(manifest, db).start().stop()  # creates the database, bound to this manifest
+    assert pgloss_cli("experiment", "export", str(manifest), "--db", str(db), "--out", str(tmp_path / "e")).returncode == 0
+    run = pgloss_cli("experiment", "export", str(other / "manifest.json"), "--db", str(db), "--out",
+                     str(tmp_path / "e"), check=False)
+    assert run.returncode == 2 and "another stimulus set" in run.stderr
+    # A changed image is refused too.
+    (other / m["stimuli"][0]["file"]).write_bytes(b"\x89PNG not the same")
+    run = pgloss_cli("experiment", "serve", str(other / "manifest.json"), "--db", str(tmp_path / "n.sqlite"),
+                     "--port", "0", check=False, timeout=60)
+    assert run.returncode == 2 and "SHA-256" in run.stderr
+
+
+def test_concurrent_subjects(manifest: Path, server_factory):
+    """12 subjects post all their trials at once from 12 threads, and 8 threads post the same answer
+    to one trial at once: every response is stored exactly once and nothing fails."""
+    srv = server_factory(manifest).start()
+    errors: List[str] = []
+    sessions = []
+    for k in range(12):
+        status, ses = srv.request("/api/session", {"subject": f"c{k:02d}", "procedure": "pairs" if k % 2 else "magnitude"})
+        assert status == 200
+        sessions.append(ses)
+    start = threading.Barrier(12 + 8)
+
+    def subject(ses):
+        start.wait()
+        for t, stim in enumerate(ses["trials"]):
+            try:
+                status, reply = srv.request("/api/response", {"sitting": ses["sitting"], "subject": ses["subject"],
+                                            "procedure": ses["procedure"], "trial": t, "stimuli": stim,
+                                            "rating": (7 * t) % 101, "rt_ms": 900})
+            except OSError as e:
+                status, reply = -1, repr(e)
+            if status != 200 or not reply["stored"]:
+                errors.append(f"{ses['subject']} {t}: {status} {reply}")
+
+    same = sessions[1]
+    replies = []
+
+    def retry():
+        start.wait()
+        try:
+            replies.append(srv.request("/api/response", {"sitting": same["sitting"], "subject": same["subject"],
+                                       "procedure": same["procedure"], "trial": 0, "stimuli": same["trials"][0],
+                                       "rating": 0, "rt_ms": 900}))
+        except OSError as e:
+            replies.append((-1, {"stored": repr(e)}))
+
+    threads = [threading.Thread(target=subject, args=(s,)) for s in sessions]
+    threads[1] = threading.Thread(target=subject, args=({**same, "trials": []},))  # c01's trial 0 comes from retry()
+    threads += [threading.Thread(target=retry) for _ in range(8)]
+    t0 = time.monotonic()
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join(120)
+    seconds = time.monotonic() - t0
+    assert not errors, errors[:5]
+    assert sorted(r[1]["stored"] for r in replies) == [False] * 7 + [True] and all(r[0] == 200 for r in replies)
+    rows = stored(srv.db)
+    want = sum(len(s["trials"]) for k, s in enumerate(sessions) if k != 1) + 1
+    assert len(rows) == want and len(set((r[0], r[2]) for r in rows)) == want
+    print(f"\nconcurrent subjects: {want + 7} responses from 20 threads in {seconds:.2f} s "
+          f"({(want + 7) / seconds:.0f}/s, each committed with synchronous=FULL)")
+
+
+def test_seed_reproduces_trial_order(manifest: Path, server_factory):
+    """The recorded seed gives the subject's trials again in a fresh process (pgloss.experiment.design),
+    and the orders have the design's properties: each unordered pair once, both placements used,
+    magnitude estimation = 3 permutations of the stimuli; another seed, another order."""
+    srv = server_factory(manifest).start()
+    ids = [s["id"] for s in json.loads(manifest.read_text())["stimuli"]]
+    for procedure in ("pairs", "magnitude"):
+        _, a = srv.request("/api/session", {"subject": "seed-a", "procedure": procedure})
+        _, b = srv.request("/api/session", {"subject": "seed-b", "procedure": procedure})
+        code = ("import json, sys; from pgloss.experiment import design; "
+                f"print(json.dumps(design.trials({ids!r}, {procedure!r}, int(sys.argv[1]))))")
+        for ses in (a, b):
+            again = json.loads(subprocess.run([PY, "-c", code, str(ses["seed"])], capture_output=True, text=True,
+                                              check=True).stdout)
+            assert again == ses["trials"]
+        assert a["trials"] != b["trials"]
+        if procedure == "pairs":
+            for ses in (a, b):
+                assert sorted(tuple(sorted(t)) for t in ses["trials"]) == sorted(itertools.combinations(ids, 2))
+                assert 0 < sum(t[0] < t[1] for t in ses["trials"]) < PAIRS
+        else:
+            for ses in (a, b):
+                flat = [t[0] for t in ses["trials"]]
+                assert len(flat) == MAGNITUDE and all(sorted(flat[k:k + N]) == sorted(ids) for k in (0, N, 2 * N))
