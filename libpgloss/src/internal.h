@@ -36,6 +36,12 @@ static inline float pgloss__to_float(double v)
     return v < (double)FLT_MAX ? (float)v : FLT_MAX;
 }
 
+/* A known pgloss_color_space (an int from another language may hold anything). */
+static inline int pgloss__valid_color_space(pgloss_color_space space)
+{
+    return (int)space >= (int)PGLOSS_COLOR_SPACE_LINEAR_REC709 && (int)space <= (int)PGLOSS_COLOR_SPACE_LINEAR_REC2020;
+}
+
 static inline double pgloss__luminance3(double r, double g, double b)
 {
     return PGLOSS_LUMA_R * r + PGLOSS_LUMA_G * g + PGLOSS_LUMA_B * b;

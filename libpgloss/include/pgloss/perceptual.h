@@ -23,6 +23,7 @@
 
 #include <stddef.h>
 #include "pgloss/brdf.h"
+#include "pgloss/color.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -136,6 +137,20 @@ pgloss_status pgloss_physical_from_perceptual(const pgloss_perceptual *q,
  * the warning for an anisotropic lobe.
  */
 pgloss_status pgloss_perceptual_from_physical(const pgloss_physical *p, pgloss_perceptual *q);
+
+/*
+ * The three functions above in a working colour space (color.h): ρd is linear RGB of `space`,
+ * and GAMUT / ENERGY are decided in that space. ρs, c and L* use the luminance Y, which is
+ * the same in every space. Errors as the functions without _ex, plus ARGUMENT (unknown
+ * space; checked right after NULL). The functions without _ex are these with
+ * PGLOSS_COLOR_SPACE_LINEAR_REC709.
+ */
+pgloss_status pgloss_check_perceptual_ex(const pgloss_perceptual *q, pgloss_color_space space);
+pgloss_status pgloss_physical_from_perceptual_ex(const pgloss_perceptual *q,
+                                                 pgloss_normalization normalization,
+                                                 pgloss_color_space space, pgloss_physical *p);
+pgloss_status pgloss_perceptual_from_physical_ex(const pgloss_physical *p, pgloss_color_space space,
+                                                 pgloss_perceptual *q);
 
 #ifdef __cplusplus
 }
