@@ -56,8 +56,9 @@ def test_files_present_and_covered() -> None:
     chk.finish("vector files")
     for fns in pv.FUNCTIONS.values():
         for fn in fns:
-            # Every C function of the vectors has its Python twin (one name across languages).
-            assert callable(getattr(pgloss, fn.replace("_batch", ""))), fn
+            # Every C function of the vectors has its Python twin (one name across languages);
+            # a C _ex function is its twin's keyword argument ``space``.
+            assert callable(getattr(pgloss, fn.replace("_batch", "").removesuffix("_ex"))), fn
 
 
 # ------------------------------------------------------------------------------------------------

@@ -16,7 +16,8 @@
  * No finite input gives a NaN or Inf output: where a finite input would overflow double
  * (L* > 6.6e104, c > ~5e102 in eq. 7, ρs + ρd/2 > DBL_MAX, differences beyond DBL_MAX in
  * eq. 5, ...) the function returns PGLOSS_ERR_NONFINITE with the fallback outputs.
- * For a coloured diffuse, ρd in eqs. 4, 6, 7 is its luminance Y (Rec. 709 weights).
+ * For a coloured diffuse, ρd in eqs. 4, 6, 7 is its luminance Y (the CIE Y of the colour:
+ * Rec. 709 weights for Rec. 709 RGB, the same Y whichever working colour space ρd is in).
  */
 #ifndef PGLOSS_PERCEPTUAL_H
 #define PGLOSS_PERCEPTUAL_H
