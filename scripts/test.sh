@@ -11,6 +11,7 @@ start=$SECONDS
 bash scripts/test-core.sh
 bash scripts/test-python.sh
 bash scripts/test-glsl.sh
+bash scripts/test-materialx.sh
 bash scripts/test-osl.sh
 bash scripts/test-tracer.sh
 bash scripts/test-web.sh

@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
+# The MaterialX library (materialx/pgloss): validation, ShaderGen (GLSL, OSL) with the PyPI
+# MaterialX package pinned in tests/materialx/requirements.txt, and glslangValidator on the
+# generated GLSL. Nothing is skipped: with PGLOSS_REQUIRE_ALL=1 (the default here, and what CI
+# sets) a skipped test is a failure.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+export PGLOSS_REQUIRE_ALL="${PGLOSS_REQUIRE_ALL:-1}"
+bash scripts/bootstrap.sh apt python3 python3-venv glslang-tools
+
+venv=.venv-materialx
+req=tests/materialx/requirements.txt
+if [[ ! -x $venv/bin/python ]] || ! cmp -s "$req" "$venv/.requirements"; then
+  echo "test-materialx: creating $venv from $req"
+  rm -rf "$venv"
+  /usr/bin/python3 -m venv "$venv"
+  "$venv/bin/pip" install -q --disable-pip-version-check -r "$req"
+  cp "$req" "$venv/.requirements"
+fi
+
+echo "== MaterialX: library, sample document, ShaderGen GLSL + OSL, glslangValidator"
+"$venv/bin/python" -m pytest -q -p no:cacheprovider -rs tests/materialx
+echo "== MaterialX tests passed"
