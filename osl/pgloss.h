@@ -610,7 +610,8 @@ int pgloss_luminance_ex(color rgb, int space, output float Y)
     Y = 0.0;
     if (!pgloss__valid_color_space(space)) return PGLOSS_ERR_ARGUMENT;
     if (!pgloss__isfinite3(rgb)) return PGLOSS_ERR_NONFINITE;
-    float y = pgloss__xyz_from_rgb(space, rgb)[1];
+    vector xyz = pgloss__xyz_from_rgb(space, rgb);
+    float y = xyz[1];
     if (!isfinite(y)) return PGLOSS_ERR_NONFINITE;
     Y = y;
     return PGLOSS_OK;
