@@ -317,7 +317,6 @@ def test_standalone_shader_packed_in_blend_renders(tmp_path: Path) -> None:
     sc = bpy.context.scene
     node = next(n for n in bpy.data.materials["m"].node_tree.nodes if n.type == "SCRIPT")
     assert node.mode == "INTERNAL" and node.script is not None and node.script.as_string() == src
-    bpy.ops.scene.refresh() if hasattr(bpy.ops.scene, "refresh") else None
     got = _render_centre(sc, tmp_path / "standalone.exr").mean(axis=(0, 1))
     assert np.all(got > 0.05), got
     np.testing.assert_allclose(got, ref, rtol=0.03)
