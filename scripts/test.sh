@@ -13,6 +13,7 @@ bash scripts/test-python.sh
 bash scripts/test-glsl.sh
 bash scripts/test-materialx.sh
 bash scripts/test-osl.sh
+bash scripts/test-blender.sh
 bash scripts/test-tracer.sh
 bash scripts/test-web.sh
 echo "== every test passed ($((SECONDS - start)) s)"
