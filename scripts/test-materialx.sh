@@ -21,5 +21,17 @@ if [[ ! -x $venv/bin/python ]] || ! cmp -s "$req" "$venv/.requirements"; then
 fi
 
 echo "== MaterialX: library, sample document, ShaderGen GLSL + OSL, glslangValidator"
-"$venv/bin/python" -m pytest -q -p no:cacheprovider -rs tests/materialx
+"$venv/bin/python" -m pytest -q -p no:cacheprovider -rs --ignore=tests/materialx/cycles tests/materialx
+
+echo "== MaterialX: the generated OSL in Cycles (bpy 5.0.1, .venv-bpy of scripts/test-osl.sh)"
+PGLOSS_OSL_SETUP_ONLY=1 bash scripts/test-osl.sh
+inc=build-materialx/mx_include
+rm -rf "$inc" && mkdir -p "$inc"
+cp "$("$venv/bin/python" -c 'import MaterialX, os; print(os.path.dirname(MaterialX.__file__))')"/libraries/stdlib/genosl/include/*.h "$inc/"
+set +e
+.venv-bpy/bin/python -m pytest -q -s -p no:cacheprovider -rs tests/materialx/cycles 2>&1 |
+  grep -v -e 'DeprecationWarning' -e '| Saved:' -e '^Fra:'
+rc=${PIPESTATUS[0]}
+set -e
+[[ $rc == 0 ]] || exit "$rc"
 echo "== MaterialX tests passed"
