@@ -2,13 +2,15 @@
 # SPDX-FileCopyrightText: 2026 The pgloss authors
 # SPDX-License-Identifier: Apache-2.0
 # The MaterialX library (materialx/pgloss): validation, ShaderGen (GLSL, OSL) with the PyPI
-# MaterialX package pinned in tests/materialx/requirements.txt, and glslangValidator on the
-# generated GLSL. Nothing is skipped: with PGLOSS_REQUIRE_ALL=1 (the default here, and what CI
+# MaterialX package pinned in tests/materialx/requirements.txt, glslangValidator on the generated
+# GLSL, the generated GLSL on llvmpipe (moderngl) against the C core, and the generated OSL in
+# Cycles (the bpy 5.0.1 venv of scripts/test-osl.sh) against osl/pgloss_material.osl. Nothing is skipped: with PGLOSS_REQUIRE_ALL=1 (the default here, and what CI
 # sets) a skipped test is a failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PGLOSS_REQUIRE_ALL="${PGLOSS_REQUIRE_ALL:-1}"
-bash scripts/bootstrap.sh apt python3 python3-venv glslang-tools
+bash scripts/bootstrap.sh apt python3 python3-venv glslang-tools cmake ninja-build gcc \
+  libegl1 libgl1 libegl-mesa0 libgl1-mesa-dri
 
 venv=.venv-materialx
 req=tests/materialx/requirements.txt
