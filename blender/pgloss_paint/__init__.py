@@ -4,8 +4,8 @@
 Greenberg (SIGGRAPH 2000) — CIELAB lightness L*, a*, b*, contrast gloss c and
 distinctness-of-image gloss d (Fig. 13) — through the OSL shader of the pgloss project.
 
-Add > "pgloss paint" in the material panel (or the operator ``material.pgloss_paint_new``)
-makes a material whose node group "pgloss paint" has the five sliders and the working colour
+"New pgloss Paint" in the material properties' "pgloss paint" panel (the operator
+``material.pgloss_paint_new``) makes a material whose node group "pgloss paint" has the five sliders and the working colour
 space; it drives an Internal OSL script (the self-contained pgloss_material.osl, so the .blend
 carries it). The panel shows the derived ρd, ρs, α and the validity reason, computed by the
 bundled pgloss package (the C library), and flags paints outside the model.
@@ -176,21 +176,14 @@ class PGLOSS_PT_paint(bpy.types.Panel):
             layout.label(text="Enable Open Shading Language (Cycles, CPU) to render it", icon="INFO")
 
 
-def menu(self, context):
-    self.layout.operator(PGLOSS_OT_paint_new.bl_idname, icon="MATERIAL")
-
-
 CLASSES = (PGLOSS_OT_paint_new, PGLOSS_PT_paint)
 
 
 def register():
     for c in CLASSES:
         bpy.utils.register_class(c)
-    bpy.types.NODE_MT_add.append(menu) if hasattr(bpy.types, "NODE_MT_add") else None
 
 
 def unregister():
-    if hasattr(bpy.types, "NODE_MT_add"):
-        bpy.types.NODE_MT_add.remove(menu)
     for c in reversed(CLASSES):
         bpy.utils.unregister_class(c)
