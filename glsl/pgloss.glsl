@@ -120,6 +120,11 @@ precision highp int;
 #define PGLOSS_LUMA_R 0.21263900587151036
 #define PGLOSS_LUMA_G 0.71516867876775593
 #define PGLOSS_LUMA_B 0.072192315360733715
+/* Working colour spaces (pgloss_color_space in pgloss/color.h); CIELAB stays D65-relative. */
+#define PGLOSS_COLOR_SPACE_LINEAR_REC709 0      /* the default */
+#define PGLOSS_COLOR_SPACE_ACESCG 1             /* AP1, ACES white (Bradford from D65) */
+#define PGLOSS_COLOR_SPACE_LINEAR_DISPLAY_P3 2
+#define PGLOSS_COLOR_SPACE_LINEAR_REC2020 3
 
 #define PGLOSS_PI 3.14159265358979323846
 #define PGLOSS_INV_PI 0.31830988618379067154
@@ -888,7 +893,52 @@ int pgloss_isogloss_contour(float c0, float d0, float D, uint k, uint n, out flo
     return PGLOSS_OK;
 }
 
-/* ---- colour (color.c): CIELAB (D65) ↔ linear Rec. 709 RGB ---------------------------- */
+/* ---- colour (color.c): CIELAB (D65) ↔ linear RGB of a working colour space ---------- */
+
+bool pgloss_impl_valid_color_space(int space)
+{
+    return space >= PGLOSS_COLOR_SPACE_LINEAR_REC709 && space <= PGLOSS_COLOR_SPACE_LINEAR_REC2020;
+}
+
+/* RGB → XYZ (D65) and XYZ (D65) → RGB of a working space, written row by row (the C core's
+ * table in color.c, printed by tests/vectors/generate.py --print-color-matrices). */
+mat3 pgloss_impl_rgb_to_xyz(int space)
+{
+    if (space == PGLOSS_COLOR_SPACE_ACESCG)
+        return transpose(mat3(0.65223754188628869, 0.12823613599971256, 0.16998224916567053,
+                              0.26767218012533683, 0.67433998880155077, 0.057987831073112443,
+                              -0.0053818157663877058, 0.0013690602090958336, 1.0930705063171704));
+    if (space == PGLOSS_COLOR_SPACE_LINEAR_DISPLAY_P3)
+        return transpose(mat3(0.48657094864821626, 0.26566769316909294, 0.19821728523436249,
+                              0.22897456406974884, 0.69173852183650619, 0.079286914093744998,
+                              0.0, 0.045113381858902575, 1.0439443689009757));
+    if (space == PGLOSS_COLOR_SPACE_LINEAR_REC2020)
+        return transpose(mat3(0.63695804830129132, 0.14461690358620838, 0.16888097516417205,
+                              0.26270021201126703, 0.67799807151887104, 0.059301716469861945,
+                              0.0, 0.028072693049087508, 1.0609850577107909));
+    return transpose(mat3(0.41239079926595948, 0.35758433938387796, 0.18048078840183429,
+                          PGLOSS_LUMA_R, PGLOSS_LUMA_G, PGLOSS_LUMA_B,
+                          0.019330818715591851, 0.11919477979462599, 0.95053215224966058));
+}
+
+mat3 pgloss_impl_xyz_to_rgb(int space)
+{
+    if (space == PGLOSS_COLOR_SPACE_ACESCG)
+        return transpose(mat3(1.6605853264911827, -0.31529556082587068, -0.24150932760837673,
+                              -0.65992606322415459, 1.6083914695660548, 0.017298594705445494,
+                              0.009002569137834213, -0.0035668763903373268, 0.91364331276310418));
+    if (space == PGLOSS_COLOR_SPACE_LINEAR_DISPLAY_P3)
+        return transpose(mat3(2.4934969119414245, -0.93138361791912361, -0.40271078445071684,
+                              -0.82948896956157503, 1.7626640603183468, 0.023624685841943591,
+                              0.035845830243784335, -0.076172389268041707, 0.95688452400768731));
+    if (space == PGLOSS_COLOR_SPACE_LINEAR_REC2020)
+        return transpose(mat3(1.7166511879712676, -0.35567078377639239, -0.2533662813736598,
+                              -0.66668435183248898, 1.616481236634939, 0.015768545813911131,
+                              0.017639857445310915, -0.042770613257808655, 0.94210312123547402));
+    return transpose(mat3(3.2409699419045213, -1.5373831775700935, -0.49861076029300328,
+                          -0.96924363628087983, 1.8759675015077207, 0.041555057407175613,
+                          0.055630079696993608, -0.20397695888897656, 1.0569715142428786));
+}
 
 float pgloss_impl_lab_f(float t)
 {
@@ -901,24 +951,35 @@ float pgloss_impl_lab_finv(float t)
     return t > delta ? t * t * t : 3.0 * delta * delta * (t - 4.0 / 29.0);
 }
 
-/* Luminance Y of linear Rec. 709 RGB. Errors: NONFINITE. */
-int pgloss_luminance(vec3 rgb, out float Y)
+/* Luminance Y of linear RGB of `space`. Errors: ARGUMENT (unknown space), NONFINITE. */
+int pgloss_luminance_ex(vec3 rgb, int space, out float Y)
 {
     Y = 0.0;
+    if (!pgloss_impl_valid_color_space(space))
+        return PGLOSS_ERR_ARGUMENT;
     if (!pgloss_impl_finite3(rgb))
         return PGLOSS_ERR_NONFINITE;
-    float y = pgloss_impl_luminance3(rgb);
+    float y = space == PGLOSS_COLOR_SPACE_LINEAR_REC709 ? pgloss_impl_luminance3(rgb)
+                                                        : dot(rgb, transpose(pgloss_impl_rgb_to_xyz(space))[1]);
     if (!pgloss_impl_finite(y))
         return PGLOSS_ERR_NONFINITE;
     Y = y;
     return PGLOSS_OK;
 }
 
-/* (L*, a*, b*) → linear Rec. 709 RGB. Errors: NONFINITE, LIGHTNESS (L outside [0, 100]),
- * GAMUT (a channel < 0: the values are still written). */
-int pgloss_rgb_from_lab(vec3 lab, out vec3 rgb)
+/* Luminance Y of linear Rec. 709 RGB. Errors: NONFINITE. */
+int pgloss_luminance(vec3 rgb, out float Y)
+{
+    return pgloss_luminance_ex(rgb, PGLOSS_COLOR_SPACE_LINEAR_REC709, Y);
+}
+
+/* (L*, a*, b*) → linear RGB of `space`. Errors: ARGUMENT (unknown space), NONFINITE,
+ * LIGHTNESS (L outside [0, 100]), GAMUT (a channel < 0: the values are still written). */
+int pgloss_rgb_from_lab_ex(vec3 lab, int space, out vec3 rgb)
 {
     rgb = vec3(0.0);
+    if (!pgloss_impl_valid_color_space(space))
+        return PGLOSS_ERR_ARGUMENT;
     if (!pgloss_impl_finite3(lab))
         return PGLOSS_ERR_NONFINITE;
     if (lab.x < 0.0 || lab.x > 100.0)
@@ -928,10 +989,7 @@ int pgloss_rgb_from_lab(vec3 lab, out vec3 rgb)
     xyz.x = (0.3127 / 0.3290) * pgloss_impl_lab_finv(fy + lab.y / 500.0);
     pgloss_luminance_from_lightness(lab.x, xyz.y);
     xyz.z = (0.3583 / 0.3290) * pgloss_impl_lab_finv(fy - lab.z / 200.0);
-    vec3 o = vec3(
-        3.2409699419045213 * xyz.x - 1.5373831775700935 * xyz.y - 0.49861076029300328 * xyz.z,
-        -0.96924363628087983 * xyz.x + 1.8759675015077207 * xyz.y + 0.041555057407175613 * xyz.z,
-        0.055630079696993608 * xyz.x - 0.20397695888897656 * xyz.y + 1.0569715142428786 * xyz.z);
+    vec3 o = pgloss_impl_xyz_to_rgb(space) * xyz;
     if (!pgloss_impl_finite3(o))
         return PGLOSS_ERR_NONFINITE;
     rgb = o;
@@ -942,18 +1000,23 @@ int pgloss_rgb_from_lab(vec3 lab, out vec3 rgb)
     return PGLOSS_OK;
 }
 
-/* Linear Rec. 709 RGB → (L*, a*, b*). Errors: NONFINITE, NEGATIVE. */
-int pgloss_lab_from_rgb(vec3 rgb, out vec3 lab)
+/* (L*, a*, b*) → linear Rec. 709 RGB. Errors: NONFINITE, LIGHTNESS, GAMUT. */
+int pgloss_rgb_from_lab(vec3 lab, out vec3 rgb)
+{
+    return pgloss_rgb_from_lab_ex(lab, PGLOSS_COLOR_SPACE_LINEAR_REC709, rgb);
+}
+
+/* Linear RGB of `space` → (L*, a*, b*). Errors: ARGUMENT (unknown space), NONFINITE, NEGATIVE. */
+int pgloss_lab_from_rgb_ex(vec3 rgb, int space, out vec3 lab)
 {
     lab = vec3(0.0);
+    if (!pgloss_impl_valid_color_space(space))
+        return PGLOSS_ERR_ARGUMENT;
     if (!pgloss_impl_finite3(rgb))
         return PGLOSS_ERR_NONFINITE;
     if (rgb.r < 0.0 || rgb.g < 0.0 || rgb.b < 0.0)
         return PGLOSS_ERR_NEGATIVE;
-    vec3 xyz = vec3(
-        0.41239079926595948 * rgb.r + 0.35758433938387796 * rgb.g + 0.18048078840183429 * rgb.b,
-        0.21263900587151036 * rgb.r + 0.71516867876775593 * rgb.g + 0.072192315360733715 * rgb.b,
-        0.019330818715591851 * rgb.r + 0.11919477979462599 * rgb.g + 0.95053215224966058 * rgb.b);
+    vec3 xyz = pgloss_impl_rgb_to_xyz(space) * rgb;
     float fx = pgloss_impl_lab_f(xyz.x / (0.3127 / 0.3290));
     float fy = pgloss_impl_lab_f(xyz.y);
     float fz = pgloss_impl_lab_f(xyz.z / (0.3583 / 0.3290));
@@ -962,6 +1025,12 @@ int pgloss_lab_from_rgb(vec3 rgb, out vec3 lab)
         return PGLOSS_ERR_NONFINITE;
     lab = o;
     return PGLOSS_OK;
+}
+
+/* Linear Rec. 709 RGB → (L*, a*, b*). Errors: NONFINITE, NEGATIVE. */
+int pgloss_lab_from_rgb(vec3 rgb, out vec3 lab)
+{
+    return pgloss_lab_from_rgb_ex(rgb, PGLOSS_COLOR_SPACE_LINEAR_REC709, lab);
 }
 
 /* ---- validity and the five-parameter description (validity.c) ----------------------- */
@@ -983,10 +1052,13 @@ int pgloss_check_physical(pgloss_physical p)
     return PGLOSS_OK;
 }
 
-/* Is q inside the model? First reason: NONFINITE, LIGHTNESS, NEGATIVE (c < 0), ALPHA
- * (d >= 1), GAMUT, ENVELOPE, ENERGY, warning ALPHA_UNTRUSTED (d < 0.8). */
-int pgloss_check_perceptual(pgloss_perceptual q)
+/* Is q inside the model, with ρd in the working `space`? First reason: ARGUMENT (unknown
+ * space), NONFINITE, LIGHTNESS, NEGATIVE (c < 0), ALPHA (d >= 1), GAMUT, ENVELOPE, ENERGY,
+ * warning ALPHA_UNTRUSTED (d < 0.8). */
+int pgloss_check_perceptual_ex(pgloss_perceptual q, int space)
 {
+    if (!pgloss_impl_valid_color_space(space))
+        return PGLOSS_ERR_ARGUMENT;
     if (!pgloss_impl_finite(q.L) || !pgloss_impl_finite(q.a) || !pgloss_impl_finite(q.b) ||
         !pgloss_impl_finite(q.c) || !pgloss_impl_finite(q.d))
         return PGLOSS_ERR_NONFINITE;
@@ -997,7 +1069,7 @@ int pgloss_check_perceptual(pgloss_perceptual q)
     if (!(q.d < 1.0))
         return PGLOSS_ERR_ALPHA;
     vec3 rgb;
-    int st = pgloss_rgb_from_lab(vec3(q.L, q.a, q.b), rgb);
+    int st = pgloss_rgb_from_lab_ex(vec3(q.L, q.a, q.b), space, rgb);
     if (st != PGLOSS_OK)
         return st;
     float cmax;
@@ -1016,12 +1088,22 @@ int pgloss_check_perceptual(pgloss_perceptual q)
     return PGLOSS_OK;
 }
 
-/* Fig. 13's description → physical parameters: CIELAB → linear Rec. 709 ρd, ρs from eq. 7
+/* pgloss_check_perceptual_ex in linear Rec. 709. */
+int pgloss_check_perceptual(pgloss_perceptual q)
+{
+    return pgloss_check_perceptual_ex(q, PGLOSS_COLOR_SPACE_LINEAR_REC709);
+}
+
+/* Fig. 13's description → physical parameters: CIELAB → linear RGB ρd of the working `space`
+ * (ARGUMENT if unknown; the luminance Y, and so ρs, does not depend on it), ρs from eq. 7
  * with Y = f⁻¹(L), α = αx = αy = 1 - d. Errors as pgloss_physical_from_gloss, plus
  * NORMALIZATION and GAMUT (the negative RGB is still written). Warning ALPHA_UNTRUSTED. */
-int pgloss_physical_from_perceptual(pgloss_perceptual q, int normalization, out pgloss_physical p)
+int pgloss_physical_from_perceptual_ex(pgloss_perceptual q, int normalization, int space,
+                                       out pgloss_physical p)
 {
     p = pgloss_physical(vec3(0.0), 0.0, 0.0, 0.0, normalization);
+    if (!pgloss_impl_valid_color_space(space))
+        return PGLOSS_ERR_ARGUMENT;
     if (!pgloss_impl_finite(q.a) || !pgloss_impl_finite(q.b))
         return PGLOSS_ERR_NONFINITE;
     float y, rho_s, alpha;
@@ -1031,7 +1113,7 @@ int pgloss_physical_from_perceptual(pgloss_perceptual q, int normalization, out 
     if (!pgloss_impl_valid_normalization(normalization))
         return PGLOSS_ERR_NORMALIZATION;
     vec3 rgb;
-    int cs = pgloss_rgb_from_lab(vec3(q.L, q.a, q.b), rgb);
+    int cs = pgloss_rgb_from_lab_ex(vec3(q.L, q.a, q.b), space, rgb);
     if (cs != PGLOSS_OK && cs != PGLOSS_ERR_GAMUT)
         return cs;
     p.rho_d = rgb;
@@ -1041,20 +1123,29 @@ int pgloss_physical_from_perceptual(pgloss_perceptual q, int normalization, out 
     return cs != PGLOSS_OK ? cs : st;
 }
 
-/* The inverse: L*a*b* of ρd, c from eq. 4 with Y = luminance(ρd), d = 1 - sqrt(αx αy).
+/* pgloss_physical_from_perceptual_ex in linear Rec. 709. */
+int pgloss_physical_from_perceptual(pgloss_perceptual q, int normalization, out pgloss_physical p)
+{
+    return pgloss_physical_from_perceptual_ex(q, normalization, PGLOSS_COLOR_SPACE_LINEAR_REC709, p);
+}
+
+/* The inverse: L*a*b* of ρd (linear RGB of `space`), c from eq. 4 with Y = luminance(ρd),
+ * d = 1 - sqrt(αx αy).
  * Errors: NONFINITE, NEGATIVE, ALPHA; warning ALPHA_UNTRUSTED. */
-int pgloss_perceptual_from_physical(pgloss_physical p, out pgloss_perceptual q)
+int pgloss_perceptual_from_physical_ex(pgloss_physical p, int space, out pgloss_perceptual q)
 {
     q = pgloss_perceptual(0.0, 0.0, 0.0, 0.0, 0.0);
+    if (!pgloss_impl_valid_color_space(space))
+        return PGLOSS_ERR_ARGUMENT;
     int basic = pgloss_impl_check_physical_values(p);
     if (basic != PGLOSS_OK)
         return basic;
     vec3 lab;
-    int st = pgloss_lab_from_rgb(p.rho_d, lab);
+    int st = pgloss_lab_from_rgb_ex(p.rho_d, space, lab);
     if (st != PGLOSS_OK)
         return st;
     float y, c;
-    st = pgloss_luminance(p.rho_d, y);
+    st = pgloss_luminance_ex(p.rho_d, space, y);
     if (st != PGLOSS_OK)
         return st;
     st = pgloss_contrast_gloss(y, p.rho_s, c);
@@ -1064,6 +1155,12 @@ int pgloss_perceptual_from_physical(pgloss_physical p, out pgloss_perceptual q)
     float alpha = sqrt(p.alpha_x) * sqrt(p.alpha_y);
     q = pgloss_perceptual(lab.x, lab.y, lab.z, c, pgloss_impl_doi_from_alpha(alpha));
     return alpha > PGLOSS_ALPHA_TRUSTED_MAX ? PGLOSS_WARN_ALPHA_UNTRUSTED : PGLOSS_OK;
+}
+
+/* pgloss_perceptual_from_physical_ex in linear Rec. 709. */
+int pgloss_perceptual_from_physical(pgloss_physical p, out pgloss_perceptual q)
+{
+    return pgloss_perceptual_from_physical_ex(p, PGLOSS_COLOR_SPACE_LINEAR_REC709, q);
 }
 
 #endif /* PGLOSS_NO_PERCEPTUAL */

@@ -89,6 +89,11 @@
 #define PGLOSS_LUMA_R 0.21263900587151036
 #define PGLOSS_LUMA_G 0.71516867876775593
 #define PGLOSS_LUMA_B 0.072192315360733715
+// Working colour spaces (pgloss_color_space in pgloss/color.h); CIELAB stays D65-relative.
+#define PGLOSS_COLOR_SPACE_LINEAR_REC709 0      // the default
+#define PGLOSS_COLOR_SPACE_ACESCG 1             // AP1, ACES white (Bradford from D65)
+#define PGLOSS_COLOR_SPACE_LINEAR_DISPLAY_P3 2
+#define PGLOSS_COLOR_SPACE_LINEAR_REC2020 3
 #define PGLOSS_CIE_EPSILON (216.0 / 24389.0)
 #define PGLOSS_CIE_KAPPA (24389.0 / 27.0)
 #define PGLOSS_D_WEIGHT 1.78
@@ -497,7 +502,7 @@ int pgloss_isogloss_contour(float c0, float d0, float D, int n, output float c[]
 }
 
 // ---------------------------------------------------------------------------------------
-// color.h — CIELAB (D65) ↔ linear Rec. 709 RGB
+// color.h — CIELAB (D65) ↔ linear RGB of a working colour space
 
 #define PGLOSS__WHITE_X (0.3127 / 0.3290)
 #define PGLOSS__WHITE_Z (0.3583 / 0.3290)
@@ -513,9 +518,58 @@ float pgloss__lab_finv(float t)
     return t > PGLOSS__DELTA ? t * t * t : 3.0 * PGLOSS__DELTA * PGLOSS__DELTA * (t - 4.0 / 29.0);
 }
 
-int pgloss_rgb_from_lab(vector lab, output color rgb)
+int pgloss__valid_color_space(int space)
+{
+    return space >= PGLOSS_COLOR_SPACE_LINEAR_REC709 && space <= PGLOSS_COLOR_SPACE_LINEAR_REC2020;
+}
+
+// XYZ (D65) → RGB and RGB → XYZ (D65) of a working space: the C core's table in color.c
+// (printed by tests/vectors/generate.py --print-color-matrices).
+color pgloss__rgb_from_xyz(int space, float X, float Y, float Z)
+{
+    if (space == PGLOSS_COLOR_SPACE_ACESCG)
+        return color(1.6605853264911827 * X - 0.31529556082587068 * Y - 0.24150932760837673 * Z,
+                     -0.65992606322415459 * X + 1.6083914695660548 * Y + 0.017298594705445494 * Z,
+                     0.009002569137834213 * X - 0.0035668763903373268 * Y + 0.91364331276310418 * Z);
+    if (space == PGLOSS_COLOR_SPACE_LINEAR_DISPLAY_P3)
+        return color(2.4934969119414245 * X - 0.93138361791912361 * Y - 0.40271078445071684 * Z,
+                     -0.82948896956157503 * X + 1.7626640603183468 * Y + 0.023624685841943591 * Z,
+                     0.035845830243784335 * X - 0.076172389268041707 * Y + 0.95688452400768731 * Z);
+    if (space == PGLOSS_COLOR_SPACE_LINEAR_REC2020)
+        return color(1.7166511879712676 * X - 0.35567078377639239 * Y - 0.2533662813736598 * Z,
+                     -0.66668435183248898 * X + 1.616481236634939 * Y + 0.015768545813911131 * Z,
+                     0.017639857445310915 * X - 0.042770613257808655 * Y + 0.94210312123547402 * Z);
+    return color(
+         3.2409699419045213 * X - 1.5373831775700935 * Y - 0.49861076029300328 * Z,
+        -0.96924363628087983 * X + 1.8759675015077207 * Y + 0.041555057407175613 * Z,
+         0.055630079696993608 * X - 0.20397695888897656 * Y + 1.0569715142428786 * Z);
+}
+
+vector pgloss__xyz_from_rgb(int space, color c)
+{
+    if (space == PGLOSS_COLOR_SPACE_ACESCG)
+        return vector(0.65223754188628869 * c[0] + 0.12823613599971256 * c[1] + 0.16998224916567053 * c[2],
+                      0.26767218012533683 * c[0] + 0.67433998880155077 * c[1] + 0.057987831073112443 * c[2],
+                      -0.0053818157663877058 * c[0] + 0.0013690602090958336 * c[1] + 1.0930705063171704 * c[2]);
+    if (space == PGLOSS_COLOR_SPACE_LINEAR_DISPLAY_P3)
+        return vector(0.48657094864821626 * c[0] + 0.26566769316909294 * c[1] + 0.19821728523436249 * c[2],
+                      0.22897456406974884 * c[0] + 0.69173852183650619 * c[1] + 0.079286914093744998 * c[2],
+                      0.045113381858902575 * c[1] + 1.0439443689009757 * c[2]);
+    if (space == PGLOSS_COLOR_SPACE_LINEAR_REC2020)
+        return vector(0.63695804830129132 * c[0] + 0.14461690358620838 * c[1] + 0.16888097516417205 * c[2],
+                      0.26270021201126703 * c[0] + 0.67799807151887104 * c[1] + 0.059301716469861945 * c[2],
+                      0.028072693049087508 * c[1] + 1.0609850577107909 * c[2]);
+    return vector(0.41239079926595948 * c[0] + 0.35758433938387796 * c[1] + 0.18048078840183429 * c[2],
+                  pgloss__luminance3(c),
+                  0.019330818715591851 * c[0] + 0.11919477979462599 * c[1] + 0.95053215224966058 * c[2]);
+}
+
+// (L*, a*, b*) → linear RGB of `space`. Errors: ARGUMENT (unknown space), NONFINITE,
+// LIGHTNESS, GAMUT (the values are still written).
+int pgloss_rgb_from_lab_ex(vector lab, int space, output color rgb)
 {
     rgb = color(0.0);
+    if (!pgloss__valid_color_space(space)) return PGLOSS_ERR_ARGUMENT;
     if (!pgloss__isfinite3(lab)) return PGLOSS_ERR_NONFINITE;
     if (lab[0] < 0.0 || lab[0] > 100.0) return PGLOSS_ERR_LIGHTNESS;
     float fy = (lab[0] + 16.0) / 116.0;
@@ -523,10 +577,7 @@ int pgloss_rgb_from_lab(vector lab, output color rgb)
     float Y;
     pgloss_luminance_from_lightness(lab[0], Y);
     float Z = PGLOSS__WHITE_Z * pgloss__lab_finv(fy - lab[2] / 200.0);
-    color o = color(
-         3.2409699419045213 * X - 1.5373831775700935 * Y - 0.49861076029300328 * Z,
-        -0.96924363628087983 * X + 1.8759675015077207 * Y + 0.041555057407175613 * Z,
-         0.055630079696993608 * X - 0.20397695888897656 * Y + 1.0569715142428786 * Z);
+    color o = pgloss__rgb_from_xyz(space, X, Y, Z);
     if (!pgloss__isfinite3(o)) return PGLOSS_ERR_NONFINITE;
     rgb = o;
     for (int k = 0; k < 3; ++k)
@@ -535,14 +586,20 @@ int pgloss_rgb_from_lab(vector lab, output color rgb)
     return PGLOSS_OK;
 }
 
-int pgloss_lab_from_rgb(color rgb, output vector lab)
+int pgloss_rgb_from_lab(vector lab, output color rgb)
+{
+    return pgloss_rgb_from_lab_ex(lab, PGLOSS_COLOR_SPACE_LINEAR_REC709, rgb);
+}
+
+// Linear RGB of `space` → (L*, a*, b*). Errors: ARGUMENT (unknown space), NONFINITE, NEGATIVE.
+int pgloss_lab_from_rgb_ex(color rgb, int space, output vector lab)
 {
     lab = vector(0.0);
+    if (!pgloss__valid_color_space(space)) return PGLOSS_ERR_ARGUMENT;
     if (!pgloss__isfinite3(rgb)) return PGLOSS_ERR_NONFINITE;
     if (rgb[0] < 0.0 || rgb[1] < 0.0 || rgb[2] < 0.0) return PGLOSS_ERR_NEGATIVE;
-    float X = 0.41239079926595948 * rgb[0] + 0.35758433938387796 * rgb[1] + 0.18048078840183429 * rgb[2];
-    float Y = 0.21263900587151036 * rgb[0] + 0.71516867876775593 * rgb[1] + 0.072192315360733715 * rgb[2];
-    float Z = 0.019330818715591851 * rgb[0] + 0.11919477979462599 * rgb[1] + 0.95053215224966058 * rgb[2];
+    vector xyz = pgloss__xyz_from_rgb(space, rgb);
+    float X = xyz[0], Y = xyz[1], Z = xyz[2];
     float fx = pgloss__lab_f(X / PGLOSS__WHITE_X), fy = pgloss__lab_f(Y), fz = pgloss__lab_f(Z / PGLOSS__WHITE_Z);
     vector o = vector(116.0 * fy - 16.0, 500.0 * (fx - fy), 200.0 * (fy - fz));
     if (!pgloss__isfinite3(o)) return PGLOSS_ERR_NONFINITE;
@@ -550,14 +607,28 @@ int pgloss_lab_from_rgb(color rgb, output vector lab)
     return PGLOSS_OK;
 }
 
-int pgloss_luminance(color rgb, output float Y)
+int pgloss_lab_from_rgb(color rgb, output vector lab)
+{
+    return pgloss_lab_from_rgb_ex(rgb, PGLOSS_COLOR_SPACE_LINEAR_REC709, lab);
+}
+
+// Luminance Y of linear RGB of `space` (the CIE Y: the same number in every space for one
+// colour). Errors: ARGUMENT (unknown space), NONFINITE.
+int pgloss_luminance_ex(color rgb, int space, output float Y)
 {
     Y = 0.0;
+    if (!pgloss__valid_color_space(space)) return PGLOSS_ERR_ARGUMENT;
     if (!pgloss__isfinite3(rgb)) return PGLOSS_ERR_NONFINITE;
-    float y = pgloss__luminance3(rgb);
+    vector xyz = pgloss__xyz_from_rgb(space, rgb);
+    float y = xyz[1];
     if (!isfinite(y)) return PGLOSS_ERR_NONFINITE;
     Y = y;
     return PGLOSS_OK;
+}
+
+int pgloss_luminance(color rgb, output float Y)
+{
+    return pgloss_luminance_ex(rgb, PGLOSS_COLOR_SPACE_LINEAR_REC709, Y);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -591,15 +662,17 @@ int pgloss_check_physical(pgloss_physical p)
     return PGLOSS_OK;
 }
 
-int pgloss_check_perceptual(pgloss_perceptual q)
+// GAMUT and ENERGY are decided in the working `space` (ARGUMENT if unknown).
+int pgloss_check_perceptual_ex(pgloss_perceptual q, int space)
 {
+    if (!pgloss__valid_color_space(space)) return PGLOSS_ERR_ARGUMENT;
     if (!isfinite(q.L) || !isfinite(q.a) || !isfinite(q.b) || !isfinite(q.c) || !isfinite(q.d))
         return PGLOSS_ERR_NONFINITE;
     if (q.L < 0.0 || q.L > 100.0) return PGLOSS_ERR_LIGHTNESS;
     if (q.c < 0.0) return PGLOSS_ERR_NEGATIVE;
     if (!(q.d < 1.0)) return PGLOSS_ERR_ALPHA;
     color rgb;
-    int st = pgloss_rgb_from_lab(vector(q.L, q.a, q.b), rgb);
+    int st = pgloss_rgb_from_lab_ex(vector(q.L, q.a, q.b), space, rgb);
     if (st != PGLOSS_OK) return st;
     float cmax;
     pgloss_envelope_contrast(q.L, cmax);
@@ -613,21 +686,29 @@ int pgloss_check_perceptual(pgloss_perceptual q)
     return PGLOSS_OK;
 }
 
-// Fig. 13: CIELAB → linear Rec. 709 ρd; ρs from eq. 7 with Y = f⁻¹(L); α = 1 - d (eq. 8).
-int pgloss_physical_from_perceptual(pgloss_perceptual q, int normalization, output pgloss_physical p)
+int pgloss_check_perceptual(pgloss_perceptual q)
+{
+    return pgloss_check_perceptual_ex(q, PGLOSS_COLOR_SPACE_LINEAR_REC709);
+}
+
+// Fig. 13: CIELAB → linear RGB ρd of the working `space` (ARGUMENT if unknown); ρs from
+// eq. 7 with Y = f⁻¹(L), the same in every space; α = 1 - d (eq. 8).
+int pgloss_physical_from_perceptual_ex(pgloss_perceptual q, int normalization, int space,
+                                       output pgloss_physical p)
 {
     p.rho_d = color(0.0);
     p.rho_s = 0.0;
     p.alpha_x = 0.0;
     p.alpha_y = 0.0;
     p.normalization = normalization;
+    if (!pgloss__valid_color_space(space)) return PGLOSS_ERR_ARGUMENT;
     if (!isfinite(q.a) || !isfinite(q.b)) return PGLOSS_ERR_NONFINITE;
     float y, rho_s, alpha;
     int st = pgloss_physical_from_gloss(q.L, q.c, q.d, y, rho_s, alpha);
     if (st < 0) return st;
     if (!pgloss__valid_normalization(normalization)) return PGLOSS_ERR_NORMALIZATION;
     color rgb;
-    int cs = pgloss_rgb_from_lab(vector(q.L, q.a, q.b), rgb);
+    int cs = pgloss_rgb_from_lab_ex(vector(q.L, q.a, q.b), space, rgb);
     if (cs != PGLOSS_OK && cs != PGLOSS_ERR_GAMUT) return cs;
     p.rho_d = rgb;
     p.rho_s = rho_s;
@@ -636,17 +717,23 @@ int pgloss_physical_from_perceptual(pgloss_perceptual q, int normalization, outp
     return cs != PGLOSS_OK ? cs : st;
 }
 
+int pgloss_physical_from_perceptual(pgloss_perceptual q, int normalization, output pgloss_physical p)
+{
+    return pgloss_physical_from_perceptual_ex(q, normalization, PGLOSS_COLOR_SPACE_LINEAR_REC709, p);
+}
+
 // The inverse; α = sqrt(αx αy) stands in for α in eq. 3 when the lobe is anisotropic.
-int pgloss_perceptual_from_physical(pgloss_physical p, output pgloss_perceptual q)
+int pgloss_perceptual_from_physical_ex(pgloss_physical p, int space, output pgloss_perceptual q)
 {
     q.L = 0.0; q.a = 0.0; q.b = 0.0; q.c = 0.0; q.d = 0.0;
+    if (!pgloss__valid_color_space(space)) return PGLOSS_ERR_ARGUMENT;
     int st = pgloss__check_physical_values(p);
     if (st != PGLOSS_OK) return st;
     vector lab;
     float y, c;
-    st = pgloss_lab_from_rgb(p.rho_d, lab);
+    st = pgloss_lab_from_rgb_ex(p.rho_d, space, lab);
     if (st != PGLOSS_OK) return st;
-    st = pgloss_luminance(p.rho_d, y);
+    st = pgloss_luminance_ex(p.rho_d, space, y);
     if (st != PGLOSS_OK) return st;
     st = pgloss_contrast_gloss(y, p.rho_s, c);
     if (st != PGLOSS_OK) return st;
@@ -655,6 +742,11 @@ int pgloss_perceptual_from_physical(pgloss_physical p, output pgloss_perceptual 
     q.c = c;
     q.d = pgloss__doi_from_alpha(alpha);
     return pgloss__alpha_status(alpha);
+}
+
+int pgloss_perceptual_from_physical(pgloss_physical p, output pgloss_perceptual q)
+{
+    return pgloss_perceptual_from_physical_ex(p, PGLOSS_COLOR_SPACE_LINEAR_REC709, q);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -888,6 +980,37 @@ int pgloss_sample(pgloss_material m, vector wo, float u[3], int lobes, output pg
     s.weight = color(pgloss__to_float(f[0] * cos_i / p), pgloss__to_float(f[1] * cos_i / p),
                      pgloss__to_float(f[2] * cos_i / p));
     return PGLOSS_OK;
+}
+
+// ---------------------------------------------------------------------------------------
+// Closures: eq. 2 as a renderer's closures (shared by pgloss_material.osl and the MaterialX
+// node materialx/genosl/mx_pgloss_bsdf.osl).
+//   diffuse lobe   ρd · diffuse(N)                  = ρd/π, exactly eq. 2's first term
+//   specular lobe  PGLOSS_HAVE_WARD defined:        ρs · ward(N, T, αx, αy)     (eq. 2 itself)
+//                  otherwise (Cycles has no ward):  ρs cosθo · microfacet("beckmann", N, α, 0, 0)
+// The Beckmann NDF has Ward's exponent exp(-tan²θh/α²), so α maps to α; without Fresnel,
+// f = D G / (4 ci co) against Ward's D cos⁴θh / (4 sqrt(ci co)): the plain weight ρs is 1/cosθo
+// too bright at the mirror peak, and the weight ρs cosθo (θo from the view direction I) makes
+// the peak exact and the directional albedo within 0.5 % (α = 0.04), 1.5 % (0.07), 3 % (0.10)
+// of eq. 2 for θo <= 70° (examples/osl/closure_mapping.py measures it against libpgloss).
+// `m` comes from pgloss_material_init; T is the tangent (used by ward() only).
+
+closure color pgloss_closure(pgloss_material m, normal Nn, vector Iv, vector T)
+{
+    closure color bsdf = 0;
+    if (m.lobes & PGLOSS_LOBE_DIFFUSE)
+        bsdf += m.rho_d * diffuse(Nn);
+    if (m.lobes & PGLOSS_LOBE_SPECULAR) {
+#ifdef PGLOSS_HAVE_WARD
+        bsdf += m.rho_s * ward(Nn, T, m.alpha_x, m.alpha_y);
+#else
+        // |cos θo|: the OSL spec has I pointing at the surface, Cycles passes it pointing away
+        // (towards the viewer); the absolute value is right under either convention.
+        float cos_o = abs(dot(normalize(Nn), normalize(Iv)));
+        bsdf += (m.rho_s * cos_o) * microfacet("beckmann", Nn, m.alpha_x, 0.0, 0);
+#endif
+    }
+    return bsdf;
 }
 
 #endif // PGLOSS_OSL_H

@@ -25,6 +25,7 @@ if [[ ! -x $venv/bin/python ]] || ! $venv/bin/python -c "$check_pins" 2>/dev/nul
   "$venv/bin/pip" install -q --disable-pip-version-check "${pins[@]}"
 fi
 $venv/bin/python -c 'import sys; assert sys.version_info[:2] == (3, 11), "bpy 5.0.1 needs CPython 3.11"'
+[[ ${PGLOSS_OSL_SETUP_ONLY:-0} == 1 ]] && exit 0
 
 start=$SECONDS
 cd tests/osl

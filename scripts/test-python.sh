@@ -4,7 +4,7 @@
 # The Python package's tests (bindings/python, issue 3): set up, `pip install .` at the
 # repository root into the venv .venv-py, then pytest tests/python — the shared vectors,
 # the binding's behaviour, the figures command, a smoke run of the benchmark and pgloss.psychophysics
-# (scipy: its runtime dependency; scikit-learn: the peer of its tests only).
+# (scipy: its runtime dependency; scikit-learn: the peer of its tests only; colour-science: the peer of the working-colour-space tests only).
 # Nothing is skipped: with PGLOSS_REQUIRE_ALL=1 (the default here, and what CI sets) a skipped
 # test is a failure. Quick when run again: the venv is kept while the pins are unchanged, the
 # package is reinstalled only when its sources changed, and CMake's build folder
@@ -17,7 +17,7 @@ bash scripts/bootstrap.sh apt g++ python3 python3-venv python3-dev
 root=$PWD
 venv=.venv-py
 py=$venv/bin/python
-pins=(scikit-build-core==1.1.2 pybind11==3.1.0 numpy==2.4.6 scipy==1.17.1 matplotlib==3.11.2 scikit-learn==1.9.1 pytest==9.2.0)
+pins=(scikit-build-core==1.1.2 pybind11==3.1.0 numpy==2.4.6 scipy==1.17.1 matplotlib==3.11.2 scikit-learn==1.9.1 pytest==9.2.0 colour-science==0.4.7)
 if [[ ! -x $py ]] || [[ "$(cat "$venv/.pgloss-pins" 2>/dev/null)" != "${pins[*]}" ]]; then
   echo "== creating $venv (${pins[*]})"
   rm -rf "$venv"

@@ -12,7 +12,9 @@ bash scripts/test-core.sh
 bash scripts/test-package.sh
 bash scripts/test-python.sh
 bash scripts/test-glsl.sh
+bash scripts/test-materialx.sh
 bash scripts/test-osl.sh
+bash scripts/test-blender.sh
 bash scripts/test-tracer.sh
 bash scripts/test-web.sh
 bash scripts/test-experiment.sh

@@ -45,6 +45,14 @@ extern "C" {
 // test_vectors_shim.c: pgloss_physical_from_perceptual with the normalization as an int.
 pgloss_status pgloss_test_physical_from_perceptual(const pgloss_perceptual *q, int normalization,
                                                    pgloss_physical *p);
+// ... and the _ex functions with the working colour space as an int.
+pgloss_status pgloss_test_rgb_from_lab_ex(const double lab[3], int space, double rgb[3]);
+pgloss_status pgloss_test_lab_from_rgb_ex(const double rgb[3], int space, double lab[3]);
+pgloss_status pgloss_test_luminance_ex(const double rgb[3], int space, double *Y);
+pgloss_status pgloss_test_check_perceptual_ex(const pgloss_perceptual *q, int space);
+pgloss_status pgloss_test_physical_from_perceptual_ex(const pgloss_perceptual *q, int normalization, int space,
+                                                      pgloss_physical *p);
+pgloss_status pgloss_test_perceptual_from_physical_ex(const pgloss_physical *p, int space, pgloss_perceptual *q);
 }
 
 #ifndef PGLOSS_VECTORS_DIR
@@ -70,8 +78,8 @@ struct LoadedFile {
 };
 
 const char *const kFiles[] = {"lightness.json", "gloss.json", "color.json", "validity.json",
-                              "perceptual_material.json", "material.json", "brdf_eval.json",
-                              "brdf_sample.json"};
+                              "perceptual_material.json", "color_space.json", "material.json",
+                              "brdf_eval.json", "brdf_sample.json"};
 
 const LoadedFile &load_file(const std::string &name) {
     static std::map<std::string, LoadedFile> cache;
@@ -333,6 +341,9 @@ TEST(Vectors, FilesPresentAndCovered) {
         {"color.json", {"rgb_from_lab", "lab_from_rgb", "luminance"}},
         {"validity.json", {"check_physical", "check_perceptual"}},
         {"perceptual_material.json", {"physical_from_perceptual", "perceptual_from_physical"}},
+        {"color_space.json",
+         {"rgb_from_lab_ex", "lab_from_rgb_ex", "luminance_ex", "check_perceptual_ex", "physical_from_perceptual_ex",
+          "perceptual_from_physical_ex"}},
         {"material.json", {"material_init", "specular_probability"}},
         {"brdf_eval.json", {"eval", "pdf", "eval_pdf", "eval_batch", "pdf_batch", "eval_pdf_batch"}},
         {"brdf_sample.json", {"sample", "sample_batch"}},
@@ -572,6 +583,92 @@ TEST(Vectors, perceptual_from_physical) {
         pgloss_perceptual q{kNaN, kNaN, kNaN, kNaN, kNaN};
         const pgloss_status st =
             pgloss_perceptual_from_physical(is_null_arg(c, "p") ? nullptr : &p, is_null_arg(c, "q") ? nullptr : &q);
+        check_status(fn, c, st);
+        check_d(doc, fn, "L", c, q.L);
+        check_d(doc, fn, "a", c, q.a);
+        check_d(doc, fn, "b", c, q.b);
+        check_d(doc, fn, "c", c, q.c);
+        check_d(doc, fn, "d", c, q.d);
+    });
+}
+
+// ------------------------------------------------------------------------------------------
+// color_space.json: the _ex functions in every working colour space.
+
+int space_of(const json &c) { return c["input"]["space"].get<int>(); }
+
+TEST(Vectors, rgb_from_lab_ex) {
+    for_cases("color_space.json", "rgb_from_lab_ex", [](const json &doc, const json &c) {
+        double lab[3], rgb[3] = {kNaN, kNaN, kNaN};
+        for (int k = 0; k < 3; ++k) lab[k] = num(c["input"]["lab"][static_cast<size_t>(k)]);
+        const pgloss_status st = pgloss_test_rgb_from_lab_ex(is_null_arg(c, "lab") ? nullptr : lab, space_of(c),
+                                                             is_null_arg(c, "rgb") ? nullptr : rgb);
+        check_status("rgb_from_lab_ex", c, st);
+        check_d3(doc, "rgb_from_lab_ex", "rgb", c, rgb);
+    });
+}
+
+TEST(Vectors, lab_from_rgb_ex) {
+    for_cases("color_space.json", "lab_from_rgb_ex", [](const json &doc, const json &c) {
+        double rgb[3], lab[3] = {kNaN, kNaN, kNaN};
+        for (int k = 0; k < 3; ++k) rgb[k] = num(c["input"]["rgb"][static_cast<size_t>(k)]);
+        const pgloss_status st = pgloss_test_lab_from_rgb_ex(is_null_arg(c, "rgb") ? nullptr : rgb, space_of(c),
+                                                             is_null_arg(c, "lab") ? nullptr : lab);
+        check_status("lab_from_rgb_ex", c, st);
+        check_d3(doc, "lab_from_rgb_ex", "lab", c, lab);
+    });
+}
+
+TEST(Vectors, luminance_ex) {
+    for_cases("color_space.json", "luminance_ex", [](const json &doc, const json &c) {
+        double rgb[3], Y = kNaN;
+        for (int k = 0; k < 3; ++k) rgb[k] = num(c["input"]["rgb"][static_cast<size_t>(k)]);
+        const pgloss_status st = pgloss_test_luminance_ex(is_null_arg(c, "rgb") ? nullptr : rgb, space_of(c),
+                                                          is_null_arg(c, "Y") ? nullptr : &Y);
+        check_status("luminance_ex", c, st);
+        check_d(doc, "luminance_ex", "Y", c, Y);
+    });
+}
+
+TEST(Vectors, check_perceptual_ex) {
+    for_cases("color_space.json", "check_perceptual_ex", [](const json &, const json &c) {
+        const pgloss_perceptual q = perceptual_from(c["input"]["q"]);
+        check_status("check_perceptual_ex", c,
+                     pgloss_test_check_perceptual_ex(is_null_arg(c, "q") ? nullptr : &q, space_of(c)));
+    });
+}
+
+TEST(Vectors, physical_from_perceptual_ex) {
+    for_cases("color_space.json", "physical_from_perceptual_ex", [](const json &doc, const json &c) {
+        const char *fn = "physical_from_perceptual_ex";
+        const pgloss_perceptual q = perceptual_from(c["input"]["q"]);
+        const int norm = c["input"]["normalization"].get<int>();
+        pgloss_physical p;
+        p.rho_d[0] = p.rho_d[1] = p.rho_d[2] = p.rho_s = p.alpha_x = p.alpha_y = kNaN;
+        const pgloss_status st = pgloss_test_physical_from_perceptual_ex(
+            is_null_arg(c, "q") ? nullptr : &q, norm, space_of(c), is_null_arg(c, "p") ? nullptr : &p);
+        check_status(fn, c, st);
+        const json &e = c["expected"];
+        if (!e.contains("rho_d")) return;
+        check_d3(doc, fn, "rho_d", c, p.rho_d);
+        check_d(doc, fn, "rho_s", c, p.rho_s);
+        check_d(doc, fn, "alpha_x", c, p.alpha_x);
+        check_d(doc, fn, "alpha_y", c, p.alpha_y);
+        if (!e["normalization"].is_null()) {
+            int got;
+            std::memcpy(&got, &p.normalization, sizeof got);
+            EXPECT_EQ(got, e["normalization"].get<int>()) << case_id(c);
+        }
+    });
+}
+
+TEST(Vectors, perceptual_from_physical_ex) {
+    for_cases("color_space.json", "perceptual_from_physical_ex", [](const json &doc, const json &c) {
+        const char *fn = "perceptual_from_physical_ex";
+        const pgloss_physical p = physical_from(c["input"]["p"]);
+        pgloss_perceptual q{kNaN, kNaN, kNaN, kNaN, kNaN};
+        const pgloss_status st = pgloss_test_perceptual_from_physical_ex(is_null_arg(c, "p") ? nullptr : &p,
+                                                                         space_of(c), is_null_arg(c, "q") ? nullptr : &q);
         check_status(fn, c, st);
         check_d(doc, fn, "L", c, q.L);
         check_d(doc, fn, "a", c, q.a);

@@ -44,6 +44,12 @@ static inline double pgloss__doi_from_alpha(double alpha)
     return d < 1.0 ? d : 1.0 - 0x1p-53;
 }
 
+/* A known pgloss_color_space (an int from another language may hold anything). */
+static inline int pgloss__valid_color_space(pgloss_color_space space)
+{
+    return (int)space >= (int)PGLOSS_COLOR_SPACE_LINEAR_REC709 && (int)space <= (int)PGLOSS_COLOR_SPACE_LINEAR_REC2020;
+}
+
 static inline double pgloss__luminance3(double r, double g, double b)
 {
     return PGLOSS_LUMA_R * r + PGLOSS_LUMA_G * g + PGLOSS_LUMA_B * b;

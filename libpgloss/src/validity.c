@@ -43,10 +43,12 @@ pgloss_status pgloss_check_physical(const pgloss_physical *p)
     return PGLOSS_OK;
 }
 
-pgloss_status pgloss_check_perceptual(const pgloss_perceptual *q)
+pgloss_status pgloss_check_perceptual_ex(const pgloss_perceptual *q, pgloss_color_space space)
 {
     if (!q)
         return PGLOSS_ERR_NULL;
+    if (!pgloss__valid_color_space(space))
+        return PGLOSS_ERR_ARGUMENT;
     /* α = 1 − d above FLT_MAX: no material can hold it (as pgloss_check_physical). */
     if (!isfinite(q->L) || !isfinite(q->a) || !isfinite(q->b) || !isfinite(q->c) || !isfinite(q->d) ||
         1.0 - q->d > FLT_MAX)
@@ -59,7 +61,7 @@ pgloss_status pgloss_check_perceptual(const pgloss_perceptual *q)
         return PGLOSS_ERR_ALPHA;
     const double lab[3] = {q->L, q->a, q->b};
     double rgb[3];
-    pgloss_status st = pgloss_rgb_from_lab(lab, rgb);
+    pgloss_status st = pgloss_rgb_from_lab_ex(lab, space, rgb);
     if (st != PGLOSS_OK)
         return st;
     double cmax;
@@ -78,6 +80,11 @@ pgloss_status pgloss_check_perceptual(const pgloss_perceptual *q)
     return PGLOSS_OK;
 }
 
+pgloss_status pgloss_check_perceptual(const pgloss_perceptual *q)
+{
+    return pgloss_check_perceptual_ex(q, PGLOSS_COLOR_SPACE_LINEAR_REC709);
+}
+
 static void zero_physical(pgloss_physical *p, pgloss_normalization n)
 {
     p->rho_d[0] = p->rho_d[1] = p->rho_d[2] = 0.0;
@@ -86,15 +93,17 @@ static void zero_physical(pgloss_physical *p, pgloss_normalization n)
     p->normalization = n;
 }
 
-pgloss_status pgloss_physical_from_perceptual(const pgloss_perceptual *q,
-                                              pgloss_normalization normalization,
-                                              pgloss_physical *p)
+pgloss_status pgloss_physical_from_perceptual_ex(const pgloss_perceptual *q,
+                                                 pgloss_normalization normalization,
+                                                 pgloss_color_space space, pgloss_physical *p)
 {
     if (!p)
         return PGLOSS_ERR_NULL;
     zero_physical(p, normalization);
     if (!q)
         return PGLOSS_ERR_NULL;
+    if (!pgloss__valid_color_space(space))
+        return PGLOSS_ERR_ARGUMENT;
     if (!isfinite(q->a) || !isfinite(q->b))
         return PGLOSS_ERR_NONFINITE;
     double y, rho_s, alpha;
@@ -105,7 +114,7 @@ pgloss_status pgloss_physical_from_perceptual(const pgloss_perceptual *q,
         return PGLOSS_ERR_NORMALIZATION;
     const double lab[3] = {q->L, q->a, q->b};
     double rgb[3];
-    const pgloss_status cs = pgloss_rgb_from_lab(lab, rgb);
+    const pgloss_status cs = pgloss_rgb_from_lab_ex(lab, space, rgb);
     if (cs != PGLOSS_OK && cs != PGLOSS_ERR_GAMUT)
         return cs;
     p->rho_d[0] = rgb[0]; p->rho_d[1] = rgb[1]; p->rho_d[2] = rgb[2];
@@ -114,21 +123,31 @@ pgloss_status pgloss_physical_from_perceptual(const pgloss_perceptual *q,
     return cs != PGLOSS_OK ? cs : st;
 }
 
-pgloss_status pgloss_perceptual_from_physical(const pgloss_physical *p, pgloss_perceptual *q)
+pgloss_status pgloss_physical_from_perceptual(const pgloss_perceptual *q,
+                                              pgloss_normalization normalization,
+                                              pgloss_physical *p)
+{
+    return pgloss_physical_from_perceptual_ex(q, normalization, PGLOSS_COLOR_SPACE_LINEAR_REC709, p);
+}
+
+pgloss_status pgloss_perceptual_from_physical_ex(const pgloss_physical *p, pgloss_color_space space,
+                                                 pgloss_perceptual *q)
 {
     if (!q)
         return PGLOSS_ERR_NULL;
     q->L = q->a = q->b = q->c = q->d = 0.0;
     if (!p)
         return PGLOSS_ERR_NULL;
+    if (!pgloss__valid_color_space(space))
+        return PGLOSS_ERR_ARGUMENT;
     const pgloss_status basic = pgloss__check_physical_values(p, DBL_MAX);
     if (basic != PGLOSS_OK)
         return basic;
     double lab[3], y, c;
-    pgloss_status st = pgloss_lab_from_rgb(p->rho_d, lab);
+    pgloss_status st = pgloss_lab_from_rgb_ex(p->rho_d, space, lab);
     if (st != PGLOSS_OK)
         return st;
-    st = pgloss_luminance(p->rho_d, &y);
+    st = pgloss_luminance_ex(p->rho_d, space, &y);
     if (st != PGLOSS_OK)
         return st;
     st = pgloss_contrast_gloss(y, p->rho_s, &c);
@@ -144,4 +163,9 @@ pgloss_status pgloss_perceptual_from_physical(const pgloss_physical *p, pgloss_p
      * spreads beyond the trusted range? (Not the geometric mean used for d.) */
     return fmax(p->alpha_x, p->alpha_y) > PGLOSS_ALPHA_TRUSTED_MAX ? PGLOSS_WARN_ALPHA_UNTRUSTED
                                                                    : PGLOSS_OK;
+}
+
+pgloss_status pgloss_perceptual_from_physical(const pgloss_physical *p, pgloss_perceptual *q)
+{
+    return pgloss_perceptual_from_physical_ex(p, PGLOSS_COLOR_SPACE_LINEAR_REC709, q);
 }

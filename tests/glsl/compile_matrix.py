@@ -110,6 +110,13 @@ vec4 pgloss_probe(vec4 in0, vec4 in1, vec4 in2, vec4 in3)
     pgloss_physical p2;
     st += pgloss_physical_from_perceptual(q, int(in1.z), p2); acc += vec4(p2.rho_d, p2.rho_s);
     st += pgloss_perceptual_from_physical(p, q); acc += vec4(q.L, q.a, q.b, q.c + q.d);
+    int sp = int(in1.w);
+    st += pgloss_rgb_from_lab_ex(in2.xyz, sp, v); acc.xyz += v;
+    st += pgloss_lab_from_rgb_ex(in3.xyz, sp, v); acc.xyz += v;
+    st += pgloss_luminance_ex(in3.xyz, sp, a); acc.x += a;
+    st += pgloss_check_perceptual_ex(q, sp);
+    st += pgloss_physical_from_perceptual_ex(q, int(in1.z), sp, p2); acc += vec4(p2.rho_d, p2.rho_s);
+    st += pgloss_perceptual_from_physical_ex(p, sp, q); acc += vec4(q.L, q.a, q.b, q.c + q.d);
 #endif
     return acc + vec4(float(st));
 }

@@ -61,7 +61,8 @@ FN = {name: k for k, name in enumerate([
     "envelope_contrast", "match_gloss", "isogloss_contour", "rgb_from_lab", "lab_from_rgb",
     "luminance", "check_physical", "check_perceptual", "physical_from_perceptual",
     "perceptual_from_physical", "material_init", "specular_probability", pv.BRDF_EVAL,
-    pv.BRDF_SAMPLE])}
+    pv.BRDF_SAMPLE, "rgb_from_lab_ex", "lab_from_rgb_ex", "luminance_ex", "check_perceptual_ex",
+    "physical_from_perceptual_ex", "perceptual_from_physical_ex"])}
 
 NF_IN, NU_IN, NF_OUT, NI_OUT = 16, 4, 16, 4
 
@@ -147,6 +148,21 @@ void pgloss_run(uint j) {
     else if (fn == 16u) {
         pgloss_perceptual q;
         st = pgloss_perceptual_from_physical(P(j), q);
+        O(j, 0u, q.L); O(j, 1u, q.a); O(j, 2u, q.b); O(j, 3u, q.c); O(j, 4u, q.d);
+    }
+    /* The _ex functions: the working colour space is U(j, 3u). */
+    else if (fn == 21u) { st = pgloss_rgb_from_lab_ex(F3(j, 0u), int(U(j, 3u)), v); O3(j, 0u, v); }
+    else if (fn == 22u) { st = pgloss_lab_from_rgb_ex(F3(j, 0u), int(U(j, 3u)), v); O3(j, 0u, v); }
+    else if (fn == 23u) { st = pgloss_luminance_ex(F3(j, 0u), int(U(j, 3u)), a); O(j, 0u, a); }
+    else if (fn == 24u) { st = pgloss_check_perceptual_ex(pgloss_perceptual(F(j, 0u), F(j, 1u), F(j, 2u), F(j, 3u), F(j, 4u)), int(U(j, 3u))); }
+    else if (fn == 25u) {
+        pgloss_physical p;
+        st = pgloss_physical_from_perceptual_ex(pgloss_perceptual(F(j, 0u), F(j, 1u), F(j, 2u), F(j, 3u), F(j, 4u)), int(U(j, 1u)), int(U(j, 3u)), p);
+        O3(j, 0u, p.rho_d); O(j, 3u, p.rho_s); O(j, 4u, p.alpha_x); O(j, 5u, p.alpha_y); I(j, 1u, p.normalization);
+    }
+    else if (fn == 26u) {
+        pgloss_perceptual q;
+        st = pgloss_perceptual_from_physical_ex(P(j), int(U(j, 3u)), q);
         O(j, 0u, q.L); O(j, 1u, q.a); O(j, 2u, q.b); O(j, 3u, q.c); O(j, 4u, q.d);
     }
 #endif
@@ -248,14 +264,17 @@ def jobs_of(file: str, rep: pv.Report) -> list[Job]:
             extra = inp["wi"] if fn == pv.BRDF_EVAL else inp["u"]
             fin = pf + [num(x) for x in inp["wo"]] + [num(x) for x in extra]
             jobs.append(Job(c, fn, fin, [FN[fn], norm, u32(int(inp["lobes"])), 0]))
-        elif fn in ("material_init", "specular_probability", "check_physical", "perceptual_from_physical"):
+        elif fn in ("material_init", "specular_probability", "check_physical", "perceptual_from_physical",
+                    "perceptual_from_physical_ex"):
             pf, norm = physical_floats(inp["p"])
             lobes = u32(int(inp.get("lobes", 0)))
-            jobs.append(Job(c, fn, pf, [FN[fn], norm, lobes, 0]))
-        elif fn in ("check_perceptual", "physical_from_perceptual"):
+            jobs.append(Job(c, fn, pf, [FN[fn], norm, lobes, u32(int(inp.get("space", 0)))]))
+        elif fn in ("check_perceptual", "physical_from_perceptual", "check_perceptual_ex",
+                    "physical_from_perceptual_ex"):
             q = inp["q"]
             fin = [num(q[k]) for k in "Labcd"]
-            jobs.append(Job(c, fn, fin, [FN[fn], u32(int(inp.get("normalization", 0))), 0, 0]))
+            jobs.append(Job(c, fn, fin, [FN[fn], u32(int(inp.get("normalization", 0))), 0,
+                                         u32(int(inp.get("space", 0)))]))
         elif fn == "isogloss_contour":
             fin = [num(inp["c0"]), num(inp["d0"]), num(inp["D"])]
             n = int(inp["n"])
@@ -263,9 +282,10 @@ def jobs_of(file: str, rep: pv.Report) -> list[Job]:
                 jobs.append(Job(c, fn, fin, [FN[fn], 0, k, n], point=k))
         elif fn in SCALAR_INPUTS:
             jobs.append(Job(c, fn, [num(inp[k]) for k in SCALAR_INPUTS[fn]], [FN[fn], 0, 0, 0]))
-        elif fn in ("rgb_from_lab", "lab_from_rgb", "luminance"):
-            fin = [num(x) for x in inp["lab" if fn == "rgb_from_lab" else "rgb"]]
-            jobs.append(Job(c, fn, fin, [FN[fn], 0, 0, 0]))
+        elif fn in ("rgb_from_lab", "lab_from_rgb", "luminance", "rgb_from_lab_ex", "lab_from_rgb_ex",
+                    "luminance_ex"):
+            fin = [num(x) for x in inp["lab" if fn.startswith("rgb_from_lab") else "rgb"]]
+            jobs.append(Job(c, fn, fin, [FN[fn], 0, 0, u32(int(inp.get("space", 0)))]))
         else:
             raise ValueError(f"{c['id']}: unknown function {fn}")
     return jobs
@@ -420,6 +440,9 @@ OUTPUT_SLOTS: dict[str, dict[str, int | tuple[int, int]]] = {
     "physical_from_perceptual": {"rho_d": (0, 3), "rho_s": 3, "alpha_x": 4, "alpha_y": 5},
     "check_physical": {}, "check_perceptual": {},
 }
+OUTPUT_SLOTS.update({f + "_ex": OUTPUT_SLOTS[f] for f in (
+    "rgb_from_lab", "lab_from_rgb", "luminance", "check_perceptual", "physical_from_perceptual",
+    "perceptual_from_physical")})
 MATERIAL_SLOTS = {"rho_d": (0, 3), "rho_s": 3, "alpha_x": 4, "alpha_y": 5, "inv_alpha_x": 6, "inv_alpha_y": 7,
                   "spec_scale": 8, "pdf_scale": 9, "weight_diffuse": 10, "weight_specular": 11}
 
@@ -501,7 +524,7 @@ def compare_file(rep: pv.Report, file: str, doc: dict, jobs: list[Job], fout: np
             got = {"c": [fout[r, 0] for r in rows[:n]], "d": [fout[r, 1] for r in rows[:n]]}
         else:
             got = _read(o, OUTPUT_SLOTS[fn])
-            if fn == "physical_from_perceptual":
+            if fn in ("physical_from_perceptual", "physical_from_perceptual_ex"):
                 got["normalization"] = int(io[1])
         rep.outputs(doc, fn, c, got, PRECISION, values)
 

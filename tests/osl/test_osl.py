@@ -79,7 +79,8 @@ def test_vectors_all_files_and_functions(vector_report: vo.pv.Report) -> None:
                "gloss_from_physical", "physical_from_gloss", "gloss_distance", "envelope_contrast", "match_gloss",
                "isogloss_contour", "rgb_from_lab", "lab_from_rgb", "luminance", "physical_from_perceptual",
                "perceptual_from_physical", "material_init", "specular_probability", "eval", "pdf", "eval_pdf",
-               "sample"):
+               "sample", "rgb_from_lab_ex", "lab_from_rgb_ex", "luminance_ex", "physical_from_perceptual_ex",
+               "perceptual_from_physical_ex"):
         assert fn in names, f"no checked output for {fn}"
     assert vector_report.n_cases > 3900
 
@@ -124,10 +125,49 @@ def test_params_shader_fig12(output: str, tmp_path: Path) -> None:
         assert abs(want - 0.767) < 1e-12 and abs(al.value - 0.04) < 1e-12
 
 
+def _furnace_scene(samples: int, size: int = 64):
+    """A sphere seen head-on (orthographic) inside a uniform white environment of radiance 1
+    (a furnace): a pixel shows the directional albedo at its θo. Returns (scene, sphere)."""
+    import bpy
+
+    sc = oslrt.reset_scene()
+    sc.cycles.samples = samples
+    sc.cycles.use_denoising = False
+    sc.cycles.max_bounces = 1
+    sc.cycles.seed = 0
+    sc.render.resolution_x = sc.render.resolution_y = size
+    bpy.ops.mesh.primitive_uv_sphere_add(radius=1.0, segments=128, ring_count=64)
+    bpy.ops.object.shade_smooth()
+    ob = bpy.context.object
+    cam = bpy.data.cameras.new("c")
+    cam.type = "ORTHO"
+    cam.ortho_scale = 2.2
+    co = bpy.data.objects.new("c", cam)
+    sc.collection.objects.link(co)
+    co.location = (0, 0, 5)
+    sc.camera = co
+    w = bpy.data.worlds.new("w")
+    for n in w.node_tree.nodes:
+        if n.type == "BACKGROUND":
+            n.inputs["Color"].default_value = (1, 1, 1, 1)
+            n.inputs["Strength"].default_value = 1.0
+    sc.world = w
+    return sc, ob
+
+
+def _render_centre(sc, path: Path) -> np.ndarray:
+    """Renders the scene to ``path``; the 9 x 9 pixels around the centre (θo < 13° at 64 px)."""
+    import bpy
+
+    sc.render.filepath = str(path)
+    bpy.ops.render.render(write_still=True)
+    img = np.asarray(oslrt.oiio.ImageBuf(str(path)).get_pixels(oslrt.oiio.FLOAT))[:, :, :3]
+    c = img.shape[0] // 2
+    return img[c - 4:c + 5, c - 4:c + 5].astype(np.float64)
+
+
 def _furnace(inputs: dict, tmp_path: Path, samples: int = 256) -> np.ndarray:
-    """pgloss_material.osl on a sphere seen head-on (orthographic) inside a uniform white
-    environment of radiance 1 (a furnace): a pixel shows the directional albedo at its θo.
-    Returns the 9 x 9 pixels around the centre (θo < 13°)."""
+    """pgloss_material.osl (external file) in the furnace; the 9 x 9 centre pixels."""
     import bpy
 
     sc = oslrt.reset_scene()
@@ -222,3 +262,61 @@ shader near_mirror(float A[{n}] = {arr(c["alpha"])},
     img = oslrt.render_shader(src, W, max(H, 4), oslrt.WORK / "near_mirror.exr").reshape(-1, 3)[:n]
     img = img.astype(np.float64) / vo.SCALE
     print("\nOSL " + nm.check(img[:, 0], img[:, 1], img[:, 2], c))
+
+
+def test_material_working_color_space(tmp_path: Path) -> None:
+    """The shader's colour-space input: a neutral paint (L* = 50, a* = b* = 0, c = 0) is
+    R = G = B = f⁻¹(50) in ACEScg as in Rec. 709 (CIELAB is D65; ACEScg is Bradford-adapted)."""
+    img = _furnace({"use_physical": False, "Lightness": 50.0, "contrast_gloss": 0.0, "color_space": 1}, tmp_path)
+    assert np.allclose(img.mean(axis=(0, 1)), 0.18418651851244414, rtol=0.01), img.mean(axis=(0, 1))
+
+
+def _internal_script_material(text_name: str, source: str):
+    """A material whose script node is an Internal script (a text datablock, as packed in a .blend)."""
+    import bpy
+
+    mat, nt, out = oslrt.empty_material("m")
+    txt = bpy.data.texts.new(text_name)
+    txt.from_string(source)
+    scr = nt.nodes.new("ShaderNodeScript")
+    scr.mode = "INTERNAL"
+    scr.script = txt
+    return mat, nt, scr, out
+
+
+def test_include_based_shader_fails_as_internal_script() -> None:
+    """The bug the standalone shader fixes: osl/pgloss_material.osl as an Internal script has no
+    directory to find pgloss.h in, so it does not compile (the node gets no sockets)."""
+    oslrt.reset_scene()
+    _, _, scr, _ = _internal_script_material("pgloss_material.osl",
+                                             (oslrt.OSL_DIR / "pgloss_material.osl").read_text())
+    assert not scr.outputs
+
+
+def test_standalone_shader_packed_in_blend_renders(tmp_path: Path) -> None:
+    """osl/standalone/pgloss_material.osl as an Internal script: saved in a .blend, reopened and
+    rendered, it matches the include-based shader (External file) on the same scene within noise."""
+    import bpy
+
+    inputs = {"use_physical": False, "Lightness": 60.0, "a_star": 20.0, "b_star": -10.0,
+              "contrast_gloss": 0.05, "distinctness_gloss": 0.93}
+    ref = _furnace(inputs, tmp_path, samples=128).mean(axis=(0, 1))
+
+    sc, ob = _furnace_scene(samples=128)
+    src = (oslrt.OSL_DIR / "standalone" / "pgloss_material.osl").read_text()
+    mat, nt, scr, out = _internal_script_material("pgloss_material.osl", src)
+    assert scr.outputs, "the standalone shader does not compile as an Internal script"
+    for k, v in inputs.items():
+        scr.inputs[k].default_value = v
+    nt.links.new(scr.outputs["BSDF"], out.inputs["Surface"])
+    ob.data.materials.append(mat)
+    blend = tmp_path / "standalone.blend"
+    bpy.ops.wm.save_as_mainfile(filepath=str(blend))
+
+    bpy.ops.wm.open_mainfile(filepath=str(blend))
+    sc = bpy.context.scene
+    node = next(n for n in bpy.data.materials["m"].node_tree.nodes if n.type == "SCRIPT")
+    assert node.mode == "INTERNAL" and node.script is not None and node.script.as_string() == src
+    got = _render_centre(sc, tmp_path / "standalone.exr").mean(axis=(0, 1))
+    assert np.all(got > 0.05), got
+    np.testing.assert_allclose(got, ref, rtol=0.03)

@@ -138,6 +138,29 @@ def _fns() -> dict:
         _P_DECL + " pgloss_perceptual q; st = pgloss_perceptual_from_physical(p, q);"
         " res[0] = q.L; res[1] = q.a; res[2] = q.b; res[3] = q.c; res[4] = q.d;",
         {"L": (0, 1), "a": (1, 1), "b": (2, 1), "c": (3, 1), "d": (4, 1)}, 5)
+    # The _ex functions (color_space.json): the working colour space is the last int input.
+    sp = lambda c: [int32(c["input"]["space"])]  # noqa: E731
+    add("rgb_from_lab_ex", lambda c: [num(x) for x in c["input"]["lab"]], sp,
+        "color o; st = pgloss_rgb_from_lab_ex(vector(fin[0], fin[1], fin[2]), iin[0], o);"
+        " res[0] = o[0]; res[1] = o[1]; res[2] = o[2];", {"rgb": (0, 3)}, 3)
+    add("lab_from_rgb_ex", lambda c: [num(x) for x in c["input"]["rgb"]], sp,
+        "vector o; st = pgloss_lab_from_rgb_ex(color(fin[0], fin[1], fin[2]), iin[0], o);"
+        " res[0] = o[0]; res[1] = o[1]; res[2] = o[2];", {"lab": (0, 3)}, 3)
+    add("luminance_ex", lambda c: [num(x) for x in c["input"]["rgb"]], sp,
+        "float o; st = pgloss_luminance_ex(color(fin[0], fin[1], fin[2]), iin[0], o); res[0] = o;", {"Y": (0, 1)}, 1)
+    add("check_perceptual_ex", lambda c: _q_floats(c["input"]["q"]), sp,
+        _Q_DECL + " st = pgloss_check_perceptual_ex(q, iin[0]);", {}, 0)
+    add("physical_from_perceptual_ex", lambda c: _q_floats(c["input"]["q"]),
+        lambda c: [int32(c["input"]["normalization"]), int32(c["input"]["space"])],
+        _Q_DECL + " pgloss_physical p; st = pgloss_physical_from_perceptual_ex(q, iin[0], iin[1], p);"
+        " res[0] = p.rho_d[0]; res[1] = p.rho_d[1]; res[2] = p.rho_d[2]; res[3] = p.rho_s;"
+        " res[4] = p.alpha_x; res[5] = p.alpha_y; res[6] = (float)p.normalization;",
+        {"rho_d": (0, 3), "rho_s": (3, 1), "alpha_x": (4, 1), "alpha_y": (5, 1), "normalization": (6, 1)}, 7)
+    add("perceptual_from_physical_ex", lambda c: _p_floats(c["input"]["p"]),
+        lambda c: [int32(c["input"]["p"]["normalization"]), int32(c["input"]["space"])],
+        _P_DECL + " pgloss_perceptual q; st = pgloss_perceptual_from_physical_ex(p, iin[1], q);"
+        " res[0] = q.L; res[1] = q.a; res[2] = q.b; res[3] = q.c; res[4] = q.d;",
+        {"L": (0, 1), "a": (1, 1), "b": (2, 1), "c": (3, 1), "d": (4, 1)}, 5)
     add("material_init", lambda c: _p_floats(c["input"]["p"]), lambda c: [int32(c["input"]["p"]["normalization"])],
         _P_DECL + " pgloss_material m; st = pgloss_material_init(m, p);"
         " res[0] = (float)m.lobes; res[1] = m.rho_d[0]; res[2] = m.rho_d[1]; res[3] = m.rho_d[2];"

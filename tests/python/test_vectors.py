@@ -56,8 +56,9 @@ def test_files_present_and_covered() -> None:
     chk.finish("vector files")
     for fns in pv.FUNCTIONS.values():
         for fn in fns:
-            # Every C function of the vectors has its Python twin (one name across languages).
-            assert callable(getattr(pgloss, fn.replace("_batch", ""))), fn
+            # Every C function of the vectors has its Python twin (one name across languages);
+            # a C _ex function is its twin's keyword argument ``space``.
+            assert callable(getattr(pgloss, fn.replace("_batch", "").removesuffix("_ex"))), fn
 
 
 # ------------------------------------------------------------------------------------------------
@@ -103,7 +104,38 @@ DOUBLE_FUNCS: "OrderedDict[str, Tuple[str, Callable, Callable]]" = OrderedDict([
                    "normalization": int(p.normalization)})),
     ("perceptual_from_physical", ("perceptual_material.json", lambda i: lambda: pgloss.perceptual_from_physical(
         physical(i["p"])), lambda q: {"L": q.L, "a": q.a, "b": q.b, "c": q.c, "d": q.d})),
+    # color_space.json: the C core's _ex functions are the keyword argument ``space``.
+    ("rgb_from_lab_ex", ("color_space.json", lambda i: lambda: pgloss.rgb_from_lab(
+        [num(x) for x in i["lab"]], space=int(i["space"])), lambda r: {"rgb": list(r)})),
+    ("lab_from_rgb_ex", ("color_space.json", lambda i: lambda: pgloss.lab_from_rgb(
+        [num(x) for x in i["rgb"]], space=int(i["space"])), lambda r: {"lab": list(r)})),
+    ("luminance_ex", ("color_space.json", lambda i: lambda: pgloss.luminance(
+        [num(x) for x in i["rgb"]], space=int(i["space"])), _scalar_outputs(["Y"]))),
+    ("physical_from_perceptual_ex", ("color_space.json", lambda i: lambda: pgloss.physical_from_perceptual(
+        perceptual(i["q"]), int(i["normalization"]), space=int(i["space"])),
+        lambda p: {"rho_d": list(p.rho_d), "rho_s": p.rho_s, "alpha_x": p.alpha_x, "alpha_y": p.alpha_y,
+                   "normalization": int(p.normalization)})),
+    ("perceptual_from_physical_ex", ("color_space.json", lambda i: lambda: pgloss.perceptual_from_physical(
+        physical(i["p"]), space=int(i["space"])), lambda q: {"L": q.L, "a": q.a, "b": q.b, "c": q.c, "d": q.d})),
 ])
+
+
+def test_check_perceptual_ex(vector_report: pv.Report) -> None:
+    """color_space.json's check_perceptual_ex through pgloss.check_perceptual(q, space=...)."""
+    fn = "check_perceptual_ex"
+    doc = load("color_space.json")
+    chk = vector_report.child()
+    n = 0
+    for _, c in pv.runnable("color_space.json", chk, fn):
+        n += 1
+        chk.ran(fn)
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")
+            st = pgloss.check_perceptual(perceptual(c["input"]["q"]), space=int(c["input"]["space"]))
+        chk.status(fn, c, st.c_name)
+        chk.outputs(doc, fn, c, {})
+    assert n > 0
+    chk.finish(fn)
 
 
 @pytest.mark.parametrize("fn", list(DOUBLE_FUNCS))

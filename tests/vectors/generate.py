@@ -420,6 +420,84 @@ _MF = {"mp": (M_RGB2XYZ, M_XYZ2RGB, XN, ZN, LUMA),
        "fl": ([[float(v) for v in r] for r in M_RGB2XYZ], [[float(v) for v in r] for r in M_XYZ2RGB],
               float(XN), float(ZN), [float(v) for v in LUMA])}
 
+# Working colour spaces (color.h, pgloss_color_space). CIELAB stays relative to D65 in every
+# space; a space whose white is not D65 (ACEScg: the ACES white 0.32168, 0.33767) is reached
+# through a Bradford chromatic adaptation D65 -> its white. Everything at mp.dps digits.
+COLOR_SPACES = ("linear_rec709", "acescg", "linear_display_p3", "linear_rec2020")
+_SPACE_DEF = {
+    1: ([("0.713", "0.293"), ("0.165", "0.830"), ("0.128", "0.044")], ("0.32168", "0.33767")),  # ACES AP1
+    2: ([("0.680", "0.320"), ("0.265", "0.690"), ("0.150", "0.060")], ("0.3127", "0.3290")),    # P3, D65
+    3: ([("0.708", "0.292"), ("0.170", "0.797"), ("0.131", "0.046")], ("0.3127", "0.3290")),    # BT.2020
+}
+BRADFORD = [["0.8951", "0.2664", "-0.1614"], ["-0.7502", "1.7135", "0.0367"], ["0.0389", "-0.0685", "1.0296"]]
+
+
+def _xyz_of_xy(x: mpf, y: mpf) -> Any:
+    return mp.matrix([x / y, mpf(1), (1 - x - y) / y])
+
+
+def _npm(prim: Sequence[Tuple[str, str]], white: Tuple[str, str]) -> Any:
+    """Normalised primary matrix RGB -> XYZ (in the space's own white, Y of white = 1)."""
+    P = mp.matrix(3, 3)
+    for j, (xs, ys) in enumerate(prim):
+        c = _xyz_of_xy(mpf(xs), mpf(ys))
+        for i in range(3):
+            P[i, j] = c[i]
+    S = mp.lu_solve(P, _xyz_of_xy(mpf(white[0]), mpf(white[1])))
+    M = mp.matrix(3, 3)
+    for i in range(3):
+        for j in range(3):
+            M[i, j] = P[i, j] * S[j]
+    return M
+
+
+def _bradford(src: Tuple[str, str], dst: Tuple[str, str]) -> Any:
+    """Bradford (von Kries in the Bradford cone space) adaptation XYZ(src white) -> XYZ(dst white)."""
+    MA = mp.matrix([[mpf(v) for v in r] for r in BRADFORD])
+    ls = MA * _xyz_of_xy(mpf(src[0]), mpf(src[1]))
+    ld = MA * _xyz_of_xy(mpf(dst[0]), mpf(dst[1]))
+    Dg = mp.diag([ld[k] / ls[k] for k in range(3)])
+    return MA ** -1 * Dg * MA
+
+
+def _space_matrices(space: int) -> Tuple[List[List[mpf]], List[List[mpf]]]:
+    """(RGB -> XYZ(D65), XYZ(D65) -> RGB) of a working space."""
+    if space == 0:
+        return M_RGB2XYZ, M_XYZ2RGB
+    prim, white = _SPACE_DEF[space]
+    M = _npm(prim, white)
+    if white != ("0.3127", "0.3290"):
+        M = _bradford(white, ("0.3127", "0.3290")) * M
+    Mi = M ** -1
+    # An entry that is exactly 0 (z of a primary with x + y = 1) comes out as 40-digit noise.
+    clean = lambda v: mpf(0) if abs(v) < mpf("1e-30") else v  # noqa: E731
+    return ([[clean(M[i, j]) for j in range(3)] for i in range(3)],
+            [[clean(Mi[i, j]) for j in range(3)] for i in range(3)])
+
+
+for _s in range(1, len(COLOR_SPACES)):
+    _m, _mi = _space_matrices(_s)
+    _MF[("mp", _s)] = (_m, _mi, XN, ZN, _m[1])
+    _MF[("fl", _s)] = ([[float(v) for v in r] for r in _m], [[float(v) for v in r] for r in _mi],
+                       float(XN), float(ZN), [float(v) for v in _m[1]])
+
+
+def _mf(B: Backend, space: int) -> Tuple[Any, ...]:
+    return _MF[B.kind] if space == 0 else _MF[(B.kind, space)]
+
+
+def c_matrix_table() -> str:
+    """The C table of color.c (``python3 generate.py --print-color-matrices``): %.17g round-trips."""
+    out = []
+    for s in range(len(COLOR_SPACES)):
+        m, mi = _space_matrices(s)
+        rows = []
+        for name, mat in (("to_xyz", m), ("from_xyz", mi)):
+            rows.append("        {" + ",\n         ".join(
+                "{" + ", ".join("%.17g" % float(v) for v in r) + "}" for r in mat) + "},")
+        out.append("    { /* %s */\n%s\n    }," % (COLOR_SPACES[s], "\n".join(rows)))
+    return "\n".join(out)
+
 
 def cie_eps(B: Backend) -> Num:
     return B.frac(216, 24389)
@@ -455,8 +533,8 @@ def lab_finv(B: Backend, t: Num, lin: Num) -> Num:
     return 3 * B.frac(36, 841) * lin
 
 
-def rgb_from_lab_core(B: Backend, H: Hooks, L: Num, a: Num, b: Num) -> List[Num]:
-    M, Mi, Xn, Zn, _ = _MF[B.kind]
+def rgb_from_lab_core(B: Backend, H: Hooks, L: Num, a: Num, b: Num, space: int = 0) -> List[Num]:
+    M, Mi, Xn, Zn, _ = _mf(B, space)
     L = H.p("L", L)
     a = H.p("a", a)
     b = H.p("b", b)
@@ -473,8 +551,8 @@ def rgb_from_lab_core(B: Backend, H: Hooks, L: Num, a: Num, b: Num) -> List[Num]
     return [sum(H.p(f"m{i}{j}", Mi[i][j] * v[j]) for j in range(3)) for i in range(3)]
 
 
-def lab_from_rgb_core(B: Backend, H: Hooks, rgb: Sequence[Num]) -> List[Num]:
-    M, Mi, Xn, Zn, _ = _MF[B.kind]
+def lab_from_rgb_core(B: Backend, H: Hooks, rgb: Sequence[Num], space: int = 0) -> List[Num]:
+    M, Mi, Xn, Zn, _ = _mf(B, space)
     r = [H.p(f"rgb{j}", rgb[j]) for j in range(3)]
     X, Y, Z = (sum(M[i][j] * r[j] for j in range(3)) for i in range(3))
     fx = H.p("fx", lab_f(B, X / Xn))
@@ -483,8 +561,8 @@ def lab_from_rgb_core(B: Backend, H: Hooks, rgb: Sequence[Num]) -> List[Num]:
     return [116 * fy - 16, 500 * (fx - fy), 200 * (fy - fz)]
 
 
-def luminance_core(B: Backend, H: Hooks, rgb: Sequence[Num]) -> Num:
-    lw = _MF[B.kind][4]
+def luminance_core(B: Backend, H: Hooks, rgb: Sequence[Num], space: int = 0) -> Num:
+    lw = _mf(B, space)[4]
     return sum(H.p(f"y{j}", lw[j] * rgb[j]) for j in range(3))
 
 
@@ -658,13 +736,22 @@ def ref_isogloss_contour(B: Backend, H: Hooks, i: Dict[str, Any]) -> Tuple[str, 
     return OK, {"c": cs, "d": ds}
 
 
+def _space_of(i: Dict[str, Any]) -> Optional[int]:
+    """The working space of an input (absent: Rec. 709, as the functions without _ex); None if unknown."""
+    s = i.get("space", 0)
+    return s if s in range(len(COLOR_SPACES)) else None
+
+
 def ref_rgb_from_lab(B: Backend, H: Hooks, i: Dict[str, Any]) -> Tuple[str, Dict[str, Any]]:
     L, a, b = i["lab"]
+    sp = _space_of(i)
+    if sp is None:
+        return E_ARGUMENT, {"rgb": [0.0] * 3}
     if not isfin(L, a, b):
         return E_NONFINITE, {"rgb": [0.0] * 3}
     if L < 0 or L > 100:
         return E_LIGHTNESS, {"rgb": [0.0] * 3}
-    rgb = rgb_from_lab_core(B, H, B.num(L), B.num(a), B.num(b))
+    rgb = rgb_from_lab_core(B, H, B.num(L), B.num(a), B.num(b), sp)
     st = OK
     if B.kind == "mp":
         for ch in rgb:
@@ -675,18 +762,24 @@ def ref_rgb_from_lab(B: Backend, H: Hooks, i: Dict[str, Any]) -> Tuple[str, Dict
 
 def ref_lab_from_rgb(B: Backend, H: Hooks, i: Dict[str, Any]) -> Tuple[str, Dict[str, Any]]:
     rgb = i["rgb"]
+    sp = _space_of(i)
+    if sp is None:
+        return E_ARGUMENT, {"lab": [0.0] * 3}
     if not isfin(*rgb):
         return E_NONFINITE, {"lab": [0.0] * 3}
     if min(rgb) < 0:
         return E_NEGATIVE, {"lab": [0.0] * 3}
-    return OK, {"lab": lab_from_rgb_core(B, H, [B.num(x) for x in rgb])}
+    return OK, {"lab": lab_from_rgb_core(B, H, [B.num(x) for x in rgb], sp)}
 
 
 def ref_luminance(B: Backend, H: Hooks, i: Dict[str, Any]) -> Tuple[str, Dict[str, Any]]:
     rgb = i["rgb"]
+    sp = _space_of(i)
+    if sp is None:
+        return E_ARGUMENT, {"Y": 0.0}
     if not isfin(*rgb):
         return E_NONFINITE, {"Y": 0.0}
-    return OK, {"Y": luminance_core(B, H, [B.num(x) for x in rgb])}
+    return OK, {"Y": luminance_core(B, H, [B.num(x) for x in rgb], sp)}
 
 
 def _phys_fields(p: Dict[str, Any]) -> List[float]:
@@ -715,9 +808,9 @@ def ref_check_physical(B: Backend, H: Hooks, i: Dict[str, Any]) -> Tuple[str, Di
     return OK, {}
 
 
-def _perceptual_analysis(q: Dict[str, float]) -> Dict[str, mpf]:
+def _perceptual_analysis(q: Dict[str, float], space: int = 0) -> Dict[str, mpf]:
     L, a, b, c, d = (mpf(q[k]) for k in "Labcd")
-    rgb = rgb_from_lab_core(MP, NOHOOK, L, a, b)
+    rgb = rgb_from_lab_core(MP, NOHOOK, L, a, b, space)
     Y = y_from_l(MP, NOHOOK, L)
     cmax = envelope_core(MP, Y)
     rs = specular_core(MP, Y, c)
@@ -726,6 +819,9 @@ def _perceptual_analysis(q: Dict[str, float]) -> Dict[str, mpf]:
 
 def ref_check_perceptual(B: Backend, H: Hooks, i: Dict[str, Any]) -> Tuple[str, Dict[str, Any]]:
     q = i["q"]
+    sp = _space_of(i)
+    if sp is None:
+        return E_ARGUMENT, {}
     if not isfin(*(q[k] for k in "Labcd")):
         return E_NONFINITE, {}
     if 1 - mpf(q["d"]) > FLT_MAX:  # α = 1 − d: no float material holds it
@@ -736,7 +832,7 @@ def ref_check_perceptual(B: Backend, H: Hooks, i: Dict[str, Any]) -> Tuple[str, 
         return E_NEGATIVE, {}
     if q["d"] >= 1:
         return E_ALPHA, {}
-    an = _perceptual_analysis(q)
+    an = _perceptual_analysis(q, sp)
     if not i.get("_boundary"):
         assert an["rgb_min"] == 0 or abs(an["rgb_min"]) > 1e-9, ("gamut too close", i)
         assert abs(an["env_excess"] - BOUNDARY_TOLERANCE) > 1e-10, ("envelope too close", i)
@@ -756,6 +852,9 @@ def ref_physical_from_perceptual(B: Backend, H: Hooks, i: Dict[str, Any]) -> Tup
     q, norm = i["q"], i["normalization"]
     zero = {"rho_d": [0.0] * 3, "rho_s": 0.0, "alpha_x": 0.0, "alpha_y": 0.0, "normalization": None}
     L, a, b, c, d = (q[k] for k in "Labcd")
+    sp = _space_of(i)
+    if sp is None:
+        return E_ARGUMENT, zero
     if not isfin(L, a, b, c, d):
         return E_NONFINITE, zero
     if L < 0 or L > 100:
@@ -766,7 +865,7 @@ def ref_physical_from_perceptual(B: Backend, H: Hooks, i: Dict[str, Any]) -> Tup
         return E_ALPHA, zero
     if norm not in (0, 1, 2):
         return E_NORMALIZATION, zero
-    rgb = rgb_from_lab_core(B, H, B.num(L), B.num(a), B.num(b))
+    rgb = rgb_from_lab_core(B, H, B.num(L), B.num(a), B.num(b), sp)
     Y = y_from_l(B, H, _in(B, H, "L", L))
     rs = specular_core(B, Y, _in(B, H, "c", c))
     al = 1 - _in(B, H, "d", d)
@@ -783,6 +882,9 @@ def ref_physical_from_perceptual(B: Backend, H: Hooks, i: Dict[str, Any]) -> Tup
 def ref_perceptual_from_physical(B: Backend, H: Hooks, i: Dict[str, Any]) -> Tuple[str, Dict[str, Any]]:
     p = i["p"]
     zero = {"L": 0.0, "a": 0.0, "b": 0.0, "c": 0.0, "d": 0.0}
+    sp = _space_of(i)
+    if sp is None:
+        return E_ARGUMENT, zero
     if not isfin(*_phys_fields(p)):
         return E_NONFINITE, zero
     if min(p["rho_d"]) < 0 or p["rho_s"] < 0:
@@ -790,8 +892,8 @@ def ref_perceptual_from_physical(B: Backend, H: Hooks, i: Dict[str, Any]) -> Tup
     if p["alpha_x"] <= 0 or p["alpha_y"] <= 0:
         return E_ALPHA, zero
     rgb = [_in(B, H, f"rd{j}", p["rho_d"][j]) for j in range(3)]
-    lab = lab_from_rgb_core(B, H, rgb)
-    Y = luminance_core(B, H, rgb)
+    lab = lab_from_rgb_core(B, H, rgb, sp)
+    Y = luminance_core(B, H, rgb, sp)
     c = contrast_core(B, Y, _in(B, H, "rho_s", p["rho_s"]))
     al = B.sqrt(_in(B, H, "alpha_x", p["alpha_x"]) * _in(B, H, "alpha_y", p["alpha_y"]))
     gm = math.sqrt(p["alpha_x"] * p["alpha_y"])
@@ -1582,6 +1684,120 @@ def gen_perceptual_material() -> Dict[str, Any]:
             "cases": cl.cases}
 
 
+# ---------------------------------------------------------------------------------- working colour spaces
+
+def gen_color_space() -> Dict[str, Any]:
+    """The _ex functions of color.h / perceptual.h in every working space (the functions
+    without _ex are the Rec. 709 case and keep their own files)."""
+    rng = random.Random(7007)
+    cl = CaseList("cs")
+    fr, fl, fy = "rgb_from_lab_ex", "lab_from_rgb_ex", "luminance_ex"
+    fq, fpp, fpq = "check_perceptual_ex", "physical_from_perceptual_ex", "perceptual_from_physical_ex"
+    g3 = lambda x: [x, x, x]  # noqa: E731
+    spaces = range(len(COLOR_SPACES))
+    for sp in spaces:
+        name = COLOR_SPACES[sp]
+        lab_in = lambda rgb: [D(v) for v in lab_from_rgb_core(MP, NOHOOK, [mpf(x) for x in rgb], sp)]  # noqa: E731
+        # rgb_from_lab_ex: neutrals (R = G = B = Y in every space), in gamut, out of gamut.
+        for L in (0.0, 8.0, 50.0, 100.0):
+            cl.add(fr, ref_rgb_from_lab, {"lab": [L, 0.0, 0.0], "space": sp}, ["regular", "grey", name],
+                   expect_status=OK)
+        for _ in range(12):
+            rgb = [0.01 + 0.99 * rng.random() for _ in range(3)]
+            if rng.random() < 0.2:
+                rgb = [x * 0.005 for x in rgb]
+            cl.add(fr, ref_rgb_from_lab, {"lab": lab_in(rgb), "space": sp}, ["regular", "random", name],
+                   expect_status=OK)
+        for rgb in ([1.0, 1e-6, 1e-6], [1e-6, 1.0, 1e-6], [1e-6, 1e-6, 1.0]):
+            cl.add(fr, ref_rgb_from_lab, {"lab": lab_in(rgb), "space": sp},
+                   ["regular", "near_gamut_boundary", "saturated", name], expect_status=OK)
+        for lab in ([50.0, 0.0, -140.0], [5.0, -90.0, 60.0], [0.0, 10.0, 10.0]):
+            cl.add(fr, ref_rgb_from_lab, {"lab": lab, "space": sp}, ["error", "out_of_gamut", name],
+                   expect_status=E_GAMUT)
+        # lab_from_rgb_ex and luminance_ex.
+        for rgb in ([0.0, 0.0, 0.0], [1.0, 1.0, 1.0], [0.18, 0.18, 0.18], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0],
+                    [0.0, 0.0, 1.0], [2.0, 1.5, 3.0]):
+            cl.add(fl, ref_lab_from_rgb, {"rgb": rgb, "space": sp}, ["regular", name], expect_status=OK)
+            cl.add(fy, ref_luminance, {"rgb": rgb, "space": sp}, ["regular", name], expect_status=OK)
+        for _ in range(10):
+            rgb = [rng.random() for _ in range(3)]
+            cl.add(fl, ref_lab_from_rgb, {"rgb": rgb, "space": sp}, ["regular", "random", name], expect_status=OK)
+            cl.add(fy, ref_luminance, {"rgb": rgb, "space": sp}, ["regular", "random", name], expect_status=OK)
+        cl.add(fl, ref_lab_from_rgb, {"rgb": [0.1, -0.5, 0.1], "space": sp}, ["error", name],
+               expect_status=E_NEGATIVE)
+        cl.add(fy, ref_luminance, {"rgb": [math.nan, 0.0, 0.0], "space": sp}, ["error", name],
+               expect_status=E_NONFINITE)
+        # check_perceptual_ex: the gamut and energy checks apply in the chosen space.
+        for q, st in [(perc(50.0, 0.0, 0.0, 0.05, 0.9), OK), (perc(50.0, 0.0, 0.0, 0.1, 0.7), WARN_ALPHA),
+                      (perc(50.0, 0.0, 0.0, 0.9, 0.9), E_ENVELOPE), (perc(50.0, 0.0, -140.0, 0.05, 0.9), E_GAMUT),
+                      (perc(101.0, 0.0, 0.0, 0.05, 0.9), E_LIGHTNESS)]:
+            cl.add(fq, ref_check_perceptual, {"q": q, "space": sp},
+                   (["error"] if st not in (OK, WARN_ALPHA) else ["regular"]) + [name], expect_status=st)
+        # physical_from_perceptual_ex / perceptual_from_physical_ex.
+        for _ in range(8):
+            rgb = [0.02 + 0.9 * rng.random() for _ in range(3)]
+            L, a, b = lab_in(rgb)
+            c = envelope_at(L) * 0.9 * rng.random()
+            cl.add(fpp, ref_physical_from_perceptual,
+                   {"q": perc(L, a, b, c, 0.8 + 0.2 * rng.random()), "normalization": rng.randrange(3), "space": sp},
+                   ["regular", "random", name])
+            rd = [0.9 * rng.random() for _ in range(3)]
+            cl.add(fpq, ref_perceptual_from_physical,
+                   {"p": phys(rd, 0.1 * rng.random(), 0.01 + 0.19 * rng.random()), "space": sp},
+                   ["regular", "random", name])
+        for rd in PAPER_RD:
+            cl.add(fpp, ref_physical_from_perceptual,
+                   {"q": perc(lightness_of(rd), 0.0, 0.0, 0.057, 0.96), "normalization": 0, "space": sp},
+                   ["regular", "paper", "grey", name], expect_status=OK)
+            cl.add(fpq, ref_perceptual_from_physical, {"p": phys(g3(rd), 0.066, 0.07), "space": sp},
+                   ["regular", "paper", "grey", name], expect_status=OK)
+        cl.add(fpp, ref_physical_from_perceptual,
+               {"q": perc(50.0, 0.0, -140.0, 0.05, 0.9), "normalization": 0, "space": sp},
+               ["error", "out_of_gamut", name], expect_status=E_GAMUT)
+    # Where the spaces disagree: a saturated green outside Rec. 709 but inside P3, Rec. 2020, AP1.
+    lab_p3_green = [D(v) for v in lab_from_rgb_core(MP, NOHOOK, [mpf("0.05"), mpf("0.6"), mpf("0.05")], 2)]
+    for sp, st in [(0, E_GAMUT), (1, OK), (2, OK), (3, OK)]:
+        cl.add(fr, ref_rgb_from_lab, {"lab": lab_p3_green, "space": sp},
+               ["wide_gamut", COLOR_SPACES[sp]] + (["error"] if st != OK else ["regular"]), expect_status=st)
+        cl.add(fq, ref_check_perceptual, {"q": perc(*lab_p3_green, 0.02, 0.9), "space": sp},
+               ["wide_gamut", COLOR_SPACES[sp]] + (["error"] if st != OK else ["regular"]), expect_status=st)
+    # Unknown spaces, then NULL pointers (checked first).
+    for sp in (-1, len(COLOR_SPACES), 1000):
+        cl.add(fr, ref_rgb_from_lab, {"lab": [50.0, 0.0, 0.0], "space": sp}, ["error", "unknown_space"],
+               expect_status=E_ARGUMENT)
+        cl.add(fl, ref_lab_from_rgb, {"rgb": [0.1, 0.2, 0.3], "space": sp}, ["error", "unknown_space"],
+               expect_status=E_ARGUMENT)
+        cl.add(fy, ref_luminance, {"rgb": [0.1, 0.2, 0.3], "space": sp}, ["error", "unknown_space"],
+               expect_status=E_ARGUMENT)
+        cl.add(fq, ref_check_perceptual, {"q": perc(50.0, 0.0, 0.0, 0.05, 0.9), "space": sp},
+               ["error", "unknown_space"], expect_status=E_ARGUMENT)
+        cl.add(fpp, ref_physical_from_perceptual,
+               {"q": perc(50.0, 0.0, 0.0, 0.05, 0.9), "normalization": 0, "space": sp},
+               ["error", "unknown_space"], expect_status=E_ARGUMENT)
+        cl.add(fpq, ref_perceptual_from_physical, {"p": phys(g3(0.2), 0.1, 0.1), "space": sp},
+               ["error", "unknown_space"], expect_status=E_ARGUMENT)
+    cl.add(fr, ref_rgb_from_lab, {"lab": [50.0, 0.0, 0.0], "space": 1}, ["error", "null_pointer"], null=["rgb"])
+    cl.add(fl, ref_lab_from_rgb, {"rgb": [0.1, 0.2, 0.3], "space": 1}, ["error", "null_pointer"], null=["lab"])
+    cl.add(fy, ref_luminance, {"rgb": [0.1, 0.2, 0.3], "space": 1}, ["error", "null_pointer"], null=["Y"])
+    cl.add(fq, ref_check_perceptual, {"q": perc(50.0, 0.0, 0.0, 0.1, 0.9), "space": 1}, ["error", "null_pointer"],
+           null=["q"])
+    cl.add(fpp, ref_physical_from_perceptual, {"q": perc(50.0, 0.0, 0.0, 0.1, 0.9), "normalization": 0, "space": 1},
+           ["error", "null_pointer"], null=["q"])
+    cl.add(fpq, ref_perceptual_from_physical, {"p": phys(g3(0.2), 0.1, 0.1), "space": 1}, ["error", "null_pointer"],
+           null=["q"])
+
+    tol = tolerance_for({fr: ["rgb"], fl: ["lab"], fy: ["Y"], fpp: ["rho_d", "rho_s", "alpha_x", "alpha_y"],
+                         fpq: ["L", "a", "b", "c", "d"]})
+    tol[fpp]["normalization"] = {"float": TOL_EXACT, "double": TOL_EXACT}
+    return {**header([fr, fl, fy, fq, fpp, fpq], "double", tol,
+                     "Working colour spaces (input 'space': 0 linear Rec. 709, 1 ACEScg (AP1, ACES white "
+                     "0.32168, 0.33767, reached from D65 by a Bradford adaptation), 2 linear Display P3, "
+                     "3 linear Rec. 2020); CIELAB relative to D65 in all; matrices derived in the generator "
+                     "from primaries and whites at 40 digits. c and L use the luminance Y, the same in every "
+                     "space. Unknown space: PGLOSS_ERR_ARGUMENT."),
+            "cases": cl.cases}
+
+
 # ---------------------------------------------------------------------------------- BRDF helpers
 
 Vec = List[float]
@@ -2028,6 +2244,7 @@ def generate_all() -> Dict[str, str]:
         "color.json": gen_color(),
         "validity.json": gen_validity(),
         "perceptual_material.json": gen_perceptual_material(),
+        "color_space.json": gen_color_space(),
         "material.json": gen_material(),
         "brdf_eval.json": gen_eval(mats),
         "brdf_sample.json": gen_sample(mats),
@@ -2041,7 +2258,12 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     ap.add_argument("--check", action="store_true",
                     help="regenerate into a temporary directory and fail if any file differs from --out "
                          "(default: the directory of this script)")
+    ap.add_argument("--print-color-matrices", action="store_true",
+                    help="print the RGB <-> XYZ(D65) table of libpgloss/src/color.c and exit")
     a = ap.parse_args(argv)
+    if a.print_color_matrices:
+        print(c_matrix_table())
+        return 0
     here = os.path.dirname(os.path.abspath(__file__))
     target = a.out or here
     files = generate_all()

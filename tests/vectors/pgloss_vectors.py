@@ -48,6 +48,8 @@ FUNCTIONS: "OrderedDict[str, List[str]]" = OrderedDict([
     ("color.json", ["rgb_from_lab", "lab_from_rgb", "luminance"]),
     ("validity.json", ["check_physical", "check_perceptual"]),
     ("perceptual_material.json", ["physical_from_perceptual", "perceptual_from_physical"]),
+    ("color_space.json", ["rgb_from_lab_ex", "lab_from_rgb_ex", "luminance_ex", "check_perceptual_ex",
+                          "physical_from_perceptual_ex", "perceptual_from_physical_ex"]),
     ("material.json", ["material_init", "specular_probability"]),
     ("brdf_eval.json", ["eval", "pdf", "eval_pdf", "eval_batch", "pdf_batch", "eval_pdf_batch"]),
     ("brdf_sample.json", ["sample", "sample_batch"]),

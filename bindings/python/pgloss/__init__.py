@@ -55,7 +55,7 @@ from ._core import Material
 __all__ = [
     "__version__", "VERSION", "ALPHA_MIN", "COS_MIN", "CIE_EPSILON", "CIE_KAPPA", "D_WEIGHT",
     "ALPHA_TRUSTED_MAX", "BOUNDARY_TOLERANCE", "LUMA",
-    "Status", "Normalization", "Lobe", "PglossError", "PglossWarning", "AlphaUntrustedWarning",
+    "Status", "Normalization", "ColorSpace", "Lobe", "PglossError", "PglossWarning", "AlphaUntrustedWarning",
     "Physical", "Perceptual", "Material", "SampleRecord",
     "status_string", "status_name",
     "material_init", "specular_probability", "eval", "pdf", "eval_pdf", "sample",
@@ -196,6 +196,23 @@ class Normalization(enum.IntEnum):
     BOUNDED = 2
 
 
+class ColorSpace(enum.IntEnum):
+    """Working colour space of ρd (``pgloss_color_space``); CIELAB stays relative to D65.
+
+    LINEAR_REC709: Rec. 709 / sRGB primaries, D65 (the default).
+    ACESCG: ACES AP1 primaries, ACES white (0.32168, 0.33767), Bradford-adapted from D65.
+    LINEAR_DISPLAY_P3: Display P3 primaries, D65.
+    LINEAR_REC2020: ITU-R BT.2020 primaries, D65.
+
+    The luminance Y — and so L* and the contrast gloss c — does not depend on the space.
+    """
+
+    LINEAR_REC709 = 0
+    ACESCG = 1
+    LINEAR_DISPLAY_P3 = 2
+    LINEAR_REC2020 = 3
+
+
 class Lobe(enum.IntFlag):
     """Lobe masks (``pgloss_lobe``): eval, pdf and sample consider only the lobes in
     ``mask & material.lobes``."""
@@ -312,6 +329,19 @@ def _normalization(function: str, value: Any) -> Union["Normalization", int]:
     if not -2**31 <= v < 2**31:  # cannot even reach the core: same answer it would give
         raise PglossError(Status.ERR_NORMALIZATION, function)
     return v  # unknown: kept, the core reports it
+
+
+def _color_space(function: str, value: Any) -> np.ndarray:
+    """The working space as a one-element column for the core; unknown ints reach the core,
+    which answers ERR_ARGUMENT."""
+    try:
+        v = operator.index(value)
+    except TypeError:
+        raise TypeError(f"pgloss.{function}: space must be an int or pgloss.ColorSpace, "
+                        f"not {type(value).__name__}") from None
+    if not -2**31 <= v < 2**31:
+        raise PglossError(Status.ERR_ARGUMENT, function)
+    return np.array([float(v)], dtype=np.float64)
 
 
 def _material(function: str, m: Any) -> Material:
@@ -871,33 +901,36 @@ def isogloss_contour(c0: float, d0: float, D: float, n: int = 64) -> Tuple[np.nd
     return c, d
 
 
-def rgb_from_lab(lab: ArrayLike) -> np.ndarray:
-    """CIELAB (L*, a*, b*) (D65) → linear Rec. 709 RGB, both ``(..., 3)``.
+def rgb_from_lab(lab: ArrayLike, space: Union[ColorSpace, int] = ColorSpace.LINEAR_REC709) -> np.ndarray:
+    """CIELAB (L*, a*, b*) (D65) → linear RGB of ``space`` (default Rec. 709), both ``(..., 3)``.
 
     Raises NONFINITE, LIGHTNESS (L outside [0, 100]), GAMUT (a channel < 0: the exact values
-    are on the exception's ``result``).
+    are on the exception's ``result``), ARGUMENT (unknown space).
     """
-    return _triple("rgb_from_lab", "lab", lab, 3)
+    return _triple("rgb_from_lab", "lab", lab, 3, space)
 
 
-def lab_from_rgb(rgb: ArrayLike) -> np.ndarray:
-    """Linear Rec. 709 RGB → CIELAB (L*, a*, b*), both ``(..., 3)``. Raises NONFINITE, NEGATIVE."""
-    return _triple("lab_from_rgb", "rgb", rgb, 3)
+def lab_from_rgb(rgb: ArrayLike, space: Union[ColorSpace, int] = ColorSpace.LINEAR_REC709) -> np.ndarray:
+    """Linear RGB of ``space`` (default Rec. 709) → CIELAB (L*, a*, b*) (D65), both ``(..., 3)``.
+    Raises NONFINITE, NEGATIVE, ARGUMENT (unknown space)."""
+    return _triple("lab_from_rgb", "rgb", rgb, 3, space)
 
 
-def luminance(rgb: ArrayLike) -> Any:
-    """Luminance Y of linear Rec. 709 RGB ``(..., 3)`` → ``(...)``. Raises NONFINITE."""
-    return _triple("luminance", "rgb", rgb, 1)
+def luminance(rgb: ArrayLike, space: Union[ColorSpace, int] = ColorSpace.LINEAR_REC709) -> Any:
+    """Luminance Y of linear RGB of ``space`` (default Rec. 709) ``(..., 3)`` → ``(...)``.
+    Raises NONFINITE, ARGUMENT (unknown space)."""
+    return _triple("luminance", "rgb", rgb, 1, space)
 
 
-def _triple(function: str, name: str, value: Any, n_out: int) -> Any:
+def _triple(function: str, name: str, value: Any, n_out: int, space: Any) -> Any:
+    sp = _color_space(function, space)
     a = _as_real(function, name, value)
     if a.ndim == 0 or a.shape[-1] != 3:
         raise ValueError(f"pgloss.{function}: {name} must have shape (..., 3), got {a.shape}")
     shape = a.shape[:-1]
     dtype = _out_dtype((value,), (a,))
     cols = [np.ascontiguousarray(a[..., k], dtype=np.float64).reshape(-1) for k in range(3)]
-    res = getattr(_core, function)(*cols)
+    res = getattr(_core, function)(*cols, np.full(cols[0].shape, sp[0]))
     if n_out == 3:
         out = _shape_out(function, np.stack(res[:3], axis=-1), shape + (3,), dtype)
     else:
@@ -925,21 +958,25 @@ def check_physical(physical: Physical) -> Status:
     return Status(int(st[0]))
 
 
-def check_perceptual(perceptual: Perceptual) -> Status:
+def check_perceptual(perceptual: Perceptual, space: Union[ColorSpace, int] = ColorSpace.LINEAR_REC709) -> Status:
     """Is ``perceptual`` inside the model? First reason it is not, in this order: NONFINITE,
     LIGHTNESS, NEGATIVE (c < 0), ALPHA (d ≥ 1), GAMUT (no non-negative linear RGB),
     ENVELOPE (c beyond the envelope at L), ENERGY (a colour channel of ρd plus ρs exceeds 1),
-    then WARN_ALPHA_UNTRUSTED (d < 0.8); ``Status.OK`` otherwise (``pgloss_check_perceptual``)."""
+    then WARN_ALPHA_UNTRUSTED (d < 0.8); ``Status.OK`` otherwise (``pgloss_check_perceptual_ex``).
+    GAMUT and ENERGY are decided in the working ``space``; an unknown space gives ERR_ARGUMENT."""
     if not isinstance(perceptual, Perceptual):
         raise TypeError(f"pgloss.check_perceptual: expected a pgloss.Perceptual, not {type(perceptual).__name__}")
-    (st,) = _core.check_perceptual(*[np.array([x], dtype=np.float64) for x in perceptual._v])
+    sp = _color_space("check_perceptual", space)
+    (st,) = _core.check_perceptual(*[np.array([x], dtype=np.float64) for x in perceptual._v], sp)
     return Status(int(st[0]))
 
 
 def physical_from_perceptual(perceptual: Perceptual,
-                             normalization: Union[Normalization, int] = Normalization.WARD) -> Physical:
-    """Fig. 13's colour/gloss description → physical parameters: CIELAB (D65) → linear
-    Rec. 709 ρd; ρs from eq. 7 with Y = f⁻¹(L); α = αx = αy = 1 − d (eq. 8).
+                             normalization: Union[Normalization, int] = Normalization.WARD,
+                             space: Union[ColorSpace, int] = ColorSpace.LINEAR_REC709) -> Physical:
+    """Fig. 13's colour/gloss description → physical parameters: CIELAB (D65) → linear RGB ρd
+    of the working ``space`` (default Rec. 709); ρs from eq. 7 with Y = f⁻¹(L) (the same in
+    every space); α = αx = αy = 1 − d (eq. 8). An unknown space raises ARGUMENT.
 
     Raises :class:`PglossError` NONFINITE, LIGHTNESS, NEGATIVE (c < 0), ALPHA (d ≥ 1),
     NORMALIZATION, GAMUT (the exact, negative ρd is then on the exception's ``result``);
@@ -950,24 +987,27 @@ def physical_from_perceptual(perceptual: Perceptual,
     if not isinstance(perceptual, Perceptual):
         raise TypeError(f"pgloss.{fn}: expected a pgloss.Perceptual, not {type(perceptual).__name__}")
     norm = _normalization(fn, normalization)
+    sp = _color_space(fn, space)
     args = [np.array([x], dtype=np.float64) for x in (*perceptual._v, float(int(norm)))]
-    res = _core.physical_from_perceptual(*args)
+    res = _core.physical_from_perceptual(*args, sp)
     v = [float(r[0]) for r in res[:7]]
     out = Physical(v[0:3], v[3], alpha_x=v[4], alpha_y=v[5], normalization=int(v[6]))
     _check(fn, res[7], (), out, scalar=True)
     return out
 
 
-def perceptual_from_physical(physical: Physical) -> Perceptual:
-    """Physical parameters → (L*, a*, b*) of ρd, c from eq. 4 with Y = luminance(ρd),
-    d = 1 − α with α = √(αx αy) (geometric mean for anisotropic lobes: an extension).
+def perceptual_from_physical(physical: Physical,
+                             space: Union[ColorSpace, int] = ColorSpace.LINEAR_REC709) -> Perceptual:
+    """Physical parameters → (L*, a*, b*) of ρd (linear RGB of the working ``space``, default
+    Rec. 709), c from eq. 4 with Y = luminance(ρd), d = 1 − α with α = √(αx αy) (geometric
+    mean for anisotropic lobes: an extension). An unknown space raises ARGUMENT.
 
     Raises :class:`PglossError` NONFINITE, NEGATIVE, ALPHA; warns for α > 0.2.
     """
     fn = "perceptual_from_physical"
     if not isinstance(physical, Physical):
         raise TypeError(f"pgloss.{fn}: expected a pgloss.Physical, not {type(physical).__name__}")
-    res = _core.perceptual_from_physical(*_physical_arrays(physical))
+    res = _core.perceptual_from_physical(*_physical_arrays(physical), _color_space(fn, space))
     out = Perceptual(*(float(r[0]) for r in res[:5]))
     _check(fn, res[5], (), out, scalar=True)
     return out

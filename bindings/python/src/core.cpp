@@ -534,14 +534,21 @@ PYBIND11_MODULE(_core, mod) {
         }
         return py::make_tuple(c, d, st);
     });
-    mod.def("rgb_from_lab", [](darr L, darr a, darr b) {
-        return vmap<3, 3>({L, a, b}, [](const double *x, double *y) { return (int)pgloss_rgb_from_lab(x, y); });
+    // The colour functions take the working space (pgloss_color_space) as a last column.
+    mod.def("rgb_from_lab", [](darr L, darr a, darr b, darr space) {
+        return vmap<4, 3>({L, a, b, space}, [](const double *x, double *y) {
+            return pgloss_py_rgb_from_lab(x, static_cast<int>(x[3]), y);
+        });
     });
-    mod.def("lab_from_rgb", [](darr r, darr g, darr b) {
-        return vmap<3, 3>({r, g, b}, [](const double *x, double *y) { return (int)pgloss_lab_from_rgb(x, y); });
+    mod.def("lab_from_rgb", [](darr r, darr g, darr b, darr space) {
+        return vmap<4, 3>({r, g, b, space}, [](const double *x, double *y) {
+            return pgloss_py_lab_from_rgb(x, static_cast<int>(x[3]), y);
+        });
     });
-    mod.def("luminance", [](darr r, darr g, darr b) {
-        return vmap<3, 1>({r, g, b}, [](const double *x, double *y) { return (int)pgloss_luminance(x, &y[0]); });
+    mod.def("luminance", [](darr r, darr g, darr b, darr space) {
+        return vmap<4, 1>({r, g, b, space}, [](const double *x, double *y) {
+            return pgloss_py_luminance(x, static_cast<int>(x[3]), &y[0]);
+        });
     });
     // Structs: physical = (rho_d r, g, b, rho_s, alpha_x, alpha_y, normalization); perceptual = (L, a, b, c, d).
     mod.def("check_physical", [](darr r, darr g, darr b, darr rs, darr ax, darr ay, darr norm) {
@@ -549,20 +556,23 @@ PYBIND11_MODULE(_core, mod) {
             return pgloss_py_check_physical(x, static_cast<int>(x[6]));
         });
     });
-    mod.def("check_perceptual", [](darr L, darr a, darr b, darr c, darr d) {
-        return vmap<5, 0>({L, a, b, c, d}, [](const double *x, double *) { return pgloss_py_check_perceptual(x); });
+    mod.def("check_perceptual", [](darr L, darr a, darr b, darr c, darr d, darr space) {
+        return vmap<6, 0>({L, a, b, c, d, space}, [](const double *x, double *) {
+            return pgloss_py_check_perceptual(x, static_cast<int>(x[5]));
+        });
     });
-    mod.def("physical_from_perceptual", [](darr L, darr a, darr b, darr c, darr d, darr norm) {
-        return vmap<6, 7>({L, a, b, c, d, norm}, [](const double *x, double *y) {
+    mod.def("physical_from_perceptual", [](darr L, darr a, darr b, darr c, darr d, darr norm, darr space) {
+        return vmap<7, 7>({L, a, b, c, d, norm, space}, [](const double *x, double *y) {
             int n = 0;
-            const int st = pgloss_py_physical_from_perceptual(x, static_cast<int>(x[5]), y, &n);
+            const int st = pgloss_py_physical_from_perceptual(x, static_cast<int>(x[5]), static_cast<int>(x[6]), y, &n);
             y[6] = n;
             return st;
         });
     });
-    mod.def("perceptual_from_physical", [](darr r, darr g, darr b, darr rs, darr ax, darr ay, darr norm) {
-        return vmap<7, 5>({r, g, b, rs, ax, ay, norm}, [](const double *x, double *y) {
-            return pgloss_py_perceptual_from_physical(x, static_cast<int>(x[6]), y);
+    mod.def("perceptual_from_physical", [](darr r, darr g, darr b, darr rs, darr ax, darr ay, darr norm,
+                                            darr space) {
+        return vmap<8, 5>({r, g, b, rs, ax, ay, norm, space}, [](const double *x, double *y) {
+            return pgloss_py_perceptual_from_physical(x, static_cast<int>(x[6]), static_cast<int>(x[7]), y);
         });
     });
 }

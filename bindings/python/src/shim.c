@@ -41,19 +41,20 @@ int pgloss_py_check_physical(const double v[6], int normalization)
     return (int)pgloss_check_physical(&p);
 }
 
-int pgloss_py_check_perceptual(const double q[5])
+int pgloss_py_check_perceptual(const double q[5], int space)
 {
     const pgloss_perceptual r = make_perceptual(q);
-    return (int)pgloss_check_perceptual(&r);
+    return (int)pgloss_check_perceptual_ex(&r, (pgloss_color_space)space);
 }
 
-int pgloss_py_physical_from_perceptual(const double q[5], int normalization, double out[6],
+int pgloss_py_physical_from_perceptual(const double q[5], int normalization, int space, double out[6],
                                        int *normalization_out)
 {
     const pgloss_perceptual r = make_perceptual(q);
     pgloss_physical p;
     memset(&p, 0, sizeof p);
-    const pgloss_status st = pgloss_physical_from_perceptual(&r, (pgloss_normalization)normalization, &p);
+    const pgloss_status st = pgloss_physical_from_perceptual_ex(&r, (pgloss_normalization)normalization,
+                                                                (pgloss_color_space)space, &p);
     out[0] = p.rho_d[0];
     out[1] = p.rho_d[1];
     out[2] = p.rho_d[2];
@@ -64,15 +65,30 @@ int pgloss_py_physical_from_perceptual(const double q[5], int normalization, dou
     return (int)st;
 }
 
-int pgloss_py_perceptual_from_physical(const double v[6], int normalization, double q[5])
+int pgloss_py_perceptual_from_physical(const double v[6], int normalization, int space, double q[5])
 {
     const pgloss_physical p = make_physical(v, normalization);
     pgloss_perceptual r = {0, 0, 0, 0, 0};
-    const pgloss_status st = pgloss_perceptual_from_physical(&p, &r);
+    const pgloss_status st = pgloss_perceptual_from_physical_ex(&p, (pgloss_color_space)space, &r);
     q[0] = r.L;
     q[1] = r.a;
     q[2] = r.b;
     q[3] = r.c;
     q[4] = r.d;
     return (int)st;
+}
+
+int pgloss_py_rgb_from_lab(const double lab[3], int space, double rgb[3])
+{
+    return (int)pgloss_rgb_from_lab_ex(lab, (pgloss_color_space)space, rgb);
+}
+
+int pgloss_py_lab_from_rgb(const double rgb[3], int space, double lab[3])
+{
+    return (int)pgloss_lab_from_rgb_ex(rgb, (pgloss_color_space)space, lab);
+}
+
+int pgloss_py_luminance(const double rgb[3], int space, double *Y)
+{
+    return (int)pgloss_luminance_ex(rgb, (pgloss_color_space)space, Y);
 }

@@ -16,13 +16,15 @@
  * No finite input gives a NaN or Inf output: where a finite input would overflow double
  * (L* > 6.6e104, c > ~5e102 in eq. 7, ρs + ρd/2 > DBL_MAX, differences beyond DBL_MAX in
  * eq. 5, ...) the function returns PGLOSS_ERR_NONFINITE with the fallback outputs.
- * For a coloured diffuse, ρd in eqs. 4, 6, 7 is its luminance Y (Rec. 709 weights).
+ * For a coloured diffuse, ρd in eqs. 4, 6, 7 is its luminance Y (the CIE Y of the colour:
+ * Rec. 709 weights for Rec. 709 RGB, the same Y whichever working colour space ρd is in).
  */
 #ifndef PGLOSS_PERCEPTUAL_H
 #define PGLOSS_PERCEPTUAL_H
 
 #include <stddef.h>
 #include "pgloss/brdf.h"
+#include "pgloss/color.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -138,6 +140,20 @@ PGLOSS_API pgloss_status pgloss_physical_from_perceptual(const pgloss_perceptual
  * the warning for an anisotropic lobe.
  */
 PGLOSS_API pgloss_status pgloss_perceptual_from_physical(const pgloss_physical *p, pgloss_perceptual *q);
+
+/*
+ * The three functions above in a working colour space (color.h): ρd is linear RGB of `space`,
+ * and GAMUT / ENERGY are decided in that space. ρs, c and L* use the luminance Y, which is
+ * the same in every space. Errors as the functions without _ex, plus ARGUMENT (unknown
+ * space; checked right after NULL). The functions without _ex are these with
+ * PGLOSS_COLOR_SPACE_LINEAR_REC709.
+ */
+PGLOSS_API pgloss_status pgloss_check_perceptual_ex(const pgloss_perceptual *q, pgloss_color_space space);
+PGLOSS_API pgloss_status pgloss_physical_from_perceptual_ex(const pgloss_perceptual *q,
+                                                 pgloss_normalization normalization,
+                                                 pgloss_color_space space, pgloss_physical *p);
+PGLOSS_API pgloss_status pgloss_perceptual_from_physical_ex(const pgloss_physical *p, pgloss_color_space space,
+                                                 pgloss_perceptual *q);
 
 #ifdef __cplusplus
 }
