@@ -85,32 +85,35 @@ PGLOSS_INLINE_FN int v_eval_pdf_block(const pgloss__batch_consts *restrict kb, c
         const pgloss__v s2x = VADD(sx, sx), s2y = VADD(sy, sy), s2z = VADD(sz, sz);
         const pgloss__v hx = VFNMADD(dd, dx, VADD(s2x, s2x)), hy = VFNMADD(dd, dy, VADD(s2y, s2y));
         const pgloss__v hz = VFNMADD(dd, dz, VADD(s2z, s2z));
-        /* 4. the exponent in base 2, (hx² log2e/αx² + hy² log2e/αy²)/hz², then 2^−x. No clamp
-         * of hz²: where it underflows (both cosines below ~1e-19) the exponent is NaN or -Inf,
-         * which v_exp2_neg maps to 0, the value there. The quotient: a reciprocal estimate and
+        /* 4. the exponent in base 2, (hx² log2e/αx² + hy² log2e/αy²)/hz², then 2^−x. The
+         * quotient: a reciprocal estimate and
          * one correction of the quotient itself, g = g0 − r (t2 + g0 hz²) (exact residual with
          * FMA): within an ulp or so. */
         const pgloss__v t2 = VFMADD(VMUL(hx, hx), V1(kb->inv_ax2_log2),
                                     VMUL(VMUL(hy, hy), V1(kb->inv_ay2_log2)));
-        const pgloss__v hz2 = VMUL(hz, hz);
+        /* hz floored at 1.1e-19 as the inline function's hzt (here 4h: 16 hz² >= 16·1.1e-19²),
+         * so that hz² is never 0 or subnormal (whose estimate is Inf); g0 floored at -1e30, so
+         * that the correction below never meets Inf − Inf. Both leave regular lanes alone. */
+        const pgloss__v hz2 = VMAX_POS(VMUL(hz, hz), V1(16.0f * 1.1e-19f * 1.1e-19f));
         const pgloss__v r = RCP_FOR_QUOTIENT(hz2);
-        const pgloss__v g0 = VFNMADD(t2, r, VZERO());
+        const pgloss__v g0 = VMAX(VFNMADD(t2, r, VZERO()), V1(-1e30f));
         const pgloss__v e = v_exp2_neg(VFNMADD(VFMADD(g0, hz2, t2), r, g0));
-        /* 5. cosines raised to COS_MIN; 16 hh = |4h|² ro ri; 1/hzc */
+        /* 5. cosines raised to COS_MIN; 1/hzc; 16 hhs = 16 hh/hzc² */
         const pgloss__v cic = VMAX_POS(ci, V1((float)PGLOSS_COS_MIN)), coc = VMAX_POS(co, V1((float)PGLOSS_COS_MIN));
         pgloss__v hh16 = VZERO(), inv_hzc = VZERO();
         if (want_p || (want_f && norm == PGLOSS_NORM_BOUNDED)) {
-            const pgloss__v h2 = VFMADD(hx, hx, VFMADD(hy, hy, VMUL(hz, hz)));
-            hh16 = VMUL(h2, VMUL(ro, ri));
+            /* 16 hhs = |4h/hzc|² ro ri: h scaled before it is squared (no underflow) */
             inv_hzc = v_rcp(VADD(cic, coc));
+            const pgloss__v gx = VMUL(hx, inv_hzc), gy = VMUL(hy, inv_hzc), gz = VMUL(hz, inv_hzc);
+            const pgloss__v g2 = VFMADD(gx, gx, VFMADD(gy, gy, VMUL(gz, gz)));
+            hh16 = VMUL(g2, VMUL(ro, ri));
         }
         if (want_f) { /* 6. the normalisation, fs = spec_scale e norm */
             pgloss__v nn, scale = V1(k->spec_scale);
             if (norm == PGLOSS_NORM_WARD_DUR) { /* 1/(ci co) */
                 nn = v_rcp(VMUL(cic, coc));
-            } else if (norm == PGLOSS_NORM_BOUNDED) { /* hh/hzc⁴ */
-                const pgloss__v inv_hzc2 = VMUL(inv_hzc, inv_hzc);
-                nn = VMUL(hh16, VMUL(inv_hzc2, inv_hzc2));
+            } else if (norm == PGLOSS_NORM_BOUNDED) { /* hhs/hzc² */
+                nn = VMUL(hh16, VMUL(inv_hzc, inv_hzc));
                 scale = V1(0.0625f * k->spec_scale);
             } else { /* eq. 2: 1/sqrt(ci co) = (2/sqrt(ci co))/2 */
                 nn = v_rsqrt2(VMUL(cic, coc));
@@ -121,9 +124,8 @@ PGLOSS_INLINE_FN int v_eval_pdf_block(const pgloss__batch_consts *restrict kb, c
             if (kb->may_overflow)
                 fs = VMIN(fs, V1(FLT_MAX));
         }
-        if (want_p) /* 7. Walter 2005: pdf += Ps 2 pdf_scale e hh / hzc³ */
-            p = VFMADD(VMUL(V1(0.0625f * k->pdf_s), VMUL(e, hh16)),
-                       VMUL(VMUL(inv_hzc, inv_hzc), inv_hzc), p);
+        if (want_p) /* 7. Walter 2005: pdf += Ps 2 pdf_scale e hhs / hzc */
+            p = VFMADD(VMUL(V1(0.0625f * k->pdf_s), VMUL(e, hh16)), inv_hzc, p);
     }
     /* 2., 8. f = ρd/π + fs above the horizon, 0 below; ρd/π + FLT_MAX rounds to FLT_MAX. */
     if (want_f && active == PGLOSS_LOBE_ALL) {
