@@ -415,7 +415,10 @@ void pgloss_impl_eval_pdf(pgloss_material m, uint act, vec3 o, vec3 i, out vec3 
             float ci = max(cos_i, PGLOSS_COS_MIN);
             float co = max(cos_o, PGLOSS_COS_MIN);
             float hzc = ci + co;
-            float hh = dot(h, h) * (ro * ri); /* |ô + î|² */
+            /* hhs = |ô + î|² / hzc², h scaled before it is squared: at grazing angles |h|² alone
+             * underflows (the C core's inline lobe does the same) */
+            vec3 g = h / hzc;
+            float hhs = dot(g, g) * (ro * ri);
             float norm;
 #if !defined(PGLOSS_NO_NORM_WARD_DUR) || !defined(PGLOSS_NO_NORM_BOUNDED)
             switch (m.normalization) {
@@ -423,7 +426,7 @@ void pgloss_impl_eval_pdf(pgloss_material m, uint act, vec3 o, vec3 i, out vec3 
             case PGLOSS_NORM_WARD_DUR: norm = 1.0 / (ci * co); break;                  /* Dür 2006 */
 #endif
 #ifndef PGLOSS_NO_NORM_BOUNDED
-            case PGLOSS_NORM_BOUNDED: norm = hh / ((hzc * hzc) * (hzc * hzc)); break;  /* GM&D 2010 */
+            case PGLOSS_NORM_BOUNDED: norm = hhs / (hzc * hzc); break;                 /* GM&D 2010 */
 #endif
             default: norm = inversesqrt(ci * co); break;                               /* eq. 2 */
             }
@@ -432,7 +435,7 @@ void pgloss_impl_eval_pdf(pgloss_material m, uint act, vec3 o, vec3 i, out vec3 
 #endif
             fs = m.spec_scale * e * norm;
             /* Walter 2005: p(wi) = D(h) / (4 (wo·h)); with H = ô + î: wo·Ĥ Ĥz³ = Hz³ / (2 H·H). */
-            p += ps * (2.0 * m.pdf_scale * e * hh / (hzc * hzc * hzc));
+            p += ps * (2.0 * m.pdf_scale * e * hhs / hzc);
         }
 #endif
     }

@@ -862,14 +862,17 @@ void pgloss__eval_pdf_unit(pgloss_material m, int active, vector o, vector i,
             float e = pgloss__exp(-(tx * tx + ty * ty));
             float ci = max(cos_i, PGLOSS_COS_MIN), co = max(cos_o, PGLOSS_COS_MIN);
             float hzc = ci + co;
-            float hh = (hx * hx + hy * hy + hz * hz) * (ro * ri);  // |ô + î|²
+            // hhs = |ô + î|² / hzc², h scaled before it is squared: at grazing angles |h|² alone
+            // underflows (the C core's inline lobe does the same)
+            float gx = hx / hzc, gy = hy / hzc, gz = hz / hzc;
+            float hhs = (gx * gx + gy * gy + gz * gz) * (ro * ri);
             float norm;
             if (m.normalization == PGLOSS_NORM_WARD_DUR) norm = 1.0 / (ci * co);                   // Dür 2006
-            else if (m.normalization == PGLOSS_NORM_BOUNDED) norm = hh / ((hzc * hzc) * (hzc * hzc)); // GM&D 2010
+            else if (m.normalization == PGLOSS_NORM_BOUNDED) norm = hhs / (hzc * hzc);               // GM&D 2010
             else norm = 1.0 / (sqrt(ci) * sqrt(co));                                              // eq. 2
             fs = pgloss__to_float((m.spec_scale * e) * norm);
             // Walter 2005: D(H)/(4 wo·Ĥ) with H = ô + î: wo·Ĥ Ĥz³ = Hz³ / (2 H·H).
-            p += pgloss__to_float(ps * (2.0 * m.pdf_scale * e) * (hh / (hzc * hzc * hzc)));
+            p += pgloss__to_float(ps * (2.0 * m.pdf_scale * e) * (hhs / hzc));
         }
     }
     f = color(pgloss__to_float(fd[0] + fs), pgloss__to_float(fd[1] + fs), pgloss__to_float(fd[2] + fs));
