@@ -100,9 +100,41 @@ TEST_F(ObjFile, MalformedNumbersAreErrors) {
     EXPECT_EQ(with(tri + "f 1 2 4\n"), where + ":4: face index out of range");
     // A vertex that overflows float after the scene's scale.
     EXPECT_EQ(with("v 1e38 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", " scale=10"),
-              where + ":1: vertex outside ±10000000 after scale and translate");
+              "bad.scene:4: mesh: field 'file': " + (dir / "t.obj").string() +
+                  ": vertex 1 outside ±10000000 after scale and translate");
     // The usual forms stay accepted: v, v/t, v/t/n, v//n, negative (relative) indices, comments.
     EXPECT_EQ(with(tri + "vt 0 0\nvn 0 0 1\nf 1/1/1 2//1 -1/1 # a comment\n"), "");
+}
+
+TEST_F(ObjFile, OneFileInstancedManyTimes) {
+    // Each `mesh` line is its own instance (scale, translate) of the file, which is read once.
+    std::ofstream(dir / "t.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    std::string text = kHead;
+    const int n = 500;
+    for (int i = 0; i < n; ++i)
+        text += "mesh file=t.obj material=m scale=2 translate=" + std::to_string(i) + ",0,0\n";
+    pgt::Scene sc = pgt::parse_scene(text, "t.scene", dir.string());
+    ASSERT_EQ(sc.meshes.size(), size_t(n));
+    for (int i = 0; i < n; ++i) {
+        const pgt::Mesh &m = sc.meshes[size_t(i)];
+        ASSERT_EQ(m.faces.size(), 1u);
+        EXPECT_EQ(m.vertices[1], glm::vec3(float(i) + 2.0f, 0.0f, 0.0f));
+        EXPECT_EQ(m.vertices[2], glm::vec3(float(i), 2.0f, 0.0f));
+    }
+    // An instance outside the coordinate limit is refused though the file was read fine before.
+    EXPECT_EQ(error_of(kHead + "mesh file=t.obj material=m\nmesh file=t.obj material=m scale=1e7 translate=1,0,0\n",
+                       dir.string()),
+              "bad.scene:5: mesh: field 'file': " + (dir / "t.obj").string() +
+                  ": vertex 2 outside ±10000000 after scale and translate");
+}
+
+TEST(Hardening, WordsWithoutAFieldNameAreErrors) {
+    // Only `material NAME KIND` takes bare words; elsewhere a stray word is a typo, not ignored.
+    EXPECT_EQ(error_of(kHead + "sphere center=0,0,0 radius=1 material=m shiny\n"),
+              "bad.scene:4: sphere: unexpected word 'shiny' (fields are key=value)");
+    EXPECT_EQ(error_of(kHead + "render 16\n"), "bad.scene:4: render: unexpected word '16' (fields are key=value)");
+    EXPECT_EQ(error_of(kHead + "material n physical extra rho_d=0.1 rho_s=0 alpha=0.1\n"),
+              "bad.scene:4: material: unexpected word 'extra'");
 }
 
 TEST_F(ObjFile, OnlyBoundedRegularFilesAreRead) {

@@ -80,7 +80,10 @@ public:
     }
 
     const std::string &keyword() const { return keyword_; }
-    const std::vector<std::string> &positional() const { return positional_; }
+    const std::vector<std::string> &positional() {
+        positional_used_ = true;
+        return positional_;
+    }
     bool has(const std::string &k) const { return kv_.count(k) != 0; }
 
     std::string str(const std::string &k) {
@@ -141,7 +144,9 @@ public:
         return glm::dvec3(v[0], v[1], v[2]);
     }
 
-    void finish() const {  // unknown fields are errors, so that typos are not silently ignored
+    void finish() const {  // unknown fields and words are errors, so that typos are not silently ignored
+        if (!positional_used_ && !positional_.empty())
+            fail("", "unexpected word '" + positional_[0] + "' (fields are key=value)");
         for (auto &kv : kv_) {
             bool used = false;
             for (auto &u : used_) used = used || u == kv.first;
@@ -178,6 +183,7 @@ private:
     int number_;
     std::string keyword_;
     std::vector<std::string> positional_;
+    bool positional_used_ = false;
     std::map<std::string, std::string> kv_;
     std::vector<std::string> used_;
 };
@@ -212,7 +218,13 @@ bool whole_long(const std::string &w, long long &v) {
     return *end == '\0' && errno == 0;
 }
 
-Mesh load_obj(Line &l, const std::string &path, int material, float scale, glm::vec3 translate) {
+// An OBJ file as read: its vertices (in double, before scale and translate) and triangles.
+struct ObjData {
+    std::vector<glm::dvec3> vertices;
+    std::vector<glm::uvec3> faces;
+};
+
+ObjData read_obj(Line &l, const std::string &path) {
     std::string all;
     try {
         all = read_text_file(path, limits::obj_bytes, "OBJ file");
@@ -220,9 +232,7 @@ Mesh load_obj(Line &l, const std::string &path, int material, float scale, glm::
         l.fail("file", e.what());
     }
     std::istringstream in(all);
-    Mesh m;
-    m.material = material;
-    m.label = "mesh:" + path;
+    ObjData d;
     std::string text;
     int ln = 0;
     auto bad = [&](const std::string &what) { l.fail("file", path + ":" + std::to_string(ln) + ": " + what); };
@@ -234,15 +244,11 @@ Mesh load_obj(Line &l, const std::string &path, int material, float scale, glm::
         std::vector<std::string> w;
         for (std::string s; ss >> s;) w.push_back(s);
         if (tag == "v") {  // v x y z [w]
-            double x[3];
+            glm::dvec3 x;
             if (w.size() < 3 || w.size() > 4) bad("a vertex is 'v x y z [w]'");
-            for (int k = 0; k < 3; ++k) {
+            for (int k = 0; k < 3; ++k)
                 if (!whole_double(w[size_t(k)], x[k])) bad("bad vertex coordinate '" + w[size_t(k)] + "'");
-                x[k] = x[k] * double(scale) + double(translate[k]);
-                if (!(std::fabs(x[k]) <= limits::coordinate))
-                    bad("vertex outside ±" + std::to_string(long(limits::coordinate)) + " after scale and translate");
-            }
-            m.vertices.push_back(glm::vec3(float(x[0]), float(x[1]), float(x[2])));
+            d.vertices.push_back(x);
         } else if (tag == "f") {  // f v | v/t | v/t/n | v//n …
             std::vector<unsigned> idx;
             for (const std::string &t : w) {
@@ -255,15 +261,35 @@ Mesh load_obj(Line &l, const std::string &path, int material, float scale, glm::
                 for (size_t k = 1; ok && k < part.size(); ++k)
                     ok = (k == 1 && part.size() == 3 && part[k].empty()) || whole_long(part[k], extra);
                 if (!ok) bad("bad face vertex '" + t + "' (v, v/t, v/t/n or v//n, whole numbers)");
-                if (i < 0) i = static_cast<long long>(m.vertices.size()) + i + 1;
-                if (i < 1 || i > static_cast<long long>(m.vertices.size())) bad("face index out of range");
+                if (i < 0) i = static_cast<long long>(d.vertices.size()) + i + 1;
+                if (i < 1 || i > static_cast<long long>(d.vertices.size())) bad("face index out of range");
                 idx.push_back(static_cast<unsigned>(i - 1));
             }
             if (idx.size() < 3) bad("face with < 3 vertices");
-            for (size_t k = 1; k + 1 < idx.size(); ++k) m.faces.push_back({idx[0], idx[k], idx[k + 1]});
+            for (size_t k = 1; k + 1 < idx.size(); ++k) d.faces.push_back({idx[0], idx[k], idx[k + 1]});
+            if (d.faces.size() > limits::triangles) bad("more than " + std::to_string(limits::triangles) + " triangles");
         }
     }
-    if (m.faces.empty()) l.fail("file", "'" + path + "' has no faces");
+    if (d.faces.empty()) l.fail("file", "'" + path + "' has no faces");
+    return d;
+}
+
+// One `mesh` line's instance of an OBJ file: scaled and translated, every vertex within
+// limits::coordinate (checked in double, before the float that Embree gets).
+Mesh place_obj(Line &l, const std::string &path, const ObjData &d, int material, float scale, glm::vec3 translate) {
+    Mesh m;
+    m.material = material;
+    m.label = "mesh:" + path;
+    m.vertices.reserve(d.vertices.size());
+    for (size_t i = 0; i < d.vertices.size(); ++i) {
+        glm::dvec3 x = d.vertices[i] * double(scale) + glm::dvec3(translate);
+        if (!(std::fabs(x.x) <= limits::coordinate && std::fabs(x.y) <= limits::coordinate &&
+              std::fabs(x.z) <= limits::coordinate))
+            l.fail("file", path + ": vertex " + std::to_string(i + 1) + " outside ±" +
+                               std::to_string(long(limits::coordinate)) + " after scale and translate");
+        m.vertices.push_back(glm::vec3(x));
+    }
+    m.faces = d.faces;
     return m;
 }
 
@@ -285,6 +311,8 @@ Scene parse_scene(const std::string &text, const std::string &file, const std::s
     std::string raw;
     int number = 0;
     bool have_camera = false;
+    std::map<std::string, ObjData> objs;  // OBJ files read so far, by path
+    size_t triangles = 0;                 // in `mesh` instances so far
     while (std::getline(in, raw)) {
         ++number;
         std::vector<std::string> words = tokenize(raw);
@@ -401,7 +429,14 @@ Scene parse_scene(const std::string &text, const std::string &file, const std::s
             std::string path = (!f.empty() && f[0] == '/') ? f : base_dir + "/" + f;
             int mat = material_ref("material");
             float scale = l.real("scale", 0, limits::coordinate, true, 1);
-            sc.meshes.push_back(load_obj(l, path, mat, scale, l.vec("translate", glm::vec3(0))));
+            glm::vec3 translate = l.vec("translate", glm::vec3(0));
+            // Each file is read once per scene: a scene may instance one model many times.
+            auto it = objs.find(path);
+            if (it == objs.end()) it = objs.emplace(path, read_obj(l, path)).first;
+            if (triangles + it->second.faces.size() > limits::triangles)
+                l.fail("file", "the scene would have more than " + std::to_string(limits::triangles) + " triangles");
+            triangles += it->second.faces.size();
+            sc.meshes.push_back(place_obj(l, path, it->second, mat, scale, translate));
         } else if (kw == "light") {
             AreaLight a;
             a.corner = l.vec("corner");

@@ -52,6 +52,7 @@ constexpr int threads = 1 << 10;
 constexpr unsigned long long seed = 0xffffffffULL;
 constexpr unsigned long long scene_bytes = 64ULL << 20;   // a scene file
 constexpr unsigned long long obj_bytes = 1ULL << 30;      // an OBJ file
+constexpr size_t triangles = size_t(1) << 25;               // in all `mesh` lines of a scene
 }  // namespace limits
 
 struct SceneError : std::runtime_error {
