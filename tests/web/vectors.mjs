@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The pgloss authors
 // SPDX-License-Identifier: Apache-2.0
 // The WebAssembly build of libpgloss held to the shared vectors (tests/vectors/README.md):
-// lightness, gloss, color, validity and perceptual_material, through the picker's own loader
+// lightness, gloss, color, validity, perceptual_material and color_space, through the picker's own loader
 // (web/picker/pgloss-wasm.js), with the C runner's double tolerances. The module has
 // pointers, so the null_pointer cases run too (nothing is skipped).
 //   node tests/web/vectors.mjs build-wasm/pgloss.wasm
@@ -38,11 +38,17 @@ function run(fn, input) {
     case 'check_perceptual': return pg.checkPerceptual(i.q, nulls);
     case 'physical_from_perceptual': return pg.physicalFromPerceptual(i.q, i.normalization, nulls);
     case 'perceptual_from_physical': return pg.perceptualFromPhysical(i.p, nulls);
+    case 'rgb_from_lab_ex': return pg.rgbFromLabEx(i.lab ?? [0, 0, 0], i.space, nulls);
+    case 'lab_from_rgb_ex': return pg.labFromRgbEx(i.rgb ?? [0, 0, 0], i.space, nulls);
+    case 'luminance_ex': return pg.luminanceEx(i.rgb ?? [0, 0, 0], i.space, nulls);
+    case 'check_perceptual_ex': return pg.checkPerceptualEx(i.q, i.space, nulls);
+    case 'physical_from_perceptual_ex': return pg.physicalFromPerceptualEx(i.q, i.normalization, i.space, nulls);
+    case 'perceptual_from_physical_ex': return pg.perceptualFromPhysicalEx(i.p, i.space, nulls);
     default: throw new Error(`no runner for ${fn}`);
   }
 }
 
-const files = ['lightness', 'gloss', 'color', 'validity', 'perceptual_material'];
+const files = ['lightness', 'gloss', 'color', 'validity', 'perceptual_material', 'color_space'];
 let total = 0, failed = 0, nullCases = 0, worst = { ratio: 0 };
 const perFn = {};
 for (const f of files) {

@@ -183,14 +183,39 @@ export class Pgloss {
     const st = this.x.pgloss_perceptual_from_physical(pp, pq);
     return this._result(st, pq ? this._readPerceptual(pq) : {});
   }
+  // The _ex forms: the same in a working colour space (pgloss_color_space: 0 linear Rec. 709,
+  // 1 ACEScg, 2 linear Display P3), as perceptual.h's *_ex.
+  checkPerceptualEx(q, space, nulls = []) {
+    const alloc = this._arena();
+    let pq = 0;
+    if (!nulls.includes('q')) { pq = alloc(PERC.size); this._writePerceptual(pq, q); }
+    return this._result(this.x.pgloss_check_perceptual_ex(pq, space), {});
+  }
+  physicalFromPerceptualEx(q, normalization, space, nulls = []) {
+    const alloc = this._arena();
+    let pq = 0, pp = 0;
+    if (!nulls.includes('q')) { pq = alloc(PERC.size); this._writePerceptual(pq, q); }
+    if (!nulls.includes('p')) pp = alloc(PHYS.size);
+    const st = this.x.pgloss_physical_from_perceptual_ex(pq, normalization, space, pp);
+    return this._result(st, pp ? this._readPhysical(pp) : {});
+  }
+  perceptualFromPhysicalEx(p, space, nulls = []) {
+    const alloc = this._arena();
+    let pp = 0, pq = 0;
+    if (!nulls.includes('p')) { pp = alloc(PHYS.size); this._writePhysical(pp, p); }
+    if (!nulls.includes('q')) pq = alloc(PERC.size);
+    const st = this.x.pgloss_perceptual_from_physical_ex(pp, space, pq);
+    return this._result(st, pq ? this._readPerceptual(pq) : {});
+  }
 
   // --- color.h ----------------------------------------------------------------------------
-  _vec3(cname, inName, v, outName, outLen, nulls = []) {
+  // space: undefined for the functions without _ex, else the pgloss_color_space of *_ex.
+  _vec3(cname, inName, v, outName, outLen, nulls = [], space = undefined) {
     const alloc = this._arena();
     let pin = 0;
     if (!nulls.includes(inName)) { pin = alloc(24); this.f64.set(v.map(Number), pin / 8); }
     const pout = nulls.includes(outName) ? 0 : alloc(8 * outLen);
-    const st = this.x[cname](pin, pout);
+    const st = space === undefined ? this.x[cname](pin, pout) : this.x[cname](pin, space, pout);
     const out = {};
     if (pout) out[outName] = outLen === 1 ? this.f64[pout / 8] : Array.from(this.f64.subarray(pout / 8, pout / 8 + outLen));
     return this._result(st, out);
@@ -198,4 +223,7 @@ export class Pgloss {
   rgbFromLab(lab, nulls) { return this._vec3('pgloss_rgb_from_lab', 'lab', lab, 'rgb', 3, nulls); }
   labFromRgb(rgb, nulls) { return this._vec3('pgloss_lab_from_rgb', 'rgb', rgb, 'lab', 3, nulls); }
   luminance(rgb, nulls) { return this._vec3('pgloss_luminance', 'rgb', rgb, 'Y', 1, nulls); }
+  rgbFromLabEx(lab, space, nulls) { return this._vec3('pgloss_rgb_from_lab_ex', 'lab', lab, 'rgb', 3, nulls, space); }
+  labFromRgbEx(rgb, space, nulls) { return this._vec3('pgloss_lab_from_rgb_ex', 'rgb', rgb, 'lab', 3, nulls, space); }
+  luminanceEx(rgb, space, nulls) { return this._vec3('pgloss_luminance_ex', 'rgb', rgb, 'Y', 1, nulls, space); }
 }
