@@ -16,18 +16,12 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-import importlib.util  # noqa: E402
-
-_spec = importlib.util.find_spec("bpy")
-if _spec is not None and _spec.origin is not None:
-    # Cycles imports oslquery, which bpy bundles outside the interpreter's sys.path (as tests/osl/oslrt.py).
-    _bundled = Path(_spec.origin).parent / "5.0" / "python" / "lib" / "python3.11" / "site-packages"
-    if str(_bundled) not in sys.path:
-        sys.path.append(str(_bundled))
-bpy = pytest.importorskip("bpy", reason="bpy (the Blender module) runs the add-on")
-import OpenImageIO as oiio  # noqa: E402  (bundled with bpy)
-
 ROOT = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(ROOT / "tests" / "osl"))
+# tests/osl/oslrt.py imports bpy (and the OSL tools it bundles) and builds the furnace scene.
+oslrt = pytest.importorskip("oslrt", reason="bpy (the Blender module) runs the add-on")
+bpy = oslrt.bpy
+oiio = oslrt.oiio
 VECTORS = ROOT / "tests" / "vectors"
 MODULE = "bl_ext.user_default.pgloss_paint"
 
@@ -54,37 +48,20 @@ def addon():
 
 
 def _scene(samples: int = 64, size: int = 32):
-    bpy.ops.wm.read_homefile(use_empty=True)  # keeps the preferences (and so the extension)
+    """A white furnace (oslrt.furnace_setup) in the home file, which keeps the preferences and
+    so the installed extension; the sphere is the active object."""
+    bpy.ops.wm.read_homefile(use_empty=True)
     assert MODULE in bpy.context.preferences.addons.keys()
     sc = bpy.context.scene
     sc.render.engine = "CYCLES"
     sc.cycles.device = "CPU"
-    sc.cycles.samples = samples
-    sc.cycles.use_denoising = False
-    sc.cycles.max_bounces = 1
-    sc.cycles.seed = 0
     sc.render.threads_mode = "FIXED"
     sc.render.threads = 2
     sc.view_settings.view_transform = "Raw"
-    sc.render.resolution_x = sc.render.resolution_y = size
     sc.render.resolution_percentage = 100
     sc.render.image_settings.file_format = "OPEN_EXR"
     sc.render.image_settings.color_depth = "32"
-    bpy.ops.mesh.primitive_uv_sphere_add(radius=1.0, segments=64, ring_count=32)
-    bpy.ops.object.shade_smooth()
-    cam = bpy.data.cameras.new("c")
-    cam.type = "ORTHO"
-    cam.ortho_scale = 2.2
-    co = bpy.data.objects.new("c", cam)
-    sc.collection.objects.link(co)
-    co.location = (0, 0, 5)
-    sc.camera = co
-    w = bpy.data.worlds.new("w")  # a white furnace: a pixel shows the directional albedo
-    for n in w.node_tree.nodes:
-        if n.type == "BACKGROUND":
-            n.inputs["Color"].default_value = (1, 1, 1, 1)
-            n.inputs["Strength"].default_value = 1.0
-    sc.world = w
+    oslrt.furnace_setup(sc, samples, size, segments=64, rings=32)
     return sc
 
 

@@ -1,15 +1,15 @@
 # SPDX-FileCopyrightText: 2026 The pgloss authors
 # SPDX-License-Identifier: Apache-2.0
-"""pytest set-up for tests/experiment: tests/web's hooks (with PGLOSS_REQUIRE_ALL=1 a skipped test
+"""pytest set-up for tests/experiment: tests/require_all.py's hooks (with PGLOSS_REQUIRE_ALL=1 a skipped test
 is a failure), and the fixtures the experiment's tests share: the rendered stimuli and servers."""
 from __future__ import annotations
 
-import importlib.util
 import json
 import os
 import signal
 import socket
 import subprocess
+import sys
 import time
 import urllib.error
 import urllib.request
@@ -19,11 +19,8 @@ from typing import Any, Dict, Iterator, Optional, Tuple
 import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
-_spec = importlib.util.spec_from_file_location("_pgloss_web_conftest", ROOT / "tests/web/conftest.py")
-_web = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(_web)
-pytest_terminal_summary = _web.pytest_terminal_summary
-pytest_sessionfinish = _web.pytest_sessionfinish
+sys.path.insert(0, str(ROOT / "tests"))
+from require_all import pytest_sessionfinish, pytest_terminal_summary  # noqa: E402,F401
 
 PY = os.environ.get("PGLOSS_EXPERIMENT_PY", str(ROOT / ".venv-py/bin/python"))
 TRACER = os.environ.get("PGLOSS_TRACER", str(ROOT / "build-tracer-test/examples/tracer/pgloss-tracer"))

@@ -143,3 +143,43 @@ def render_shader(osl_path: Path, width: int, height: int, out_exr: Path, wire=N
         raise RuntimeError(f"unexpected EXR {spec.width}x{spec.height} {spec.format}")
     px = np.asarray(buf.get_pixels(oiio.FLOAT), dtype=np.float32)
     return px[:, :, :3].copy()
+
+
+def furnace_setup(sc: bpy.types.Scene, samples: int, size: int, segments: int = 128, rings: int = 64):
+    """Adds a white furnace to a reset scene: a smooth unit sphere seen head-on by an
+    orthographic camera inside a uniform environment of radiance 1, one bounce, fixed seed,
+    no denoising, ``size`` x ``size`` pixels. A pixel shows the directional albedo at its θo.
+    Returns the sphere object (its material is the caller's)."""
+    sc.cycles.samples = samples
+    sc.cycles.use_denoising = False
+    sc.cycles.max_bounces = 1
+    sc.cycles.seed = 0
+    sc.render.resolution_x = sc.render.resolution_y = size
+    bpy.ops.mesh.primitive_uv_sphere_add(radius=1.0, segments=segments, ring_count=rings)
+    bpy.ops.object.shade_smooth()
+    sphere = bpy.context.object
+    cam = bpy.data.cameras.new("c")
+    cam.type = "ORTHO"
+    cam.ortho_scale = 2.2
+    co = bpy.data.objects.new("c", cam)
+    sc.collection.objects.link(co)
+    co.location = (0, 0, 5)
+    sc.camera = co
+    w = bpy.data.worlds.new("w")
+    for n in w.node_tree.nodes:
+        if n.type == "BACKGROUND":
+            n.inputs["Color"].default_value = (1, 1, 1, 1)
+            n.inputs["Strength"].default_value = 1.0
+    sc.world = w
+    return sphere
+
+
+def render_centre(sc: bpy.types.Scene, path: Path, half: int = 4) -> np.ndarray:
+    """Renders the scene to ``path``; the (2 half + 1)² pixels around the centre, RGB float64
+    (at 64 px and half = 4, θo < 13° on the furnace's sphere)."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    sc.render.filepath = str(path)
+    bpy.ops.render.render(write_still=True)
+    img = np.asarray(oiio.ImageBuf(str(path)).get_pixels(oiio.FLOAT))[:, :, :3]
+    c = img.shape[0] // 2
+    return img[c - half:c + half + 1, c - half:c + half + 1].astype(np.float64)

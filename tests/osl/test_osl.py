@@ -126,80 +126,20 @@ def test_params_shader_fig12(output: str, tmp_path: Path) -> None:
 
 
 def _furnace_scene(samples: int, size: int = 64):
-    """A sphere seen head-on (orthographic) inside a uniform white environment of radiance 1
-    (a furnace): a pixel shows the directional albedo at its θo. Returns (scene, sphere)."""
-    import bpy
-
+    """The furnace of oslrt.furnace_setup in a reset scene: (scene, sphere)."""
     sc = oslrt.reset_scene()
-    sc.cycles.samples = samples
-    sc.cycles.use_denoising = False
-    sc.cycles.max_bounces = 1
-    sc.cycles.seed = 0
-    sc.render.resolution_x = sc.render.resolution_y = size
-    bpy.ops.mesh.primitive_uv_sphere_add(radius=1.0, segments=128, ring_count=64)
-    bpy.ops.object.shade_smooth()
-    ob = bpy.context.object
-    cam = bpy.data.cameras.new("c")
-    cam.type = "ORTHO"
-    cam.ortho_scale = 2.2
-    co = bpy.data.objects.new("c", cam)
-    sc.collection.objects.link(co)
-    co.location = (0, 0, 5)
-    sc.camera = co
-    w = bpy.data.worlds.new("w")
-    for n in w.node_tree.nodes:
-        if n.type == "BACKGROUND":
-            n.inputs["Color"].default_value = (1, 1, 1, 1)
-            n.inputs["Strength"].default_value = 1.0
-    sc.world = w
-    return sc, ob
-
-
-def _render_centre(sc, path: Path) -> np.ndarray:
-    """Renders the scene to ``path``; the 9 x 9 pixels around the centre (θo < 13° at 64 px)."""
-    import bpy
-
-    sc.render.filepath = str(path)
-    bpy.ops.render.render(write_still=True)
-    img = np.asarray(oslrt.oiio.ImageBuf(str(path)).get_pixels(oslrt.oiio.FLOAT))[:, :, :3]
-    c = img.shape[0] // 2
-    return img[c - 4:c + 5, c - 4:c + 5].astype(np.float64)
+    return sc, oslrt.furnace_setup(sc, samples, size)
 
 
 def _furnace(inputs: dict, tmp_path: Path, samples: int = 256) -> np.ndarray:
     """pgloss_material.osl (external file) in the furnace; the 9 x 9 centre pixels."""
-    import bpy
-
-    sc = oslrt.reset_scene()
-    sc.cycles.samples = samples
-    sc.cycles.use_denoising = False
-    sc.cycles.max_bounces = 1
-    sc.render.resolution_x = sc.render.resolution_y = 64
-    bpy.ops.mesh.primitive_uv_sphere_add(radius=1.0, segments=128, ring_count=64)
-    bpy.ops.object.shade_smooth()
-    ob = bpy.context.object
+    sc, ob = _furnace_scene(samples)
     mat, nt, scr, out = oslrt.osl_material("m", oslrt.OSL_DIR / "pgloss_material.osl")
     for k, v in inputs.items():
         scr.inputs[k].default_value = v
     nt.links.new(scr.outputs["BSDF"], out.inputs["Surface"])
     ob.data.materials.append(mat)
-    cam = bpy.data.cameras.new("c")
-    cam.type = "ORTHO"
-    cam.ortho_scale = 2.2
-    co = bpy.data.objects.new("c", cam)
-    sc.collection.objects.link(co)
-    co.location = (0, 0, 5)
-    sc.camera = co
-    w = bpy.data.worlds.new("w")
-    for n in w.node_tree.nodes:
-        if n.type == "BACKGROUND":
-            n.inputs["Color"].default_value = (1, 1, 1, 1)
-            n.inputs["Strength"].default_value = 1.0
-    sc.world = w
-    sc.render.filepath = str(tmp_path / "furnace.exr")
-    bpy.ops.render.render(write_still=True)
-    img = np.asarray(oslrt.oiio.ImageBuf(sc.render.filepath).get_pixels(oslrt.oiio.FLOAT))[:, :, :3]
-    return img[28:37, 28:37].astype(np.float64)
+    return oslrt.render_centre(sc, tmp_path / "furnace.exr")
 
 
 def test_material_diffuse_closure(tmp_path: Path) -> None:
@@ -317,6 +257,6 @@ def test_standalone_shader_packed_in_blend_renders(tmp_path: Path) -> None:
     sc = bpy.context.scene
     node = next(n for n in bpy.data.materials["m"].node_tree.nodes if n.type == "SCRIPT")
     assert node.mode == "INTERNAL" and node.script is not None and node.script.as_string() == src
-    got = _render_centre(sc, tmp_path / "standalone.exr").mean(axis=(0, 1))
+    got = oslrt.render_centre(sc, tmp_path / "standalone.exr").mean(axis=(0, 1))
     assert np.all(got > 0.05), got
     np.testing.assert_allclose(got, ref, rtol=0.03)

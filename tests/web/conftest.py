@@ -1,20 +1,9 @@
 # SPDX-FileCopyrightText: 2026 The pgloss authors
 # SPDX-License-Identifier: Apache-2.0
-"""pytest set-up for tests/web: with PGLOSS_REQUIRE_ALL=1 (scripts/test.sh, CI) a skipped test
-is a failure, as in tests/python."""
-from __future__ import annotations
+"""pytest set-up for tests/web: with PGLOSS_REQUIRE_ALL=1 (the test scripts' default, and CI)
+a skipped test is a failure (tests/require_all.py)."""
+import sys
+from pathlib import Path
 
-import os
-
-
-def pytest_terminal_summary(terminalreporter, exitstatus, config):  # noqa: D103
-    if os.environ.get("PGLOSS_REQUIRE_ALL") == "1" and terminalreporter.stats.get("skipped"):
-        terminalreporter.write_line(
-            f"PGLOSS_REQUIRE_ALL=1: {len(terminalreporter.stats['skipped'])} skipped tests count as failures")
-
-
-def pytest_sessionfinish(session, exitstatus):  # noqa: D103
-    if os.environ.get("PGLOSS_REQUIRE_ALL") == "1":
-        reporter = session.config.pluginmanager.get_plugin("terminalreporter")
-        if reporter is not None and reporter.stats.get("skipped") and session.exitstatus == 0:
-            session.exitstatus = 1
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+from require_all import pytest_sessionfinish, pytest_terminal_summary  # noqa: E402,F401

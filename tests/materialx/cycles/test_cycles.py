@@ -24,36 +24,10 @@ MX_INCLUDE = ROOT / "build-materialx" / "mx_include"  # filled by scripts/test-m
 
 
 def _furnace(setup) -> np.ndarray:
-    """A sphere in a white furnace (orthographic, head-on); the 9 x 9 centre pixels' mean."""
+    """A sphere in a white furnace (oslrt.furnace_setup, 48 px); the 9 x 9 centre pixels' mean."""
     sc = oslrt.reset_scene()
-    sc.cycles.samples = 128
-    sc.cycles.use_denoising = False
-    sc.cycles.max_bounces = 1
-    sc.cycles.seed = 0
-    sc.render.resolution_x = sc.render.resolution_y = 48
-    bpy.ops.mesh.primitive_uv_sphere_add(radius=1.0, segments=64, ring_count=32)
-    bpy.ops.object.shade_smooth()
-    ob = bpy.context.object
-    ob.data.materials.append(setup())
-    cam = bpy.data.cameras.new("c")
-    cam.type = "ORTHO"
-    cam.ortho_scale = 2.2
-    co = bpy.data.objects.new("c", cam)
-    sc.collection.objects.link(co)
-    co.location = (0, 0, 5)
-    sc.camera = co
-    w = bpy.data.worlds.new("w")
-    for n in w.node_tree.nodes:
-        if n.type == "BACKGROUND":
-            n.inputs["Color"].default_value = (1, 1, 1, 1)
-            n.inputs["Strength"].default_value = 1.0
-    sc.world = w
-    path = oslrt.WORK / "mx_furnace.exr"
-    path.parent.mkdir(parents=True, exist_ok=True)
-    sc.render.filepath = str(path)
-    bpy.ops.render.render(write_still=True)
-    img = np.asarray(oslrt.oiio.ImageBuf(str(path)).get_pixels(oslrt.oiio.FLOAT))[:, :, :3]
-    return img[20:29, 20:29].reshape(-1, 3).mean(axis=0).astype(np.float64)
+    oslrt.furnace_setup(sc, samples=128, size=48, segments=64, rings=32).data.materials.append(setup())
+    return oslrt.render_centre(sc, oslrt.WORK / "mx_furnace.exr").reshape(-1, 3).mean(axis=0)
 
 
 def _materialx_material(name: str, tmp: Path):
