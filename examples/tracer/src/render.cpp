@@ -16,6 +16,7 @@
 #include <sstream>
 #include <system_error>
 #include <thread>
+#include <time.h>
 #include <unistd.h>
 
 namespace pgt {
@@ -378,6 +379,12 @@ Image Renderer::render(const RenderSettings &s, const RenderOptions &opt, Render
     img.width = w, img.height = h;
     img.rgb.assign(sum.size(), 0.0f);
     RenderStats st;
+    auto cpu_now = [] {
+        timespec ts{};
+        clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+        return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+    };
+    const double cpu0 = cpu_now();
     auto t0 = clock::now();
     auto elapsed = [&] { return std::chrono::duration<double>(clock::now() - t0).count(); };
     const bool tty = opt.progress && isatty(2);
@@ -529,6 +536,7 @@ Image Renderer::render(const RenderSettings &s, const RenderOptions &opt, Render
     }
     st.rays = rays.load();
     st.seconds = elapsed();
+    st.cpu_seconds = cpu_now() - cpu0;
     if (tty) print_progress(true);
     if (stats_out) *stats_out = st;
     return img;
