@@ -4,6 +4,7 @@
 #include "render.hpp"
 
 #include <embree3/rtcore.h>
+#include <pgloss/inline.h>
 
 #include <algorithm>
 #include <atomic>
@@ -18,6 +19,9 @@
 #include <thread>
 #include <time.h>
 #include <unistd.h>
+#if defined(__SSE__) || defined(_M_X64)
+#include <xmmintrin.h>
+#endif
 
 namespace pgt {
 
@@ -35,6 +39,7 @@ std::uint64_t splitmix64(std::uint64_t x) {
 
 class Rng {
 public:
+    Rng() : state_(0), inc_(1) {}
     Rng(unsigned seed, std::uint64_t pixel, std::uint64_t sample) {
         std::uint64_t h = splitmix64(splitmix64(splitmix64(seed) ^ pixel) ^ sample);
         inc_ = (splitmix64(h) << 1u) | 1u;
@@ -82,6 +87,18 @@ struct GeomRef {
     int index;
 };
 
+// Flush-to-zero and denormals-are-zero for the scope (restored after): Embree asks for them
+// (a subnormal in traversal or shading costs ~100 cycles), and pgloss's float lobe takes
+// underflow to 0 either way. Set in every worker, so the image does not depend on which
+// thread rendered a tile.
+struct DenormalsOff {
+#if defined(__SSE__) || defined(_M_X64)
+    unsigned saved = _mm_getcsr();
+    DenormalsOff() { _mm_setcsr(saved | 0x8040u); }  // FTZ (bit 15) | DAZ (bit 6)
+    ~DenormalsOff() { _mm_setcsr(saved); }
+#endif
+};
+
 // Joins every joinable thread when it goes out of scope, also while an exception unwinds
 // (a joinable std::thread destroyed would call std::terminate).
 struct JoinAll {
@@ -97,6 +114,54 @@ struct Hit {
     float t = 0;
     glm::vec3 p, n;  // n: unit geometric normal, not yet face-forwarded
     GeomRef ref{GeomKind::MESH, -1};
+};
+
+// The pinhole camera: the direction through image position (px, py) of a w × h image.
+struct Pinhole {
+    glm::vec3 f, r, u;
+    float th, w, h;
+    Pinhole(const Camera &c, int width, int height) : w(float(width)), h(float(height)) {
+        f = glm::normalize(c.look_at - c.position);
+        r = glm::normalize(glm::cross(f, c.up));
+        u = glm::cross(r, f);
+        th = std::tan(0.5f * c.fov_deg * kPi / 180.0f);
+    }
+    glm::vec3 dir(float px, float py) const {
+        float sx = (2.0f * px / w - 1.0f) * (w / h) * th;
+        float sy = (1.0f - 2.0f * py / h) * th;
+        return glm::normalize(f + sx * r + sy * u);
+    }
+};
+
+// What the previous vertex of a path did, to weight emission found by its BRDF-sampled ray.
+enum class Prev { CAMERA, MIS, BRDF, LIGHT };
+
+// One camera path in flight (a wavefront holds a tile's paths of a pass).
+struct PathState {
+    glm::vec3 o{0}, d{0};            // the ray to trace next
+    glm::vec3 beta{1}, L{0};         // throughput, radiance so far
+    glm::vec3 prev_n{0};
+    float prev_pdf = 0;
+    Prev prev = Prev::CAMERA;
+    int depth = 0;                   // index of the vertex the next hit will be
+    Rng rng;
+    bool shadow = false;             // a next-event estimate waits for its shadow ray:
+    glm::vec3 shadow_o{0}, shadow_d{0}, shadow_c{0};  // ray, and what it adds if unoccluded
+    float shadow_tmax = 0;
+};
+
+// Paths traced together: enough for full packets until the last bounces, few enough that
+// their state stays in the core's L2 cache.
+#ifndef PGT_WAVEFRONT
+#define PGT_WAVEFRONT 1024
+#endif
+constexpr size_t kWavefront = PGT_WAVEFRONT;
+
+// A worker's scratch lists for trace_wavefront (kept across tiles: no allocation per sample).
+struct Wavefront {
+    std::vector<std::uint32_t> active, next, shadows;
+    std::vector<Hit> hits;
+    std::vector<PathState> paths;
 };
 
 }  // namespace
@@ -120,6 +185,11 @@ struct Renderer::Impl {
     RTCDevice device = nullptr;
     RTCScene rtc = nullptr;
     std::vector<GeomRef> geoms;  // by geomID
+    // A scene with few spheres has them intersected here, analytically, and only its
+    // triangles in Embree: Embree 3 traverses a separate BVH for its sphere primitives, which
+    // doubled the cost of every ray in the stimulus scene (one sphere, 14 triangles).
+    static constexpr size_t kAnalyticSpheres = 16;
+    bool analytic_spheres = false;
     float eps = 1e-4f;           // ray offset, scaled to the scene
 
     explicit Impl(const Scene &s) : scene(s) {
@@ -136,13 +206,15 @@ struct Renderer::Impl {
         rtc = rtcNewScene(device);
         rtcSetSceneBuildQuality(rtc, RTC_BUILD_QUALITY_HIGH);
         float extent = 1.0f;
+        analytic_spheres = s.spheres.size() <= kAnalyticSpheres;
         for (size_t i = 0; i < s.spheres.size(); ++i) {
             const Sphere &sp = s.spheres[i];
+            extent = std::max(extent, max3(glm::abs(sp.center)) + sp.radius);
+            if (analytic_spheres) continue;
             RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_SPHERE_POINT);
             auto *v = static_cast<float *>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
                                                                     RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1));
             v[0] = sp.center.x, v[1] = sp.center.y, v[2] = sp.center.z, v[3] = sp.radius;
-            extent = std::max(extent, max3(glm::abs(sp.center)) + sp.radius);
             attach(g, {GeomKind::SPHERE, int(i)});
         }
         for (size_t i = 0; i < s.meshes.size(); ++i) {
@@ -191,24 +263,60 @@ struct Renderer::Impl {
         rh.ray.tfar = std::numeric_limits<float>::infinity();
         rh.ray.mask = 0xffffffffu;
         rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        int si = -1;
+        rh.ray.tfar = sphere_hit(o, d, rh.ray.tfar, si);
         rtcIntersect1(rtc, &ctx, &rh);
+        return make_hit(o, d, rh.hit.geomID, rh.ray.tfar, glm::vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z), si);
+    }
+
+    // The nearest analytic sphere along o + t d, 0 < t < tmax: returns its t and sets idx, or
+    // returns tmax. The roots as in Haines et al. 2019 (Ray Tracing Gems, ch. 7): the
+    // discriminant from the distance of the centre to the ray, and the smaller root from the
+    // larger one, so that neither cancels for a distant or a large sphere.
+    float sphere_hit(glm::vec3 o, glm::vec3 d, float tmax, int &idx) const {
+        if (!analytic_spheres) return tmax;
+        const float a = glm::dot(d, d);
+        for (size_t i = 0; i < scene.spheres.size(); ++i) {
+            const Sphere &sp = scene.spheres[i];
+            const glm::vec3 f = o - sp.center;
+            const float b = -glm::dot(f, d);  // the roots of a t² − 2 b t + c
+            const glm::vec3 l = f + (b / a) * d;
+            const float r2 = sp.radius * sp.radius;
+            const float disc = a * (r2 - glm::dot(l, l));
+            if (!(disc >= 0)) continue;
+            const float q = b + std::copysign(std::sqrt(disc), b);
+            if (q == 0) continue;
+            const float c = glm::dot(f, f) - r2;
+            const float t0 = c / q, t1 = q / a;
+            const float tn = std::min(t0, t1), tf = std::max(t0, t1);
+            const float t = tn > 0 ? tn : tf;
+            if (t > 0 && t < tmax) tmax = t, idx = int(i);
+        }
+        return tmax;
+    }
+
+    // The hit record of a ray (o, d) whose closest hit is Embree's (geomID, t, Ng), or else the
+    // sphere: the analytic sphere hit before t (sphere_hit), or -1.
+    Hit make_hit(glm::vec3 o, glm::vec3 d, unsigned geom_id, float t, glm::vec3 ng, int sphere) const {
         Hit h;
-        if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return h;
+        if (geom_id == RTC_INVALID_GEOMETRY_ID && sphere < 0) return h;
         h.hit = true;
-        h.t = rh.ray.tfar;
+        h.t = t;
         h.p = o + h.t * d;
-        h.ref = geoms[rh.hit.geomID];
+        h.ref = geom_id == RTC_INVALID_GEOMETRY_ID ? GeomRef{GeomKind::SPHERE, sphere} : geoms[geom_id];
         if (h.ref.kind == GeomKind::SPHERE) {
             const Sphere &s = scene.spheres[size_t(h.ref.index)];
             h.n = glm::normalize(h.p - s.center);
         } else {
-            h.n = glm::normalize(glm::vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z));
+            h.n = glm::normalize(ng);
         }
         return h;
     }
 
     bool occluded(glm::vec3 o, glm::vec3 d, float tfar, std::uint64_t &rays) const {
         ++rays;
+        int si = -1;
+        if (sphere_hit(o, d, tfar, si) < tfar) return true;
         RTCIntersectContext ctx;
         rtcInitIntersectContext(&ctx);
         RTCRay r{};
@@ -237,128 +345,199 @@ struct Renderer::Impl {
 
     size_t light_count() const { return scene.lights.size() + (scene.has_environment ? 1 : 0); }
 
-    glm::vec3 camera_dir(float px, float py, int w, int h) const {
-        const Camera &c = scene.camera;
-        glm::vec3 f = glm::normalize(c.look_at - c.position);
-        glm::vec3 r = glm::normalize(glm::cross(f, c.up));
-        glm::vec3 u = glm::cross(r, f);
-        float th = std::tan(0.5f * c.fov_deg * kPi / 180.0f);
-        float aspect = float(w) / float(h);
-        float sx = (2.0f * px / float(w) - 1.0f) * aspect * th;
-        float sy = (1.0f - 2.0f * py / float(h)) * th;
-        return glm::normalize(f + sx * r + sy * u);
-    }
 
-    // One camera path (radiance estimate) for pixel position (px, py).
-    glm::vec3 trace(float px, float py, int w, int h, Mode mode, int max_depth, Rng &rng, std::uint64_t &rays) const {
-        glm::vec3 L(0), beta(1);
-        glm::vec3 o = scene.camera.position;
-        glm::vec3 d = camera_dir(px, py, w, h);
+    // One shading step of a camera path: what the path found along its last ray (hit), and
+    // where it goes next. Emission reached by the ray is added to ps.L; a next-event
+    // estimate waiting for its shadow ray is left in ps.shadow_*; returns false when the
+    // path ends (the shadow ray, if any, is still traced).
+    bool shade(PathState &ps, const Hit &hit, Mode mode, int max_depth) const {
+        const glm::vec3 d = ps.d;
         const float nl = float(light_count());
-        // What the previous vertex did, to weight emission found by its BRDF-sampled ray.
-        enum class Prev { CAMERA, MIS, BRDF, LIGHT } prev = Prev::CAMERA;
-        float prev_pdf = 0;
-        glm::vec3 prev_p(0), prev_n(0);
-        for (int depth = 0;; ++depth) {
-            Hit hit = intersect(o, d, rays);
-            if (!hit.hit) {
-                if (scene.has_environment && prev != Prev::LIGHT) {
-                    float w = 1;
-                    if (prev == Prev::MIS)
-                        w = power_heuristic(prev_pdf, std::max(0.0f, glm::dot(prev_n, d)) / kPi / nl);
-                    L += beta * scene.environment * w;
-                }
-                break;
+        ps.shadow = false;
+        if (!hit.hit) {
+            if (scene.has_environment && ps.prev != Prev::LIGHT) {
+                float w = 1;
+                if (ps.prev == Prev::MIS)
+                    w = power_heuristic(ps.prev_pdf, std::max(0.0f, glm::dot(ps.prev_n, d)) / kPi / nl);
+                ps.L += ps.beta * scene.environment * w;
             }
-            if (hit.ref.kind == GeomKind::LIGHT) {
-                const AreaLight &l = scene.lights[size_t(hit.ref.index)];
-                float cos_l = -glm::dot(l.normal, d);
-                if (cos_l > 0 && prev != Prev::LIGHT) {
-                    float w = 1;
-                    if (prev == Prev::MIS) {
-                        float pdf_light = hit.t * hit.t / (l.area * cos_l) / nl;
-                        w = power_heuristic(prev_pdf, pdf_light);
-                    }
-                    L += beta * light_emission(l, cos_l) * w;
+            return false;
+        }
+        if (hit.ref.kind == GeomKind::LIGHT) {
+            const AreaLight &l = scene.lights[size_t(hit.ref.index)];
+            float cos_l = -glm::dot(l.normal, d);
+            if (cos_l > 0 && ps.prev != Prev::LIGHT) {
+                float w = 1;
+                if (ps.prev == Prev::MIS) {
+                    float pdf_light = hit.t * hit.t / (l.area * cos_l) / nl;
+                    w = power_heuristic(ps.prev_pdf, pdf_light);
                 }
-                break;  // lights do not reflect
+                ps.L += ps.beta * light_emission(l, cos_l) * w;
             }
-            if (depth + 1 > max_depth) break;
-            int mi = hit.ref.kind == GeomKind::SPHERE ? scene.spheres[size_t(hit.ref.index)].material
-                                                      : scene.meshes[size_t(hit.ref.index)].material;
-            const pgloss_material &m = material_at(mi, hit.p);
-            if (m.lobes == PGLOSS_LOBE_NONE) break;
-            glm::vec3 n = glm::dot(hit.n, d) < 0 ? hit.n : -hit.n;  // two-sided: face the viewer
-            Frame frame(n);
-            pgloss_vec3 wo = frame.to_local(-d);
-            glm::vec3 p = hit.p + eps * n;
+            return false;  // lights do not reflect
+        }
+        if (ps.depth + 1 > max_depth) return false;
+        int mi = hit.ref.kind == GeomKind::SPHERE ? scene.spheres[size_t(hit.ref.index)].material
+                                                  : scene.meshes[size_t(hit.ref.index)].material;
+        const pgloss_material &m = material_at(mi, hit.p);
+        if (m.lobes == PGLOSS_LOBE_NONE) return false;
+        glm::vec3 n = glm::dot(hit.n, d) < 0 ? hit.n : -hit.n;  // two-sided: face the viewer
+        Frame frame(n);
+        pgloss_vec3 wo = frame.to_local(-d);
+        glm::vec3 p = hit.p + eps * n;
+        Rng &rng = ps.rng;
 
-            // Strategy at this vertex: no MIS work where there is no specular lobe.
-            Prev strat = mode == Mode::BRDF ? Prev::BRDF
-                       : mode == Mode::LIGHT ? Prev::LIGHT
-                       : (m.lobes & PGLOSS_LOBE_SPECULAR) ? Prev::MIS : Prev::LIGHT;
+        // Strategy at this vertex: no MIS work where there is no specular lobe.
+        Prev strat = mode == Mode::BRDF ? Prev::BRDF
+                   : mode == Mode::LIGHT ? Prev::LIGHT
+                   : (m.lobes & PGLOSS_LOBE_SPECULAR) ? Prev::MIS : Prev::LIGHT;
 
-            if (strat != Prev::BRDF && nl > 0) {  // next-event estimation
-                size_t li = std::min(size_t(rng.uniform() * nl), light_count() - 1);
-                float u1 = rng.uniform(), u2 = rng.uniform();
-                glm::vec3 wi, Le;
-                float pdf_light, tmax;
-                bool ok = true;
-                if (li < scene.lights.size()) {
-                    const AreaLight &l = scene.lights[li];
-                    glm::vec3 y = l.corner + u1 * l.edge1 + u2 * l.edge2;
-                    glm::vec3 dv = y - p;
-                    float dist2 = glm::dot(dv, dv), dist = std::sqrt(dist2);
-                    wi = dv / dist;
-                    float cos_l = -glm::dot(l.normal, wi);
-                    ok = cos_l > 0;
-                    pdf_light = ok ? dist2 / (l.area * cos_l) : 0;
-                    Le = ok ? light_emission(l, cos_l) : glm::vec3(0);
-                    tmax = dist * (1.0f - 1e-4f);
-                } else {  // environment: cosine-weighted about n
-                    float r = std::sqrt(u1), phi = 2 * kPi * u2;
-                    pgloss_vec3 lw{r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0f, 1 - u1))};
-                    wi = frame.to_world(lw);
-                    pdf_light = lw.z / kPi;
-                    ok = pdf_light > 0;
-                    Le = scene.environment;
-                    tmax = std::numeric_limits<float>::infinity();
-                }
-                pdf_light /= nl;
-                pgloss_vec3 wil = frame.to_local(wi);
-                if (ok && wil.z > 0) {
-                    pgloss_rgb f;
-                    float pdf_brdf = 0, w = 1;
-                    if (strat == Prev::MIS) {
-                        pgloss_eval_pdf(&m, wo, wil, m.lobes, &f, &pdf_brdf);
-                        w = power_heuristic(pdf_light, pdf_brdf);
-                    } else {
-                        pgloss_eval(&m, wo, wil, m.lobes, &f);
-                    }
-                    glm::vec3 c = beta * rgb(f) * Le * (wil.z * w / pdf_light);
-                    if (max3(c) > 0 && !occluded(p, wi, tmax, rays)) L += c;
-                }
+        if (strat != Prev::BRDF && nl > 0) {  // next-event estimation
+            size_t li = std::min(size_t(rng.uniform() * nl), light_count() - 1);
+            float u1 = rng.uniform(), u2 = rng.uniform();
+            glm::vec3 wi, Le;
+            float pdf_light, tmax;
+            bool ok = true;
+            if (li < scene.lights.size()) {
+                const AreaLight &l = scene.lights[li];
+                glm::vec3 y = l.corner + u1 * l.edge1 + u2 * l.edge2;
+                glm::vec3 dv = y - p;
+                float dist2 = glm::dot(dv, dv), dist = std::sqrt(dist2);
+                wi = dv / dist;
+                float cos_l = -glm::dot(l.normal, wi);
+                ok = cos_l > 0;
+                pdf_light = ok ? dist2 / (l.area * cos_l) : 0;
+                Le = ok ? light_emission(l, cos_l) : glm::vec3(0);
+                tmax = dist * (1.0f - 1e-4f);
+            } else {  // environment: cosine-weighted about n
+                float r = std::sqrt(u1), phi = 2 * kPi * u2;
+                pgloss_vec3 lw{r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0f, 1 - u1))};
+                wi = frame.to_world(lw);
+                pdf_light = lw.z / kPi;
+                ok = pdf_light > 0;
+                Le = scene.environment;
+                tmax = std::numeric_limits<float>::infinity();
             }
-
-            // Continue the path by BRDF sampling.
-            float u[3] = {rng.uniform(), rng.uniform(), rng.uniform()};
-            pgloss_sample_record rec;
-            pgloss_sample(&m, wo, u, m.lobes, &rec);
-            if (!(rec.pdf > 0)) break;
-            beta *= rgb(rec.weight);
-            prev = strat;
-            prev_pdf = rec.pdf;
-            prev_p = p;
-            prev_n = n;
-            o = p;
-            d = glm::normalize(frame.to_world(rec.wi));
-            if (depth >= 3) {  // Russian roulette
-                float q = std::min(0.95f, max3(beta));
-                if (!(rng.uniform() < q)) break;
-                beta /= q;
+            pdf_light /= nl;
+            pgloss_vec3 wil = frame.to_local(wi);
+            if (ok && wil.z > 0) {
+                // The float lobe of pgloss/inline.h: no library call per shading point.
+                pgloss_rgb f;
+                float pdf_brdf = 0, w = 1;
+                if (strat == Prev::MIS) {
+                    pgloss_eval_pdf_inline(&m, wo, wil, m.lobes, &f, &pdf_brdf);
+                    w = power_heuristic(pdf_light, pdf_brdf);
+                } else {
+                    pgloss_eval_inline(&m, wo, wil, m.lobes, &f);
+                }
+                glm::vec3 c = ps.beta * rgb(f) * Le * (wil.z * w / pdf_light);
+                if (max3(c) > 0) {
+                    ps.shadow = true;
+                    ps.shadow_o = p, ps.shadow_d = wi, ps.shadow_tmax = tmax, ps.shadow_c = c;
+                }
             }
         }
-        return L;
+
+        // Continue the path by BRDF sampling.
+        float u[3] = {rng.uniform(), rng.uniform(), rng.uniform()};
+        pgloss_sample_record rec;
+        pgloss_sample_inline(&m, wo, u, m.lobes, &rec);
+        if (!(rec.pdf > 0)) return false;
+        ps.beta *= rgb(rec.weight);
+        ps.prev = strat;
+        ps.prev_pdf = rec.pdf;
+        ps.prev_n = n;
+        ps.o = p;
+        ps.d = glm::normalize(frame.to_world(rec.wi));
+        if (ps.depth >= 3) {  // Russian roulette
+            float q = std::min(0.95f, max3(ps.beta));
+            if (!(rng.uniform() < q)) return false;
+            ps.beta /= q;
+        }
+        ++ps.depth;
+        return true;
+    }
+
+    // Traces the paths of a wavefront to their ends, in lock step: each step intersects the
+    // live paths' rays 16 at a time (rtcIntersect16), shades every hit, then traces the
+    // step's shadow rays 16 at a time (rtcOccluded16). Packets of 16 amortise Embree's
+    // per-call cost and traverse the small BVH for 16 rays at once. Each path keeps its own
+    // random stream and adds to its own L in the order of the scalar recursion, so the result
+    // does not depend on how the paths are grouped into packets.
+    void trace_wavefront(PathState *paths, size_t n, Wavefront &wf, Mode mode, int max_depth,
+                         std::uint64_t &rays) const {
+        RTCIntersectContext ctx;
+        rtcInitIntersectContext(&ctx);
+        wf.active.resize(n);
+        for (size_t i = 0; i < n; ++i) wf.active[i] = std::uint32_t(i);
+        while (!wf.active.empty()) {
+            const size_t na = wf.active.size();
+            wf.hits.resize(na);
+            for (size_t b = 0; b < na; b += 16) {
+                const size_t cnt = std::min<size_t>(16, na - b);
+                alignas(64) int valid[16];
+                alignas(64) RTCRayHit16 rh;
+                int sphere_idx[16];
+                for (size_t j = 0; j < 16; ++j) {
+                    const PathState &ps = paths[wf.active[b + std::min(j, cnt - 1)]];
+                    valid[j] = j < cnt ? -1 : 0;
+                    rh.ray.org_x[j] = ps.o.x, rh.ray.org_y[j] = ps.o.y, rh.ray.org_z[j] = ps.o.z;
+                    rh.ray.dir_x[j] = ps.d.x, rh.ray.dir_y[j] = ps.d.y, rh.ray.dir_z[j] = ps.d.z;
+                    rh.ray.tnear[j] = 0.0f;
+                    sphere_idx[j] = -1;
+                    rh.ray.tfar[j] = sphere_hit(ps.o, ps.d, std::numeric_limits<float>::infinity(), sphere_idx[j]);
+                    rh.ray.time[j] = 0.0f;
+                    rh.ray.mask[j] = 0xffffffffu;
+                    rh.ray.id[j] = 0;
+                    rh.ray.flags[j] = 0;
+                    rh.hit.geomID[j] = RTC_INVALID_GEOMETRY_ID;
+                    rh.hit.instID[0][j] = RTC_INVALID_GEOMETRY_ID;
+                }
+                rtcIntersect16(valid, rtc, &ctx, &rh);
+                for (size_t j = 0; j < cnt; ++j) {
+                    const PathState &ps = paths[wf.active[b + j]];
+                    wf.hits[b + j] = make_hit(ps.o, ps.d, rh.hit.geomID[j], rh.ray.tfar[j],
+                                              glm::vec3(rh.hit.Ng_x[j], rh.hit.Ng_y[j], rh.hit.Ng_z[j]), sphere_idx[j]);
+                }
+            }
+            rays += na;
+            wf.next.clear();
+            wf.shadows.clear();
+            for (size_t i = 0; i < na; ++i) {
+                PathState &ps = paths[wf.active[i]];
+                const bool alive = shade(ps, wf.hits[i], mode, max_depth);
+                if (ps.shadow) wf.shadows.push_back(wf.active[i]);
+                if (alive) wf.next.push_back(wf.active[i]);
+            }
+            const size_t ns = wf.shadows.size();
+            for (size_t b = 0; b < ns; b += 16) {
+                const size_t cnt = std::min<size_t>(16, ns - b);
+                alignas(64) int valid[16];
+                alignas(64) RTCRay16 r;
+                for (size_t j = 0; j < 16; ++j) {
+                    const PathState &ps = paths[wf.shadows[b + std::min(j, cnt - 1)]];
+                    int si = -1;
+                    const bool by_sphere = j < cnt && sphere_hit(ps.shadow_o, ps.shadow_d, ps.shadow_tmax, si) < ps.shadow_tmax;
+                    valid[j] = j < cnt && !by_sphere ? -1 : 0;
+                    r.org_x[j] = ps.shadow_o.x, r.org_y[j] = ps.shadow_o.y, r.org_z[j] = ps.shadow_o.z;
+                    r.dir_x[j] = ps.shadow_d.x, r.dir_y[j] = ps.shadow_d.y, r.dir_z[j] = ps.shadow_d.z;
+                    r.tnear[j] = 0.0f;
+                    r.tfar[j] = by_sphere ? -std::numeric_limits<float>::infinity() : ps.shadow_tmax;
+                    r.time[j] = 0.0f;
+                    r.mask[j] = 0xffffffffu;
+                    r.id[j] = 0;
+                    r.flags[j] = 0;
+                }
+                rtcOccluded16(valid, rtc, &ctx, &r);
+                for (size_t j = 0; j < cnt; ++j)
+                    if (!(r.tfar[j] < 0.0f)) {
+                        PathState &ps = paths[wf.shadows[b + j]];
+                        ps.L += ps.shadow_c;
+                    }
+            }
+            rays += ns;
+            std::swap(wf.active, wf.next);
+        }
     }
 };
 
@@ -414,6 +593,8 @@ Image Renderer::render(const RenderSettings &s, const RenderOptions &opt, Render
         std::fflush(stderr);
     };
 
+    const Pinhole pinhole(impl_->scene.camera, w, h);
+    std::vector<Wavefront> scratch(static_cast<size_t>(nthreads));  // per worker, kept across passes and tiles
     int spp_done = 0;
     int pass_spp = 1;
     while (spp_done < s.spp && !cancelled()) {
@@ -429,6 +610,7 @@ Image Renderer::render(const RenderSettings &s, const RenderOptions &opt, Render
         const int s0 = spp_done, s1 = spp_done + pass_spp;
         std::atomic<int> next_tile{0};
         auto worker = [&](int id) noexcept {
+          DenormalsOff denormals_off;  // in every worker, so every sample sees the same mode
           try {
             std::uint64_t local_rays = 0;
             for (;;) {
@@ -437,15 +619,34 @@ Image Renderer::render(const RenderSettings &s, const RenderOptions &opt, Render
                 if (ti >= ntiles) break;
                 int x0 = (ti % tiles_x) * tile, y0 = (ti / tiles_x) * tile;
                 int x1 = std::min(w, x0 + tile), y1 = std::min(h, y0 + tile);
+                // The tile's paths of this pass, pixel by pixel, each pixel's in sample order.
+                Wavefront &wf = scratch[size_t(id)];
+                auto &paths = wf.paths;
+                paths.resize(size_t(x1 - x0) * size_t(y1 - y0) * size_t(s1 - s0));
+                size_t pi = 0;
+                for (int y = y0; y < y1; ++y)
+                    for (int x = x0; x < x1; ++x) {
+                        std::uint64_t pix = std::uint64_t(y) * std::uint64_t(w) + std::uint64_t(x);
+                        for (int k = s0; k < s1; ++k) {
+                            PathState &ps = paths[pi++];
+                            ps = PathState{};
+                            ps.rng = Rng(s.seed, pix, std::uint64_t(k));
+                            float jx = ps.rng.uniform(), jy = ps.rng.uniform();
+                            ps.o = impl_->scene.camera.position;
+                            ps.d = pinhole.dir(float(x) + jx, float(y) + jy);
+                        }
+                    }
+                for (size_t c0 = 0; c0 < paths.size(); c0 += kWavefront)
+                    impl_->trace_wavefront(&paths[c0], std::min(kWavefront, paths.size() - c0), wf, s.mode,
+                                           s.max_depth, local_rays);
+                pi = 0;
                 for (int y = y0; y < y1; ++y)
                     for (int x = x0; x < x1; ++x) {
                         std::uint64_t pix = std::uint64_t(y) * std::uint64_t(w) + std::uint64_t(x);
                         double *acc = &sum[3 * pix];
                         double *acc2 = sum2.empty() ? nullptr : &sum2[3 * pix];
                         for (int k = s0; k < s1; ++k) {
-                            Rng rng(s.seed, pix, std::uint64_t(k));
-                            float jx = rng.uniform(), jy = rng.uniform();
-                            glm::vec3 c = impl_->trace(float(x) + jx, float(y) + jy, w, h, s.mode, s.max_depth, rng, local_rays);
+                            glm::vec3 c = paths[pi++].L;
                             if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z))) {
                                 // Never dropped quietly: counted, and the render fails after the pass.
                                 if (nonfinite.fetch_add(1) == 0) {
@@ -545,11 +746,12 @@ Image Renderer::render(const RenderSettings &s, const RenderOptions &opt, Render
 std::vector<int> Renderer::regions(int w, int h) const {
     const Impl &I = *impl_;
     std::vector<int> out(size_t(w) * size_t(h), REGION_NONE);
+    const Pinhole pinhole(I.scene.camera, w, h);
     std::uint64_t rays = 0;
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             glm::vec3 o = I.scene.camera.position;
-            glm::vec3 d = I.camera_dir(float(x) + 0.5f, float(y) + 0.5f, w, h);
+            glm::vec3 d = pinhole.dir(float(x) + 0.5f, float(y) + 0.5f);
             Hit hit = I.intersect(o, d, rays);
             int r = REGION_NONE;
             if (hit.hit) {
