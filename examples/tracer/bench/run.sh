@@ -3,7 +3,8 @@
 # SPDX-License-Identifier: Apache-2.0
 # pgloss-tracer against Mitsuba 3 (llvm_ad_rgb) on the stimulus scene, side by side (a
 # benchmark that prints a Markdown table for BENCHMARKS.md; see mitsuba_compare.py).
-# Builds the tracer in Release (build-tracer-bench/), sets up Mitsuba from PyPI in its own
+# Builds the tracer in Release for this CPU (build-tracer-bench/, -march=native: Mitsuba's
+# LLVM back end compiles its kernels for the host too), sets up Mitsuba from PyPI in its own
 # venv (.venv-mitsuba, pinned as bench/run.sh pins it) and runs the comparison.
 #   bash examples/tracer/bench/run.sh [--quick] [mitsuba_compare.py options…]
 set -euo pipefail
@@ -12,7 +13,7 @@ bash scripts/bootstrap.sh apt g++ pkg-config libembree-dev libopenimageio-dev op
   libopencolorio-dev libglm-dev fonts-dejavu-core libllvm19 python3-venv
 echo "== build build-tracer-bench (Release)" >&2
 cmake -S . -B build-tracer-bench -DCMAKE_BUILD_TYPE=Release -DPGLOSS_BUILD_EXAMPLES=ON \
-  -DPGLOSS_BUILD_CLI=OFF >/dev/null
+  -DPGLOSS_BUILD_CLI=OFF -DPGLOSS_TRACER_NATIVE=ON >/dev/null
 cmake --build build-tracer-bench --target pgloss_tracer_cli -j2 >/dev/null
 pins=(mitsuba==3.9.1 drjit==1.5.0 numpy==2.4.6)
 venv=.venv-mitsuba
