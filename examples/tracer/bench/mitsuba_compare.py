@@ -415,13 +415,15 @@ def main(argv: list[str] | None = None) -> int:
     print("Both converge to the same image: region means of the two references "
           "(difference, and its standard error from the references' noise):")
     print()
-    print("| material | region | pixels | tracer | Mitsuba | difference | std. error |")
-    print("|---|---|---|---|---|---|---|")
+    print("| material | region | pixels | tracer | Mitsuba | difference | std. error | agree (< 4 std. errors + 0.05 %) |")
+    print("|---|---|---|---|---|---|---|---|")
     for lab, rname, n, tm, mm, diff, se in checks:
-        if np.isnan(tm):
-            print(f"| {lab} | {rname} | {n} | | | {diff:.2f} % | {se:.2f} % (noise alone) |")
+        if np.isnan(tm):  # whole image: the difference's norm against what noise alone gives
+            ok = diff < 1.1 * se + 0.05
+            print(f"| {lab} | {rname} | {n} | | | {diff:.2f} % | {se:.2f} % (noise alone) | {'yes' if ok else 'NO'} (< 1.1x noise + 0.05 %) |")
         else:
-            print(f"| {lab} | {rname} | {n} | {tm:.5f} | {mm:.5f} | {diff:+.3f} % | {se:.3f} % |")
+            ok = abs(diff) < 4 * se + 0.05
+            print(f"| {lab} | {rname} | {n} | {tm:.5f} | {mm:.5f} | {diff:+.3f} % | {se:.3f} % | {'yes' if ok else 'NO'} |")
     ru = resource.getrusage(resource.RUSAGE_SELF)
     print(f"\nload after: {os.getloadavg()[0]:.2f}; max RSS {ru.ru_maxrss / 1024:.0f} MiB")
     return 0
