@@ -4,7 +4,7 @@
 #include "render.hpp"
 
 #include <embree3/rtcore.h>
-#include <pgloss/inline.h>
+#include <pgloss/batch.h>
 
 #include <algorithm>
 #include <atomic>
@@ -62,7 +62,8 @@ private:
 };
 
 struct Frame {  // orthonormal basis around n (Duff et al. 2017)
-    glm::vec3 t, b, n;
+    glm::vec3 t{0}, b{0}, n{0};
+    Frame() = default;
     explicit Frame(glm::vec3 nn) : n(nn) {
         float sign = std::copysign(1.0f, n.z);
         float a = -1.0f / (sign + n.z);
@@ -74,7 +75,6 @@ struct Frame {  // orthonormal basis around n (Duff et al. 2017)
     glm::vec3 to_world(pgloss_vec3 v) const { return v.x * t + v.y * b + v.z * n; }
 };
 
-glm::vec3 rgb(const pgloss_rgb &c) { return {c.r, c.g, c.b}; }
 float max3(glm::vec3 v) { return std::max(v.x, std::max(v.y, v.z)); }
 float power_heuristic(float a, float b) {
     float a2 = a * a, b2 = b * b;
@@ -157,11 +157,32 @@ struct PathState {
 #endif
 constexpr size_t kWavefront = PGT_WAVEFRONT;
 
+// What a path's shading step found before its lobe calls (stage 1 of a wavefront step), for
+// the lobe calls batched per material (stage 2) and the path's update (stage 3).
+struct ShadeRec {
+    Frame frame;
+    glm::vec3 p{0}, n{0};            // the offset origin of the next rays, the facing normal
+    glm::vec3 wi{0}, Le{0};          // next-event estimate: direction to the light, its radiance
+    pgloss_vec3 wo{0, 0, 1}, wil{0, 0, 1};  // local directions: to the viewer, to the light
+    float pdf_light = 0, tmax = 0;
+    float u[3] = {0, 0, 0};          // the BRDF sample's random numbers
+    int mat = -1;                    // material index; -1: the path ends at this hit
+    Prev strat = Prev::LIGHT;
+    bool nee = false;                // a next-event estimate to weight
+};
+
+// The structure-of-arrays inputs and outputs of the batched lobe calls (pgloss/batch.h).
+enum Lane { WOX, WOY, WOZ, WIX, WIY, WIZ, U0, U1, U2, FR, FG, FB, FPDF,
+            SX, SY, SZ, SPDF, SR, SG, SB, NLANES };
+
 // A worker's scratch lists for trace_wavefront (kept across tiles: no allocation per sample).
 struct Wavefront {
-    std::vector<std::uint32_t> active, next, shadows;
+    std::vector<std::uint32_t> active, next, shadows, order;
     std::vector<Hit> hits;
     std::vector<PathState> paths;
+    std::vector<ShadeRec> recs;
+    std::vector<std::uint32_t> count;  // per material
+    std::vector<float> soa;            // NLANES arrays of the wavefront's length
 };
 
 }  // namespace
@@ -352,12 +373,13 @@ struct Renderer::Impl {
         return r.tfar < 0.0f;
     }
 
-    const pgloss_material &material_at(int mi, glm::vec3 p) const {
+    // The material index at p: mi itself, or the check of a checker that p falls in.
+    int material_index_at(int mi, glm::vec3 p) const {
         const Material &m = scene.materials[size_t(mi)];
-        if (!m.checker) return m.ward;
+        if (!m.checker) return mi;
         glm::vec3 q = glm::floor((p - m.check_offset) / m.check_size);
         long parity = (long(q.x) + long(q.y) + long(q.z)) & 1L;
-        return scene.materials[size_t(parity ? m.check_b : m.check_a)].ward;
+        return parity ? m.check_b : m.check_a;
     }
 
     // Emitted radiance of light li towards a point, seen along direction -wi (wi points at the light).
@@ -369,14 +391,15 @@ struct Renderer::Impl {
     size_t light_count() const { return scene.lights.size() + (scene.has_environment ? 1 : 0); }
 
 
-    // One shading step of a camera path: what the path found along its last ray (hit), and
-    // where it goes next. Emission reached by the ray is added to ps.L; a next-event
-    // estimate waiting for its shadow ray is left in ps.shadow_*; returns false when the
-    // path ends (the shadow ray, if any, is still traced).
-    bool shade(PathState &ps, const Hit &hit, Mode mode, int max_depth) const {
+    // Stage 1 of a path's shading step: what the path found along its last ray (hit).
+    // Emission reached by the ray is added to ps.L; the light sample of the next-event
+    // estimate and the BRDF sample's random numbers go into r, for the lobe calls. Returns
+    // false when the path ends here (r.mat = -1).
+    bool shade_begin(PathState &ps, const Hit &hit, Mode mode, int max_depth, ShadeRec &r) const {
         const glm::vec3 d = ps.d;
         const float nl = float(light_count());
         ps.shadow = false;
+        r.mat = -1;
         if (!hit.hit) {
             if (scene.has_environment && ps.prev != Prev::LIGHT) {
                 float w = 1;
@@ -402,20 +425,24 @@ struct Renderer::Impl {
         if (ps.depth + 1 > max_depth) return false;
         int mi = hit.ref.kind == GeomKind::SPHERE ? scene.spheres[size_t(hit.ref.index)].material
                                                   : scene.meshes[size_t(hit.ref.index)].material;
-        const pgloss_material &m = material_at(mi, hit.p);
+        mi = material_index_at(mi, hit.p);
+        const pgloss_material &m = scene.materials[size_t(mi)].ward;
         if (m.lobes == PGLOSS_LOBE_NONE) return false;
-        glm::vec3 n = glm::dot(hit.n, d) < 0 ? hit.n : -hit.n;  // two-sided: face the viewer
-        Frame frame(n);
-        pgloss_vec3 wo = frame.to_local(-d);
-        glm::vec3 p = hit.p + eps * n;
+        r.mat = mi;
+        r.n = glm::dot(hit.n, d) < 0 ? hit.n : -hit.n;  // two-sided: face the viewer
+        r.frame = Frame(r.n);
+        r.wo = r.frame.to_local(-d);
+        r.p = hit.p + eps * r.n;
         Rng &rng = ps.rng;
 
         // Strategy at this vertex: no MIS work where there is no specular lobe.
-        Prev strat = mode == Mode::BRDF ? Prev::BRDF
-                   : mode == Mode::LIGHT ? Prev::LIGHT
-                   : (m.lobes & PGLOSS_LOBE_SPECULAR) ? Prev::MIS : Prev::LIGHT;
+        r.strat = mode == Mode::BRDF ? Prev::BRDF
+                : mode == Mode::LIGHT ? Prev::LIGHT
+                : (m.lobes & PGLOSS_LOBE_SPECULAR) ? Prev::MIS : Prev::LIGHT;
 
-        if (strat != Prev::BRDF && nl > 0) {  // next-event estimation
+        r.nee = false;
+        r.wil = r.wo;  // a valid direction for the batched call where there is no estimate
+        if (r.strat != Prev::BRDF && nl > 0) {  // next-event estimation
             size_t li = std::min(size_t(rng.uniform() * nl), light_count() - 1);
             float u1 = rng.uniform(), u2 = rng.uniform();
             glm::vec3 wi, Le;
@@ -424,7 +451,7 @@ struct Renderer::Impl {
             if (li < scene.lights.size()) {
                 const AreaLight &l = scene.lights[li];
                 glm::vec3 y = l.corner + u1 * l.edge1 + u2 * l.edge2;
-                glm::vec3 dv = y - p;
+                glm::vec3 dv = y - r.p;
                 float dist2 = glm::dot(dv, dv), dist = std::sqrt(dist2);
                 wi = dv * (1.0f / dist);
                 float cos_l = -glm::dot(l.normal, wi);
@@ -433,52 +460,105 @@ struct Renderer::Impl {
                 Le = ok ? light_emission(l, cos_l) : glm::vec3(0);
                 tmax = dist * (1.0f - 1e-4f);
             } else {  // environment: cosine-weighted about n
-                float r = std::sqrt(u1), phi = 2 * kPi * u2;
-                pgloss_vec3 lw{r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0f, 1 - u1))};
-                wi = frame.to_world(lw);
+                float rr = std::sqrt(u1), phi = 2 * kPi * u2;
+                pgloss_vec3 lw{rr * std::cos(phi), rr * std::sin(phi), std::sqrt(std::max(0.0f, 1 - u1))};
+                wi = r.frame.to_world(lw);
                 pdf_light = lw.z / kPi;
                 ok = pdf_light > 0;
                 Le = scene.environment;
                 tmax = std::numeric_limits<float>::infinity();
             }
-            pdf_light /= nl;
-            pgloss_vec3 wil = frame.to_local(wi);
+            pgloss_vec3 wil = r.frame.to_local(wi);
             if (ok && wil.z > 0) {
-                // The float lobe of pgloss/inline.h: no library call per shading point.
-                pgloss_rgb f;
-                float pdf_brdf = 0, w = 1;
-                if (strat == Prev::MIS) {
-                    pgloss_eval_pdf_inline(&m, wo, wil, m.lobes, &f, &pdf_brdf);
-                    w = power_heuristic(pdf_light, pdf_brdf);
-                } else {
-                    pgloss_eval_inline(&m, wo, wil, m.lobes, &f);
-                }
-                glm::vec3 c = ps.beta * rgb(f) * Le * (wil.z * w / pdf_light);
-                if (max3(c) > 0) {
-                    ps.shadow = true;
-                    ps.shadow_o = p, ps.shadow_d = wi, ps.shadow_tmax = tmax, ps.shadow_c = c;
-                }
+                r.nee = true;
+                r.wil = wil, r.wi = wi, r.Le = Le, r.pdf_light = pdf_light / nl, r.tmax = tmax;
             }
         }
+        // The BRDF sample's random numbers, drawn now: each path's stream is consumed in the
+        // order of the scalar recursion (light sample, BRDF sample, Russian roulette).
+        r.u[0] = rng.uniform(), r.u[1] = rng.uniform(), r.u[2] = rng.uniform();
+        return true;
+    }
 
+    // Stage 3: the next-event estimate from the lobe's f and pdf at r.wil (left in
+    // ps.shadow_* for its shadow ray), and the path continued by the BRDF sample (s_*).
+    // Returns false when the path ends (the shadow ray, if any, is still traced).
+    bool shade_end(PathState &ps, const ShadeRec &r, glm::vec3 f, float pdf_brdf, pgloss_vec3 s_wi,
+                   float s_pdf, glm::vec3 s_weight) const {
+        if (r.nee) {
+            const float w = r.strat == Prev::MIS ? power_heuristic(r.pdf_light, pdf_brdf) : 1.0f;
+            glm::vec3 c = ps.beta * f * r.Le * (r.wil.z * w / r.pdf_light);
+            if (max3(c) > 0) {
+                ps.shadow = true;
+                ps.shadow_o = r.p, ps.shadow_d = r.wi, ps.shadow_tmax = r.tmax, ps.shadow_c = c;
+            }
+        }
         // Continue the path by BRDF sampling.
-        float u[3] = {rng.uniform(), rng.uniform(), rng.uniform()};
-        pgloss_sample_record rec;
-        pgloss_sample_inline(&m, wo, u, m.lobes, &rec);
-        if (!(rec.pdf > 0)) return false;
-        ps.beta *= rgb(rec.weight);
-        ps.prev = strat;
-        ps.prev_pdf = rec.pdf;
-        ps.prev_n = n;
-        ps.o = p;
-        ps.d = glm::normalize(frame.to_world(rec.wi));
+        if (!(s_pdf > 0)) return false;
+        ps.beta *= s_weight;
+        ps.prev = r.strat;
+        ps.prev_pdf = s_pdf;
+        ps.prev_n = r.n;
+        ps.o = r.p;
+        ps.d = glm::normalize(r.frame.to_world(s_wi));
         if (ps.depth >= 3) {  // Russian roulette
             float q = std::min(0.95f, max3(ps.beta));
-            if (!(rng.uniform() < q)) return false;
+            if (!(ps.rng.uniform() < q)) return false;
             ps.beta *= 1.0f / q;
         }
         ++ps.depth;
         return true;
+    }
+
+    // Stage 2: the lobe calls of the step's shading points, batched per material
+    // (pgloss_eval_pdf_batch for the next-event estimates, pgloss_sample_batch for the BRDF
+    // samples: the library's vector loops, on the running CPU's best instruction set), then
+    // stage 3 for each path.
+    void shade_batched(PathState *paths, Wavefront &wf, size_t na) const {
+        const size_t nm = scene.materials.size();
+        wf.count.assign(nm + 1, 0);
+        for (size_t i = 0; i < na; ++i)
+            if (wf.recs[i].mat >= 0) ++wf.count[size_t(wf.recs[i].mat) + 1];
+        for (size_t m = 0; m < nm; ++m) wf.count[m + 1] += wf.count[m];  // bucket starts
+        const size_t total = wf.count[nm];
+        wf.order.resize(total);
+        {
+            std::vector<std::uint32_t> &pos = wf.next;  // reused as the buckets' cursors
+            pos.assign(wf.count.begin(), wf.count.end() - 1);
+            for (size_t i = 0; i < na; ++i)
+                if (wf.recs[i].mat >= 0) wf.order[pos[size_t(wf.recs[i].mat)]++] = std::uint32_t(i);
+        }
+        wf.soa.resize(size_t(NLANES) * std::max<size_t>(total, 1));
+        float *v[NLANES];
+        for (int l = 0; l < NLANES; ++l) v[l] = wf.soa.data() + size_t(l) * total;
+        for (size_t j = 0; j < total; ++j) {
+            const ShadeRec &r = wf.recs[wf.order[j]];
+            v[WOX][j] = r.wo.x, v[WOY][j] = r.wo.y, v[WOZ][j] = r.wo.z;
+            v[WIX][j] = r.wil.x, v[WIY][j] = r.wil.y, v[WIZ][j] = r.wil.z;
+            v[U0][j] = r.u[0], v[U1][j] = r.u[1], v[U2][j] = r.u[2];
+        }
+        for (size_t m = 0; m < nm; ++m) {
+            const size_t b = wf.count[m], n = wf.count[m + 1] - b;
+            if (n == 0) continue;
+            const pgloss_material &mat = scene.materials[m].ward;
+            const pgloss_vec3_array wo{v[WOX] + b, v[WOY] + b, v[WOZ] + b};
+            const pgloss_vec3_array wi{v[WIX] + b, v[WIY] + b, v[WIZ] + b};
+            // Statuses are not needed: the directions are unit and the random numbers finite
+            // by construction, and an invalid element gets zeros (its path ends).
+            (void)pgloss_eval_pdf_batch(&mat, mat.lobes, n, wo, wi, pgloss_rgb_out{v[FR] + b, v[FG] + b, v[FB] + b},
+                                        v[FPDF] + b);
+            (void)pgloss_sample_batch(&mat, mat.lobes, n, wo, v[U0] + b, v[U1] + b, v[U2] + b,
+                                      pgloss_vec3_out{v[SX] + b, v[SY] + b, v[SZ] + b}, v[SPDF] + b,
+                                      pgloss_rgb_out{v[SR] + b, v[SG] + b, v[SB] + b}, nullptr);
+        }
+        for (size_t j = 0; j < total; ++j) {
+            const std::uint32_t i = wf.order[j];
+            PathState &ps = paths[wf.active[i]];
+            const bool alive = shade_end(ps, wf.recs[i], glm::vec3(v[FR][j], v[FG][j], v[FB][j]), v[FPDF][j],
+                                         pgloss_vec3{v[SX][j], v[SY][j], v[SZ][j]}, v[SPDF][j],
+                                         glm::vec3(v[SR][j], v[SG][j], v[SB][j]));
+            wf.recs[i].mat = alive ? 0 : -1;  // now: whether the path goes on
+        }
     }
 
     // Traces the paths of a wavefront to their ends, in lock step: each step intersects the
@@ -524,13 +604,14 @@ struct Renderer::Impl {
                 }
             }
             rays += na;
+            wf.recs.resize(na);
+            for (size_t i = 0; i < na; ++i) shade_begin(paths[wf.active[i]], wf.hits[i], mode, max_depth, wf.recs[i]);
+            shade_batched(paths, wf, na);
             wf.next.clear();
             wf.shadows.clear();
-            for (size_t i = 0; i < na; ++i) {
-                PathState &ps = paths[wf.active[i]];
-                const bool alive = shade(ps, wf.hits[i], mode, max_depth);
-                if (ps.shadow) wf.shadows.push_back(wf.active[i]);
-                if (alive) wf.next.push_back(wf.active[i]);
+            for (size_t i = 0; i < na; ++i) {  // in the wavefront's order: packets as before
+                if (paths[wf.active[i]].shadow) wf.shadows.push_back(wf.active[i]);
+                if (wf.recs[i].mat >= 0) wf.next.push_back(wf.active[i]);
             }
             const size_t ns = wf.shadows.size();
             for (size_t b = 0; b < ns; b += 16) {
