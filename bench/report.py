@@ -69,6 +69,9 @@ def pareto(d: Path) -> str:
     return str(out)
 
 
+TRACER_SECTION = "## The tracer against Mitsuba 3"
+
+
 def main() -> int:
     d, dst = Path(sys.argv[1]), Path(sys.argv[2])
     core = (d / "core.md").read_text()
@@ -164,6 +167,14 @@ with `bash bench/run.sh`; the critical path in cycles: `bash bench/mca.sh --inli
 ## Peers (`bench/peers.py`)
 
 {peers}"""
+    # The tracer's comparison with Mitsuba takes minutes and has its own program
+    # (examples/tracer/bench/run.sh): its section is carried over as it stands.
+    if dst.exists():
+        old = dst.read_text()
+        i = old.find(TRACER_SECTION)
+        if i >= 0:
+            j = old.find("\n## ", i + len(TRACER_SECTION))
+            text = text.rstrip("\n") + "\n\n" + (old[i:] if j < 0 else old[i : j + 1]).rstrip("\n") + "\n"
     dst.write_text(text)
     print(f"wrote {dst} and {plot}")
     return 0

@@ -171,6 +171,57 @@ TEST(Furnace, BoundedWardWithRhoDPlusRhoSOneRendersAsEnvironment) {
         }
 }
 
+TEST(Furnace, EmbreeSpheresAndTrianglesAreInvisibleToo) {
+    // The renderer intersects up to 16 spheres itself and gives Embree quads when every mesh's
+    // triangles pair up; the furnace scene above takes those paths. Here 17 spheres (Embree's
+    // sphere primitive) and a mesh of one triangle (Embree triangles), or of one quad, all
+    // Lambertian ρd = 1 in a uniform environment of radiance 1: every pixel is 1 within its
+    // noise (the objects are far apart, so the depth limit truncates nothing measurable).
+    for (bool triangle : {true, false}) {
+        std::string text =
+            "image width=64 height=64\ncamera position=0,0,8 look_at=0,0,0 up=0,1,0 fov=40\n"
+            "render spp=32 max_depth=16 seed=3 mode=mis\nmaterial white diffuse=1\nenvironment radiance=1\n";
+        for (int k = 0; k < 17; ++k)
+            text += "sphere center=" + std::to_string(-1.5 + (k % 4)) + "," + std::to_string(-1.5 + (k / 4) % 4) +
+                    "," + std::to_string(k == 16 ? 1.0 : 0.0) + " radius=0.2 material=white\n";
+        pgt::Scene sc = pgt::parse_scene(text, "embree-paths.scene", ".");
+        pgt::Mesh m;
+        m.vertices = {{-2.2f, -2.2f, -1.0f}, {2.2f, -2.2f, -1.0f}, {2.2f, 2.2f, -1.0f}, {-2.2f, 2.2f, -1.0f}};
+        m.faces = {{0, 1, 2}};
+        if (!triangle) m.faces.push_back({0, 2, 3});
+        m.material = sc.find_material("white");
+        m.label = "mesh:test";
+        sc.meshes.push_back(m);
+        Rendered r = render(sc, sc.settings);
+        std::vector<int> reg = pgt::Renderer(sc).regions(sc.settings.width, sc.settings.height);
+        int spheres = 0, mesh = 0, n = 0;
+        double sum = 0, var_sum = 0, max_z = 0, max_exact_err = 0;
+        for (int y = 0; y < sc.settings.height; ++y)
+            for (int x = 0; x < sc.settings.width; ++x) {
+                size_t i = size_t(y) * size_t(sc.settings.width) + size_t(x);
+                spheres += reg[i] == pgt::REGION_SPHERE;
+                mesh += reg[i] == pgt::REGION_OTHER;
+                double v = lum(r.img.at(x, y)), var = lum(r.var.at(x, y));
+                if (var > 0) {
+                    max_z = std::max(max_z, std::fabs(v - 1.0) / std::sqrt(var));
+                    sum += v, var_sum += var, ++n;
+                } else {
+                    max_exact_err = std::max(max_exact_err, std::fabs(v - 1.0));
+                }
+            }
+        double mean = n ? sum / n : 1.0, sigma = n ? std::sqrt(var_sum) / n : 0.0;
+        std::printf("furnace embree paths (%s): %d sphere px, %d mesh px, noisy px %d mean %.5f ± %.5f, max |z| %.2f, "
+                    "max |v - 1| elsewhere %.1e\n",
+                    triangle ? "17 spheres + triangle" : "17 spheres + quad", spheres, mesh, n, mean, sigma, max_z,
+                    max_exact_err);
+        EXPECT_GT(spheres, 200);
+        EXPECT_GT(mesh, 500);
+        EXPECT_LT(max_exact_err, 1e-5);
+        EXPECT_LT(std::fabs(mean - 1.0), 4 * sigma + 1e-5);
+        EXPECT_LT(max_z, 6.0);
+    }
+}
+
 // ---------------------------------------------------------------- estimators agree
 // MIS, BRDF-only and light-only sampling are three unbiased estimators of the same image:
 // compared per 8×8 block, their difference is within the noise (z-score from the per-pixel

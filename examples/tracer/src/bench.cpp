@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // pgloss-tracer-bench — speed of the three estimators on Experiment 1's stimulus scene
 // (a benchmark, not a test). For MIS, BRDF-only and light-only sampling it reports
-//   Mrays/s     rtcIntersect1 + rtcOccluded1 calls per second, all threads;
+//   Mrays/s     rays traced (intersection and shadow rays) per second, all threads;
 //   Msamples/s  camera paths per second;
 //   t(1%)       seconds until the image's MRSE against a long reference render is <= 0.01,
 // where MRSE = mean over pixels of (Y - Yref)² / (Yref² + 1e-3) on luminance Y (the white

@@ -90,9 +90,9 @@ int main(int argc, char **argv) {
                 throw std::runtime_error("interrupted before any tile was finished; nothing written");
             pgt::write_exr(img, out + ".exr");
             pgt::write_png(pgt::display_image(img, sc.tonemap), out + ".png");
-            std::printf("%s.exr %s.png: %dx%d, %d spp, %s, %.2f s, %.2f Mrays/s, %.2f Msamples/s\n", out.c_str(),
+            std::printf("%s.exr %s.png: %dx%d, %d spp, %s, %.2f s, %.2f Mrays/s, %.2f Msamples/s, %.2f s CPU\n", out.c_str(),
                         out.c_str(), s.width, s.height, st.spp, pgt::mode_name(s.mode), st.seconds,
-                        double(st.rays) / st.seconds * 1e-6, double(st.samples) / st.seconds * 1e-6);
+                        double(st.rays) / st.seconds * 1e-6, double(st.samples) / st.seconds * 1e-6, st.cpu_seconds);
             if (st.interrupted) {
                 std::fprintf(stderr, "pgloss-tracer: interrupted; wrote the %llu samples rendered (%d spp or more "
                                      "per pixel)\n", static_cast<unsigned long long>(st.samples), st.spp);

@@ -4,6 +4,7 @@
 #include "render.hpp"
 
 #include <embree3/rtcore.h>
+#include <pgloss/batch.h>
 
 #include <algorithm>
 #include <atomic>
@@ -16,7 +17,11 @@
 #include <sstream>
 #include <system_error>
 #include <thread>
+#include <time.h>
 #include <unistd.h>
+#if defined(__SSE__) || defined(_M_X64)
+#include <xmmintrin.h>
+#endif
 
 namespace pgt {
 
@@ -34,6 +39,7 @@ std::uint64_t splitmix64(std::uint64_t x) {
 
 class Rng {
 public:
+    Rng() : state_(0), inc_(1) {}
     Rng(unsigned seed, std::uint64_t pixel, std::uint64_t sample) {
         std::uint64_t h = splitmix64(splitmix64(splitmix64(seed) ^ pixel) ^ sample);
         inc_ = (splitmix64(h) << 1u) | 1u;
@@ -56,7 +62,8 @@ private:
 };
 
 struct Frame {  // orthonormal basis around n (Duff et al. 2017)
-    glm::vec3 t, b, n;
+    glm::vec3 t{0}, b{0}, n{0};
+    Frame() = default;
     explicit Frame(glm::vec3 nn) : n(nn) {
         float sign = std::copysign(1.0f, n.z);
         float a = -1.0f / (sign + n.z);
@@ -68,7 +75,6 @@ struct Frame {  // orthonormal basis around n (Duff et al. 2017)
     glm::vec3 to_world(pgloss_vec3 v) const { return v.x * t + v.y * b + v.z * n; }
 };
 
-glm::vec3 rgb(const pgloss_rgb &c) { return {c.r, c.g, c.b}; }
 float max3(glm::vec3 v) { return std::max(v.x, std::max(v.y, v.z)); }
 float power_heuristic(float a, float b) {
     float a2 = a * a, b2 = b * b;
@@ -79,6 +85,18 @@ enum class GeomKind { SPHERE, MESH, LIGHT };
 struct GeomRef {
     GeomKind kind;
     int index;
+};
+
+// Flush-to-zero and denormals-are-zero for the scope (restored after): Embree asks for them
+// (a subnormal in traversal or shading costs ~100 cycles), and pgloss's float lobe takes
+// underflow to 0 either way. Set in every worker, so the image does not depend on which
+// thread rendered a tile.
+struct DenormalsOff {
+#if defined(__SSE__) || defined(_M_X64)
+    unsigned saved = _mm_getcsr();
+    DenormalsOff() { _mm_setcsr(saved | 0x8040u); }  // FTZ (bit 15) | DAZ (bit 6)
+    ~DenormalsOff() { _mm_setcsr(saved); }
+#endif
 };
 
 // Joins every joinable thread when it goes out of scope, also while an exception unwinds
@@ -96,6 +114,75 @@ struct Hit {
     float t = 0;
     glm::vec3 p, n;  // n: unit geometric normal, not yet face-forwarded
     GeomRef ref{GeomKind::MESH, -1};
+};
+
+// The pinhole camera: the direction through image position (px, py) of a w × h image.
+struct Pinhole {
+    glm::vec3 f, r, u;
+    float th, w, h;
+    Pinhole(const Camera &c, int width, int height) : w(float(width)), h(float(height)) {
+        f = glm::normalize(c.look_at - c.position);
+        r = glm::normalize(glm::cross(f, c.up));
+        u = glm::cross(r, f);
+        th = std::tan(0.5f * c.fov_deg * kPi / 180.0f);
+    }
+    glm::vec3 dir(float px, float py) const {
+        float sx = (2.0f * px / w - 1.0f) * (w / h) * th;
+        float sy = (1.0f - 2.0f * py / h) * th;
+        return glm::normalize(f + sx * r + sy * u);
+    }
+};
+
+// What the previous vertex of a path did, to weight emission found by its BRDF-sampled ray.
+enum class Prev { CAMERA, MIS, BRDF, LIGHT };
+
+// One camera path in flight (a wavefront holds a tile's paths of a pass).
+struct PathState {
+    glm::vec3 o{0}, d{0};            // the ray to trace next
+    glm::vec3 beta{1}, L{0};         // throughput, radiance so far
+    glm::vec3 prev_n{0};
+    float prev_pdf = 0;
+    Prev prev = Prev::CAMERA;
+    int depth = 0;                   // index of the vertex the next hit will be
+    Rng rng;
+    bool shadow = false;             // a next-event estimate waits for its shadow ray:
+    glm::vec3 shadow_o{0}, shadow_d{0}, shadow_c{0};  // ray, and what it adds if unoccluded
+    float shadow_tmax = 0;
+};
+
+// Paths traced together: enough for full packets until the last bounces, few enough that
+// their state stays in the core's L2 cache.
+#ifndef PGT_WAVEFRONT
+#define PGT_WAVEFRONT 1024
+#endif
+constexpr size_t kWavefront = PGT_WAVEFRONT;
+
+// What a path's shading step found before its lobe calls (stage 1 of a wavefront step), for
+// the lobe calls batched per material (stage 2) and the path's update (stage 3).
+struct ShadeRec {
+    Frame frame;
+    glm::vec3 p{0}, n{0};            // the offset origin of the next rays, the facing normal
+    glm::vec3 wi{0}, Le{0};          // next-event estimate: direction to the light, its radiance
+    pgloss_vec3 wo{0, 0, 1}, wil{0, 0, 1};  // local directions: to the viewer, to the light
+    float pdf_light = 0, tmax = 0;
+    float u[3] = {0, 0, 0};          // the BRDF sample's random numbers
+    int mat = -1;                    // material index; -1: the path ends at this hit
+    Prev strat = Prev::LIGHT;
+    bool nee = false;                // a next-event estimate to weight
+};
+
+// The structure-of-arrays inputs and outputs of the batched lobe calls (pgloss/batch.h).
+enum Lane { WOX, WOY, WOZ, WIX, WIY, WIZ, U0, U1, U2, FR, FG, FB, FPDF,
+            SX, SY, SZ, SPDF, SR, SG, SB, NLANES };
+
+// A worker's scratch lists for trace_wavefront (kept across tiles: no allocation per sample).
+struct Wavefront {
+    std::vector<std::uint32_t> active, next, shadows, order;
+    std::vector<Hit> hits;
+    std::vector<PathState> paths;
+    std::vector<ShadeRec> recs;
+    std::vector<std::uint32_t> count;  // per material
+    std::vector<float> soa;            // NLANES arrays of the wavefront's length
 };
 
 }  // namespace
@@ -119,6 +206,12 @@ struct Renderer::Impl {
     RTCDevice device = nullptr;
     RTCScene rtc = nullptr;
     std::vector<GeomRef> geoms;  // by geomID
+    // A scene with few spheres has them intersected here, analytically, and only its
+    // triangles in Embree: Embree 3 traverses a separate BVH for its sphere primitives, which
+    // doubled the cost of every ray in the stimulus scene (one sphere, 14 triangles).
+    static constexpr size_t kAnalyticSpheres = 16;
+    bool analytic_spheres = false;
+    bool use_quads = false;  // meshes and lights as Embree quads (pairs_into_quads)
     float eps = 1e-4f;           // ray offset, scaled to the scene
 
     explicit Impl(const Scene &s) : scene(s) {
@@ -135,15 +228,21 @@ struct Renderer::Impl {
         rtc = rtcNewScene(device);
         rtcSetSceneBuildQuality(rtc, RTC_BUILD_QUALITY_HIGH);
         float extent = 1.0f;
+        analytic_spheres = s.spheres.size() <= kAnalyticSpheres;
         for (size_t i = 0; i < s.spheres.size(); ++i) {
             const Sphere &sp = s.spheres[i];
+            extent = std::max(extent, max3(glm::abs(sp.center)) + sp.radius);
+            if (analytic_spheres) continue;
             RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_SPHERE_POINT);
             auto *v = static_cast<float *>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
                                                                     RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1));
             v[0] = sp.center.x, v[1] = sp.center.y, v[2] = sp.center.z, v[3] = sp.radius;
-            extent = std::max(extent, max3(glm::abs(sp.center)) + sp.radius);
             attach(g, {GeomKind::SPHERE, int(i)});
         }
+        // One primitive type for the whole scene (Embree traverses one BVH per type): quads
+        // when every mesh pairs up (the stimulus scene: ~1.5x faster traversal than its 14
+        // triangles), else triangles.
+        use_quads = std::all_of(s.meshes.begin(), s.meshes.end(), [](const Mesh &m) { return pairs_into_quads(m.faces); });
         for (size_t i = 0; i < s.meshes.size(); ++i) {
             add_triangles(s.meshes[i].vertices, s.meshes[i].faces, {GeomKind::MESH, int(i)});
             for (auto &p : s.meshes[i].vertices) extent = std::max(extent, max3(glm::abs(p)));
@@ -168,14 +267,32 @@ struct Renderer::Impl {
         if (geoms.size() <= id) geoms.resize(id + 1);
         geoms[id] = ref;
     }
+    // Whether the triangles come in pairs (a, b, c), (a, c, d), as the scene's boxes, quads
+    // and lights and fan-triangulated OBJ quads do: each pair is then Embree's quad
+    // (b, c, d, a), whose two triangles (b, c, a) and (d, a, c) are the pair itself.
+    static bool pairs_into_quads(const std::vector<glm::uvec3> &faces) {
+        if (faces.size() % 2 != 0) return false;
+        for (size_t k = 0; k < faces.size(); k += 2)
+            if (faces[k + 1].x != faces[k].x || faces[k + 1].y != faces[k].z) return false;
+        return true;
+    }
     void add_triangles(const std::vector<glm::vec3> &verts, const std::vector<glm::uvec3> &faces, GeomRef ref) {
-        RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+        RTCGeometry g = rtcNewGeometry(device, use_quads ? RTC_GEOMETRY_TYPE_QUAD : RTC_GEOMETRY_TYPE_TRIANGLE);
         auto *v = static_cast<float *>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                                                                 3 * sizeof(float), verts.size()));
         for (size_t k = 0; k < verts.size(); ++k) v[3 * k] = verts[k].x, v[3 * k + 1] = verts[k].y, v[3 * k + 2] = verts[k].z;
-        auto *ix = static_cast<unsigned *>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                                    3 * sizeof(unsigned), faces.size()));
-        for (size_t k = 0; k < faces.size(); ++k) ix[3 * k] = faces[k].x, ix[3 * k + 1] = faces[k].y, ix[3 * k + 2] = faces[k].z;
+        if (use_quads) {
+            auto *ix = static_cast<unsigned *>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4,
+                                                                        4 * sizeof(unsigned), faces.size() / 2));
+            for (size_t k = 0; k < faces.size(); k += 2) {
+                unsigned *q = ix + 2 * k;
+                q[0] = faces[k].y, q[1] = faces[k].z, q[2] = faces[k + 1].z, q[3] = faces[k].x;
+            }
+        } else {
+            auto *ix = static_cast<unsigned *>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                                        3 * sizeof(unsigned), faces.size()));
+            for (size_t k = 0; k < faces.size(); ++k) ix[3 * k] = faces[k].x, ix[3 * k + 1] = faces[k].y, ix[3 * k + 2] = faces[k].z;
+        }
         attach(g, ref);
     }
 
@@ -190,24 +307,60 @@ struct Renderer::Impl {
         rh.ray.tfar = std::numeric_limits<float>::infinity();
         rh.ray.mask = 0xffffffffu;
         rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        int si = -1;
+        rh.ray.tfar = sphere_hit(o, d, rh.ray.tfar, si);
         rtcIntersect1(rtc, &ctx, &rh);
+        return make_hit(o, d, rh.hit.geomID, rh.ray.tfar, glm::vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z), si);
+    }
+
+    // The nearest analytic sphere along o + t d, 0 < t < tmax: returns its t and sets idx, or
+    // returns tmax. The roots as in Haines et al. 2019 (Ray Tracing Gems, ch. 7): the
+    // discriminant from the distance of the centre to the ray, and the smaller root from the
+    // larger one, so that neither cancels for a distant or a large sphere.
+    float sphere_hit(glm::vec3 o, glm::vec3 d, float tmax, int &idx) const {
+        if (!analytic_spheres) return tmax;
+        const float a = glm::dot(d, d);
+        for (size_t i = 0; i < scene.spheres.size(); ++i) {
+            const Sphere &sp = scene.spheres[i];
+            const glm::vec3 f = o - sp.center;
+            const float b = -glm::dot(f, d);  // the roots of a t² − 2 b t + c
+            const glm::vec3 l = f + (b / a) * d;
+            const float r2 = sp.radius * sp.radius;
+            const float disc = a * (r2 - glm::dot(l, l));
+            if (!(disc >= 0)) continue;
+            const float q = b + std::copysign(std::sqrt(disc), b);
+            if (q == 0) continue;
+            const float c = glm::dot(f, f) - r2;
+            const float t0 = c / q, t1 = q / a;
+            const float tn = std::min(t0, t1), tf = std::max(t0, t1);
+            const float t = tn > 0 ? tn : tf;
+            if (t > 0 && t < tmax) tmax = t, idx = int(i);
+        }
+        return tmax;
+    }
+
+    // The hit record of a ray (o, d) whose closest hit is Embree's (geomID, t, Ng), or else the
+    // sphere: the analytic sphere hit before t (sphere_hit), or -1.
+    Hit make_hit(glm::vec3 o, glm::vec3 d, unsigned geom_id, float t, glm::vec3 ng, int sphere) const {
         Hit h;
-        if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return h;
+        if (geom_id == RTC_INVALID_GEOMETRY_ID && sphere < 0) return h;
         h.hit = true;
-        h.t = rh.ray.tfar;
+        h.t = t;
         h.p = o + h.t * d;
-        h.ref = geoms[rh.hit.geomID];
+        h.ref = geom_id == RTC_INVALID_GEOMETRY_ID ? GeomRef{GeomKind::SPHERE, sphere} : geoms[geom_id];
         if (h.ref.kind == GeomKind::SPHERE) {
             const Sphere &s = scene.spheres[size_t(h.ref.index)];
             h.n = glm::normalize(h.p - s.center);
         } else {
-            h.n = glm::normalize(glm::vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z));
+            h.n = glm::normalize(ng);
         }
         return h;
     }
 
     bool occluded(glm::vec3 o, glm::vec3 d, float tfar, std::uint64_t &rays) const {
         ++rays;
+        int si = -1;
+        if (sphere_hit(o, d, tfar, si) < tfar) return true;
         RTCIntersectContext ctx;
         rtcInitIntersectContext(&ctx);
         RTCRay r{};
@@ -220,12 +373,13 @@ struct Renderer::Impl {
         return r.tfar < 0.0f;
     }
 
-    const pgloss_material &material_at(int mi, glm::vec3 p) const {
+    // The material index at p: mi itself, or the check of a checker that p falls in.
+    int material_index_at(int mi, glm::vec3 p) const {
         const Material &m = scene.materials[size_t(mi)];
-        if (!m.checker) return m.ward;
+        if (!m.checker) return mi;
         glm::vec3 q = glm::floor((p - m.check_offset) / m.check_size);
         long parity = (long(q.x) + long(q.y) + long(q.z)) & 1L;
-        return scene.materials[size_t(parity ? m.check_b : m.check_a)].ward;
+        return parity ? m.check_b : m.check_a;
     }
 
     // Emitted radiance of light li towards a point, seen along direction -wi (wi points at the light).
@@ -236,128 +390,258 @@ struct Renderer::Impl {
 
     size_t light_count() const { return scene.lights.size() + (scene.has_environment ? 1 : 0); }
 
-    glm::vec3 camera_dir(float px, float py, int w, int h) const {
-        const Camera &c = scene.camera;
-        glm::vec3 f = glm::normalize(c.look_at - c.position);
-        glm::vec3 r = glm::normalize(glm::cross(f, c.up));
-        glm::vec3 u = glm::cross(r, f);
-        float th = std::tan(0.5f * c.fov_deg * kPi / 180.0f);
-        float aspect = float(w) / float(h);
-        float sx = (2.0f * px / float(w) - 1.0f) * aspect * th;
-        float sy = (1.0f - 2.0f * py / float(h)) * th;
-        return glm::normalize(f + sx * r + sy * u);
-    }
 
-    // One camera path (radiance estimate) for pixel position (px, py).
-    glm::vec3 trace(float px, float py, int w, int h, Mode mode, int max_depth, Rng &rng, std::uint64_t &rays) const {
-        glm::vec3 L(0), beta(1);
-        glm::vec3 o = scene.camera.position;
-        glm::vec3 d = camera_dir(px, py, w, h);
+    // Stage 1 of a path's shading step: what the path found along its last ray (hit).
+    // Emission reached by the ray is added to ps.L; the light sample of the next-event
+    // estimate and the BRDF sample's random numbers go into r, for the lobe calls. Returns
+    // false when the path ends here (r.mat = -1).
+    bool shade_begin(PathState &ps, const Hit &hit, Mode mode, int max_depth, ShadeRec &r) const {
+        const glm::vec3 d = ps.d;
         const float nl = float(light_count());
-        // What the previous vertex did, to weight emission found by its BRDF-sampled ray.
-        enum class Prev { CAMERA, MIS, BRDF, LIGHT } prev = Prev::CAMERA;
-        float prev_pdf = 0;
-        glm::vec3 prev_p(0), prev_n(0);
-        for (int depth = 0;; ++depth) {
-            Hit hit = intersect(o, d, rays);
-            if (!hit.hit) {
-                if (scene.has_environment && prev != Prev::LIGHT) {
-                    float w = 1;
-                    if (prev == Prev::MIS)
-                        w = power_heuristic(prev_pdf, std::max(0.0f, glm::dot(prev_n, d)) / kPi / nl);
-                    L += beta * scene.environment * w;
-                }
-                break;
+        ps.shadow = false;
+        r.mat = -1;
+        if (!hit.hit) {
+            if (scene.has_environment && ps.prev != Prev::LIGHT) {
+                float w = 1;
+                if (ps.prev == Prev::MIS)
+                    w = power_heuristic(ps.prev_pdf, std::max(0.0f, glm::dot(ps.prev_n, d)) / kPi / nl);
+                ps.L += ps.beta * scene.environment * w;
             }
-            if (hit.ref.kind == GeomKind::LIGHT) {
-                const AreaLight &l = scene.lights[size_t(hit.ref.index)];
-                float cos_l = -glm::dot(l.normal, d);
-                if (cos_l > 0 && prev != Prev::LIGHT) {
-                    float w = 1;
-                    if (prev == Prev::MIS) {
-                        float pdf_light = hit.t * hit.t / (l.area * cos_l) / nl;
-                        w = power_heuristic(prev_pdf, pdf_light);
-                    }
-                    L += beta * light_emission(l, cos_l) * w;
+            return false;
+        }
+        if (hit.ref.kind == GeomKind::LIGHT) {
+            const AreaLight &l = scene.lights[size_t(hit.ref.index)];
+            float cos_l = -glm::dot(l.normal, d);
+            if (cos_l > 0 && ps.prev != Prev::LIGHT) {
+                float w = 1;
+                if (ps.prev == Prev::MIS) {
+                    float pdf_light = hit.t * hit.t / (l.area * cos_l) / nl;
+                    w = power_heuristic(ps.prev_pdf, pdf_light);
                 }
-                break;  // lights do not reflect
+                ps.L += ps.beta * light_emission(l, cos_l) * w;
             }
-            if (depth + 1 > max_depth) break;
-            int mi = hit.ref.kind == GeomKind::SPHERE ? scene.spheres[size_t(hit.ref.index)].material
-                                                      : scene.meshes[size_t(hit.ref.index)].material;
-            const pgloss_material &m = material_at(mi, hit.p);
-            if (m.lobes == PGLOSS_LOBE_NONE) break;
-            glm::vec3 n = glm::dot(hit.n, d) < 0 ? hit.n : -hit.n;  // two-sided: face the viewer
-            Frame frame(n);
-            pgloss_vec3 wo = frame.to_local(-d);
-            glm::vec3 p = hit.p + eps * n;
+            return false;  // lights do not reflect
+        }
+        if (ps.depth + 1 > max_depth) return false;
+        int mi = hit.ref.kind == GeomKind::SPHERE ? scene.spheres[size_t(hit.ref.index)].material
+                                                  : scene.meshes[size_t(hit.ref.index)].material;
+        mi = material_index_at(mi, hit.p);
+        const pgloss_material &m = scene.materials[size_t(mi)].ward;
+        if (m.lobes == PGLOSS_LOBE_NONE) return false;
+        r.mat = mi;
+        r.n = glm::dot(hit.n, d) < 0 ? hit.n : -hit.n;  // two-sided: face the viewer
+        r.frame = Frame(r.n);
+        r.wo = r.frame.to_local(-d);
+        r.p = hit.p + eps * r.n;
+        Rng &rng = ps.rng;
 
-            // Strategy at this vertex: no MIS work where there is no specular lobe.
-            Prev strat = mode == Mode::BRDF ? Prev::BRDF
-                       : mode == Mode::LIGHT ? Prev::LIGHT
-                       : (m.lobes & PGLOSS_LOBE_SPECULAR) ? Prev::MIS : Prev::LIGHT;
+        // Strategy at this vertex: no MIS work where there is no specular lobe.
+        r.strat = mode == Mode::BRDF ? Prev::BRDF
+                : mode == Mode::LIGHT ? Prev::LIGHT
+                : (m.lobes & PGLOSS_LOBE_SPECULAR) ? Prev::MIS : Prev::LIGHT;
 
-            if (strat != Prev::BRDF && nl > 0) {  // next-event estimation
-                size_t li = std::min(size_t(rng.uniform() * nl), light_count() - 1);
-                float u1 = rng.uniform(), u2 = rng.uniform();
-                glm::vec3 wi, Le;
-                float pdf_light, tmax;
-                bool ok = true;
-                if (li < scene.lights.size()) {
-                    const AreaLight &l = scene.lights[li];
-                    glm::vec3 y = l.corner + u1 * l.edge1 + u2 * l.edge2;
-                    glm::vec3 dv = y - p;
-                    float dist2 = glm::dot(dv, dv), dist = std::sqrt(dist2);
-                    wi = dv / dist;
-                    float cos_l = -glm::dot(l.normal, wi);
-                    ok = cos_l > 0;
-                    pdf_light = ok ? dist2 / (l.area * cos_l) : 0;
-                    Le = ok ? light_emission(l, cos_l) : glm::vec3(0);
-                    tmax = dist * (1.0f - 1e-4f);
-                } else {  // environment: cosine-weighted about n
-                    float r = std::sqrt(u1), phi = 2 * kPi * u2;
-                    pgloss_vec3 lw{r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0f, 1 - u1))};
-                    wi = frame.to_world(lw);
-                    pdf_light = lw.z / kPi;
-                    ok = pdf_light > 0;
-                    Le = scene.environment;
-                    tmax = std::numeric_limits<float>::infinity();
-                }
-                pdf_light /= nl;
-                pgloss_vec3 wil = frame.to_local(wi);
-                if (ok && wil.z > 0) {
-                    pgloss_rgb f;
-                    float pdf_brdf = 0, w = 1;
-                    if (strat == Prev::MIS) {
-                        pgloss_eval_pdf(&m, wo, wil, m.lobes, &f, &pdf_brdf);
-                        w = power_heuristic(pdf_light, pdf_brdf);
-                    } else {
-                        pgloss_eval(&m, wo, wil, m.lobes, &f);
-                    }
-                    glm::vec3 c = beta * rgb(f) * Le * (wil.z * w / pdf_light);
-                    if (max3(c) > 0 && !occluded(p, wi, tmax, rays)) L += c;
-                }
+        r.nee = false;
+        r.wil = r.wo;  // a valid direction for the batched call where there is no estimate
+        if (r.strat != Prev::BRDF && nl > 0) {  // next-event estimation
+            size_t li = std::min(size_t(rng.uniform() * nl), light_count() - 1);
+            float u1 = rng.uniform(), u2 = rng.uniform();
+            glm::vec3 wi, Le;
+            float pdf_light, tmax;
+            bool ok = true;
+            if (li < scene.lights.size()) {
+                const AreaLight &l = scene.lights[li];
+                glm::vec3 y = l.corner + u1 * l.edge1 + u2 * l.edge2;
+                glm::vec3 dv = y - r.p;
+                float dist2 = glm::dot(dv, dv), dist = std::sqrt(dist2);
+                wi = dv * (1.0f / dist);
+                float cos_l = -glm::dot(l.normal, wi);
+                ok = cos_l > 0;
+                pdf_light = ok ? dist2 / (l.area * cos_l) : 0;
+                Le = ok ? light_emission(l, cos_l) : glm::vec3(0);
+                tmax = dist * (1.0f - 1e-4f);
+            } else {  // environment: cosine-weighted about n
+                float rr = std::sqrt(u1), phi = 2 * kPi * u2;
+                pgloss_vec3 lw{rr * std::cos(phi), rr * std::sin(phi), std::sqrt(std::max(0.0f, 1 - u1))};
+                wi = r.frame.to_world(lw);
+                pdf_light = lw.z / kPi;
+                ok = pdf_light > 0;
+                Le = scene.environment;
+                tmax = std::numeric_limits<float>::infinity();
             }
-
-            // Continue the path by BRDF sampling.
-            float u[3] = {rng.uniform(), rng.uniform(), rng.uniform()};
-            pgloss_sample_record rec;
-            pgloss_sample(&m, wo, u, m.lobes, &rec);
-            if (!(rec.pdf > 0)) break;
-            beta *= rgb(rec.weight);
-            prev = strat;
-            prev_pdf = rec.pdf;
-            prev_p = p;
-            prev_n = n;
-            o = p;
-            d = glm::normalize(frame.to_world(rec.wi));
-            if (depth >= 3) {  // Russian roulette
-                float q = std::min(0.95f, max3(beta));
-                if (!(rng.uniform() < q)) break;
-                beta /= q;
+            pgloss_vec3 wil = r.frame.to_local(wi);
+            if (ok && wil.z > 0) {
+                r.nee = true;
+                r.wil = wil, r.wi = wi, r.Le = Le, r.pdf_light = pdf_light / nl, r.tmax = tmax;
             }
         }
-        return L;
+        // The BRDF sample's random numbers, drawn now: each path's stream is consumed in the
+        // order of the scalar recursion (light sample, BRDF sample, Russian roulette).
+        r.u[0] = rng.uniform(), r.u[1] = rng.uniform(), r.u[2] = rng.uniform();
+        return true;
+    }
+
+    // Stage 3: the next-event estimate from the lobe's f and pdf at r.wil (left in
+    // ps.shadow_* for its shadow ray), and the path continued by the BRDF sample (s_*).
+    // Returns false when the path ends (the shadow ray, if any, is still traced).
+    bool shade_end(PathState &ps, const ShadeRec &r, glm::vec3 f, float pdf_brdf, pgloss_vec3 s_wi,
+                   float s_pdf, glm::vec3 s_weight) const {
+        if (r.nee) {
+            const float w = r.strat == Prev::MIS ? power_heuristic(r.pdf_light, pdf_brdf) : 1.0f;
+            glm::vec3 c = ps.beta * f * r.Le * (r.wil.z * w / r.pdf_light);
+            if (max3(c) > 0) {
+                ps.shadow = true;
+                ps.shadow_o = r.p, ps.shadow_d = r.wi, ps.shadow_tmax = r.tmax, ps.shadow_c = c;
+            }
+        }
+        // Continue the path by BRDF sampling.
+        if (!(s_pdf > 0)) return false;
+        ps.beta *= s_weight;
+        ps.prev = r.strat;
+        ps.prev_pdf = s_pdf;
+        ps.prev_n = r.n;
+        ps.o = r.p;
+        ps.d = glm::normalize(r.frame.to_world(s_wi));
+        if (ps.depth >= 3) {  // Russian roulette
+            float q = std::min(0.95f, max3(ps.beta));
+            if (!(ps.rng.uniform() < q)) return false;
+            ps.beta *= 1.0f / q;
+        }
+        ++ps.depth;
+        return true;
+    }
+
+    // Stage 2: the lobe calls of the step's shading points, batched per material
+    // (pgloss_eval_pdf_batch for the next-event estimates, pgloss_sample_batch for the BRDF
+    // samples: the library's vector loops, on the running CPU's best instruction set), then
+    // stage 3 for each path.
+    void shade_batched(PathState *paths, Wavefront &wf, size_t na) const {
+        const size_t nm = scene.materials.size();
+        wf.count.assign(nm + 1, 0);
+        for (size_t i = 0; i < na; ++i)
+            if (wf.recs[i].mat >= 0) ++wf.count[size_t(wf.recs[i].mat) + 1];
+        for (size_t m = 0; m < nm; ++m) wf.count[m + 1] += wf.count[m];  // bucket starts
+        const size_t total = wf.count[nm];
+        wf.order.resize(total);
+        {
+            std::vector<std::uint32_t> &pos = wf.next;  // reused as the buckets' cursors
+            pos.assign(wf.count.begin(), wf.count.end() - 1);
+            for (size_t i = 0; i < na; ++i)
+                if (wf.recs[i].mat >= 0) wf.order[pos[size_t(wf.recs[i].mat)]++] = std::uint32_t(i);
+        }
+        wf.soa.resize(size_t(NLANES) * std::max<size_t>(total, 1));
+        float *v[NLANES];
+        for (int l = 0; l < NLANES; ++l) v[l] = wf.soa.data() + size_t(l) * total;
+        for (size_t j = 0; j < total; ++j) {
+            const ShadeRec &r = wf.recs[wf.order[j]];
+            v[WOX][j] = r.wo.x, v[WOY][j] = r.wo.y, v[WOZ][j] = r.wo.z;
+            v[WIX][j] = r.wil.x, v[WIY][j] = r.wil.y, v[WIZ][j] = r.wil.z;
+            v[U0][j] = r.u[0], v[U1][j] = r.u[1], v[U2][j] = r.u[2];
+        }
+        for (size_t m = 0; m < nm; ++m) {
+            const size_t b = wf.count[m], n = wf.count[m + 1] - b;
+            if (n == 0) continue;
+            const pgloss_material &mat = scene.materials[m].ward;
+            const pgloss_vec3_array wo{v[WOX] + b, v[WOY] + b, v[WOZ] + b};
+            const pgloss_vec3_array wi{v[WIX] + b, v[WIY] + b, v[WIZ] + b};
+            // Statuses are not needed: the directions are unit and the random numbers finite
+            // by construction, and an invalid element gets zeros (its path ends).
+            (void)pgloss_eval_pdf_batch(&mat, mat.lobes, n, wo, wi, pgloss_rgb_out{v[FR] + b, v[FG] + b, v[FB] + b},
+                                        v[FPDF] + b);
+            (void)pgloss_sample_batch(&mat, mat.lobes, n, wo, v[U0] + b, v[U1] + b, v[U2] + b,
+                                      pgloss_vec3_out{v[SX] + b, v[SY] + b, v[SZ] + b}, v[SPDF] + b,
+                                      pgloss_rgb_out{v[SR] + b, v[SG] + b, v[SB] + b}, nullptr);
+        }
+        for (size_t j = 0; j < total; ++j) {
+            const std::uint32_t i = wf.order[j];
+            PathState &ps = paths[wf.active[i]];
+            const bool alive = shade_end(ps, wf.recs[i], glm::vec3(v[FR][j], v[FG][j], v[FB][j]), v[FPDF][j],
+                                         pgloss_vec3{v[SX][j], v[SY][j], v[SZ][j]}, v[SPDF][j],
+                                         glm::vec3(v[SR][j], v[SG][j], v[SB][j]));
+            wf.recs[i].mat = alive ? 0 : -1;  // now: whether the path goes on
+        }
+    }
+
+    // Traces the paths of a wavefront to their ends, in lock step: each step intersects the
+    // live paths' rays 16 at a time (rtcIntersect16), shades every hit, then traces the
+    // step's shadow rays 16 at a time (rtcOccluded16). Packets of 16 amortise Embree's
+    // per-call cost and traverse the small BVH for 16 rays at once. Each path keeps its own
+    // random stream and adds to its own L in the order of the scalar recursion, so the result
+    // does not depend on how the paths are grouped into packets.
+    void trace_wavefront(PathState *paths, size_t n, Wavefront &wf, Mode mode, int max_depth,
+                         std::uint64_t &rays) const {
+        RTCIntersectContext ctx;
+        rtcInitIntersectContext(&ctx);
+        wf.active.resize(n);
+        for (size_t i = 0; i < n; ++i) wf.active[i] = std::uint32_t(i);
+        while (!wf.active.empty()) {
+            const size_t na = wf.active.size();
+            wf.hits.resize(na);
+            for (size_t b = 0; b < na; b += 16) {
+                const size_t cnt = std::min<size_t>(16, na - b);
+                alignas(64) int valid[16];
+                alignas(64) RTCRayHit16 rh;
+                int sphere_idx[16];
+                for (size_t j = 0; j < 16; ++j) {
+                    const PathState &ps = paths[wf.active[b + std::min(j, cnt - 1)]];
+                    valid[j] = j < cnt ? -1 : 0;
+                    rh.ray.org_x[j] = ps.o.x, rh.ray.org_y[j] = ps.o.y, rh.ray.org_z[j] = ps.o.z;
+                    rh.ray.dir_x[j] = ps.d.x, rh.ray.dir_y[j] = ps.d.y, rh.ray.dir_z[j] = ps.d.z;
+                    rh.ray.tnear[j] = 0.0f;
+                    sphere_idx[j] = -1;
+                    rh.ray.tfar[j] = sphere_hit(ps.o, ps.d, std::numeric_limits<float>::infinity(), sphere_idx[j]);
+                    rh.ray.time[j] = 0.0f;
+                    rh.ray.mask[j] = 0xffffffffu;
+                    rh.ray.id[j] = 0;
+                    rh.ray.flags[j] = 0;
+                    rh.hit.geomID[j] = RTC_INVALID_GEOMETRY_ID;
+                    rh.hit.instID[0][j] = RTC_INVALID_GEOMETRY_ID;
+                }
+                rtcIntersect16(valid, rtc, &ctx, &rh);
+                for (size_t j = 0; j < cnt; ++j) {
+                    const PathState &ps = paths[wf.active[b + j]];
+                    wf.hits[b + j] = make_hit(ps.o, ps.d, rh.hit.geomID[j], rh.ray.tfar[j],
+                                              glm::vec3(rh.hit.Ng_x[j], rh.hit.Ng_y[j], rh.hit.Ng_z[j]), sphere_idx[j]);
+                }
+            }
+            rays += na;
+            wf.recs.resize(na);
+            for (size_t i = 0; i < na; ++i) shade_begin(paths[wf.active[i]], wf.hits[i], mode, max_depth, wf.recs[i]);
+            shade_batched(paths, wf, na);
+            wf.next.clear();
+            wf.shadows.clear();
+            for (size_t i = 0; i < na; ++i) {  // in the wavefront's order: packets as before
+                if (paths[wf.active[i]].shadow) wf.shadows.push_back(wf.active[i]);
+                if (wf.recs[i].mat >= 0) wf.next.push_back(wf.active[i]);
+            }
+            const size_t ns = wf.shadows.size();
+            for (size_t b = 0; b < ns; b += 16) {
+                const size_t cnt = std::min<size_t>(16, ns - b);
+                alignas(64) int valid[16];
+                alignas(64) RTCRay16 r;
+                for (size_t j = 0; j < 16; ++j) {
+                    const PathState &ps = paths[wf.shadows[b + std::min(j, cnt - 1)]];
+                    int si = -1;
+                    const bool by_sphere = j < cnt && sphere_hit(ps.shadow_o, ps.shadow_d, ps.shadow_tmax, si) < ps.shadow_tmax;
+                    valid[j] = j < cnt && !by_sphere ? -1 : 0;
+                    r.org_x[j] = ps.shadow_o.x, r.org_y[j] = ps.shadow_o.y, r.org_z[j] = ps.shadow_o.z;
+                    r.dir_x[j] = ps.shadow_d.x, r.dir_y[j] = ps.shadow_d.y, r.dir_z[j] = ps.shadow_d.z;
+                    r.tnear[j] = 0.0f;
+                    r.tfar[j] = by_sphere ? -std::numeric_limits<float>::infinity() : ps.shadow_tmax;
+                    r.time[j] = 0.0f;
+                    r.mask[j] = 0xffffffffu;
+                    r.id[j] = 0;
+                    r.flags[j] = 0;
+                }
+                rtcOccluded16(valid, rtc, &ctx, &r);
+                for (size_t j = 0; j < cnt; ++j)
+                    if (!(r.tfar[j] < 0.0f)) {
+                        PathState &ps = paths[wf.shadows[b + j]];
+                        ps.L += ps.shadow_c;
+                    }
+            }
+            rays += ns;
+            std::swap(wf.active, wf.next);
+        }
     }
 };
 
@@ -378,6 +662,12 @@ Image Renderer::render(const RenderSettings &s, const RenderOptions &opt, Render
     img.width = w, img.height = h;
     img.rgb.assign(sum.size(), 0.0f);
     RenderStats st;
+    auto cpu_now = [] {
+        timespec ts{};
+        clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+        return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+    };
+    const double cpu0 = cpu_now();
     auto t0 = clock::now();
     auto elapsed = [&] { return std::chrono::duration<double>(clock::now() - t0).count(); };
     const bool tty = opt.progress && isatty(2);
@@ -407,6 +697,8 @@ Image Renderer::render(const RenderSettings &s, const RenderOptions &opt, Render
         std::fflush(stderr);
     };
 
+    const Pinhole pinhole(impl_->scene.camera, w, h);
+    std::vector<Wavefront> scratch(static_cast<size_t>(nthreads));  // per worker, kept across passes and tiles
     int spp_done = 0;
     int pass_spp = 1;
     while (spp_done < s.spp && !cancelled()) {
@@ -422,6 +714,7 @@ Image Renderer::render(const RenderSettings &s, const RenderOptions &opt, Render
         const int s0 = spp_done, s1 = spp_done + pass_spp;
         std::atomic<int> next_tile{0};
         auto worker = [&](int id) noexcept {
+          DenormalsOff denormals_off;  // in every worker, so every sample sees the same mode
           try {
             std::uint64_t local_rays = 0;
             for (;;) {
@@ -430,15 +723,34 @@ Image Renderer::render(const RenderSettings &s, const RenderOptions &opt, Render
                 if (ti >= ntiles) break;
                 int x0 = (ti % tiles_x) * tile, y0 = (ti / tiles_x) * tile;
                 int x1 = std::min(w, x0 + tile), y1 = std::min(h, y0 + tile);
+                // The tile's paths of this pass, pixel by pixel, each pixel's in sample order.
+                Wavefront &wf = scratch[size_t(id)];
+                auto &paths = wf.paths;
+                paths.resize(size_t(x1 - x0) * size_t(y1 - y0) * size_t(s1 - s0));
+                size_t pi = 0;
+                for (int y = y0; y < y1; ++y)
+                    for (int x = x0; x < x1; ++x) {
+                        std::uint64_t pix = std::uint64_t(y) * std::uint64_t(w) + std::uint64_t(x);
+                        for (int k = s0; k < s1; ++k) {
+                            PathState &ps = paths[pi++];
+                            ps = PathState{};
+                            ps.rng = Rng(s.seed, pix, std::uint64_t(k));
+                            float jx = ps.rng.uniform(), jy = ps.rng.uniform();
+                            ps.o = impl_->scene.camera.position;
+                            ps.d = pinhole.dir(float(x) + jx, float(y) + jy);
+                        }
+                    }
+                for (size_t c0 = 0; c0 < paths.size(); c0 += kWavefront)
+                    impl_->trace_wavefront(&paths[c0], std::min(kWavefront, paths.size() - c0), wf, s.mode,
+                                           s.max_depth, local_rays);
+                pi = 0;
                 for (int y = y0; y < y1; ++y)
                     for (int x = x0; x < x1; ++x) {
                         std::uint64_t pix = std::uint64_t(y) * std::uint64_t(w) + std::uint64_t(x);
                         double *acc = &sum[3 * pix];
                         double *acc2 = sum2.empty() ? nullptr : &sum2[3 * pix];
                         for (int k = s0; k < s1; ++k) {
-                            Rng rng(s.seed, pix, std::uint64_t(k));
-                            float jx = rng.uniform(), jy = rng.uniform();
-                            glm::vec3 c = impl_->trace(float(x) + jx, float(y) + jy, w, h, s.mode, s.max_depth, rng, local_rays);
+                            glm::vec3 c = paths[pi++].L;
                             if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z))) {
                                 // Never dropped quietly: counted, and the render fails after the pass.
                                 if (nonfinite.fetch_add(1) == 0) {
@@ -529,6 +841,7 @@ Image Renderer::render(const RenderSettings &s, const RenderOptions &opt, Render
     }
     st.rays = rays.load();
     st.seconds = elapsed();
+    st.cpu_seconds = cpu_now() - cpu0;
     if (tty) print_progress(true);
     if (stats_out) *stats_out = st;
     return img;
@@ -537,11 +850,12 @@ Image Renderer::render(const RenderSettings &s, const RenderOptions &opt, Render
 std::vector<int> Renderer::regions(int w, int h) const {
     const Impl &I = *impl_;
     std::vector<int> out(size_t(w) * size_t(h), REGION_NONE);
+    const Pinhole pinhole(I.scene.camera, w, h);
     std::uint64_t rays = 0;
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             glm::vec3 o = I.scene.camera.position;
-            glm::vec3 d = I.camera_dir(float(x) + 0.5f, float(y) + 0.5f, w, h);
+            glm::vec3 d = pinhole.dir(float(x) + 0.5f, float(y) + 0.5f);
             Hit hit = I.intersect(o, d, rays);
             int r = REGION_NONE;
             if (hit.hit) {

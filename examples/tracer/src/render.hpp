@@ -37,7 +37,8 @@ struct Image {
 
 struct RenderStats {
     double seconds = 0;
-    std::uint64_t rays = 0;     // rtcIntersect1 + rtcOccluded1 calls
+    double cpu_seconds = 0;     // CPU time of the process (all threads) during the render
+    std::uint64_t rays = 0;     // rays traced: intersection and shadow rays
     std::uint64_t samples = 0;  // camera paths
     int spp = 0;               // samples per pixel, the least over the image if interrupted
     bool interrupted = false;  // stopped by RenderOptions::cancel before the requested spp
