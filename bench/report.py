@@ -73,6 +73,7 @@ def main() -> int:
     d, dst = Path(sys.argv[1]), Path(sys.argv[2])
     core = (d / "core.md").read_text()
     peers = (d / "peers.md").read_text() if (d / "peers.md").exists() else "(peers not run)\n"
+    textures = (d / "textures.md").read_text() if (d / "textures.md").exists() else "(bench_textures not run)\n"
     inline = "".join((d / f"inline_{v}.md").read_text() + "\n" for v in ("v3", "plain", "mca")
                      if (d / f"inline_{v}.md").exists()) or "(bench_inline not run)\n"
     plot = pareto(d)
@@ -163,7 +164,14 @@ with `bash bench/run.sh`; the critical path in cycles: `bash bench/mca.sh --inli
 {inline}
 ## Peers (`bench/peers.py`)
 
-{peers}"""
+{peers}
+## Whole textures from Python (`bindings/python/bench/bench_textures.py`)
+
+Arrays of paints through the Python package against numpy's bare formulas in the same run
+(issue 18): the batched conversions with a status per texel, one material per direction pair,
+float64 against float32.
+
+{textures}"""
     dst.write_text(text)
     print(f"wrote {dst} and {plot}")
     return 0

@@ -15,20 +15,27 @@ the same name without the prefix. Functions are **array-first**:
   towards the light; any length, they are normalised), broadcast against each other;
 * scalar parameters of the perceptual functions are scalars or arrays of any
   broadcast-compatible shapes;
+* :class:`Physical` and :class:`Perceptual` hold one paint or an array of paints (a whole
+  texture is one object); :func:`eval`, :func:`pdf`, :func:`eval_pdf` and :func:`sample`
+  take such an array (or a list of paints) as one material per element, broadcast against
+  the directions;
 * the loops run in C with the GIL released; a scalar input gives a Python ``float``.
 
 Precision: the BRDF functions (:func:`eval`, :func:`pdf`, :func:`eval_pdf`, :func:`sample`)
-compute in the C core's float API. ``float32`` arrays go through the vectorised batched
-entry points (``pgloss_*_batch``) and give ``float32``; ``float64`` (and integer) arrays
-are rounded to float like every C caller's, go through the scalar reference functions
-(double arithmetic inside, one rounding of the result) and give ``float64``. The perceptual
-and colour functions compute in double; their result is ``float32`` for ``float32`` input
-and ``float64`` otherwise.
+run the C core's vectorised batches: ``float32`` arrays the float batch (``pgloss_*_batch``,
+``pgloss_*_batch_materials``), giving ``float32``; ``float64`` (and integer) arrays the double
+batch (``pgloss_*_batch_d``, ``pgloss_*_batch_materials_d``: double arithmetic on the double
+directions, the accuracy of the scalar double reference), giving ``float64``. ``out=`` writes
+the big outputs into the caller's arrays. The perceptual and colour functions compute in
+double (the batched ``pgloss_*_batch`` functions of ``pgloss/perceptual_batch.h`` where the
+core has them); their result is ``float32`` for ``float32`` input and ``float64`` otherwise.
 
 Errors are exceptions: :class:`PglossError` (a :class:`ValueError`) carrying the core's
-status and reason, and the index of the first failing element. Values outside the range
-the paper trusts (α > 0.2) give an :class:`AlphaUntrustedWarning`. No function returns NaN
-or Inf for finite input.
+status and reason, the index of the first failing element and, for element-wise calls, the
+status of every element (``status_array``). ``errors="status"`` returns the statuses instead
+of raising (the conversions and element-wise functions), and ``check()`` of an array of paints
+returns them. Values outside the range the paper trusts (α > 0.2) give an
+:class:`AlphaUntrustedWarning`. No function returns NaN or Inf for finite input.
 
 Example::
 
@@ -524,9 +531,12 @@ class Physical:
             if a.shape[-1] not in (1, 3):
                 raise ValueError(f"pgloss.{fn}: rho_d must be a number, 3 numbers (r, g, b) or an array whose last "
                                  f"axis is the channel (size 3, or 1 for grey), got shape {a.shape}")
-            a = np.array(np.broadcast_to(a, a.shape[:-1] + (3,)), dtype=np.float64)
-            a.flags.writeable = False
-            rd = tuple(float(x) for x in a) if a.ndim == 1 else a
+            if a.ndim == 1:
+                rd = tuple(float(x) for x in np.broadcast_to(a, (3,)))
+            else:  # stored channel-first, (3,) + shape: each channel a contiguous column for the core
+                rd = np.array(np.broadcast_to(np.moveaxis(a, -1, 0), (3,) + a.shape[:-1]), dtype=np.float64,
+                              order="C", copy=True)
+                rd.flags.writeable = False
         if alpha is not None:
             if alpha_x is not None or alpha_y is not None:
                 raise TypeError(f"pgloss.{fn}: give alpha, or alpha_x and alpha_y, not both")
@@ -539,7 +549,7 @@ class Physical:
         rs = _field(fn, "rho_s", rho_s)
         self._normalization = _normalization(fn, normalization)
         self._material: Optional[Material] = None
-        rd_shape = rd.shape[:-1] if isinstance(rd, np.ndarray) else ()
+        rd_shape = rd.shape[1:] if isinstance(rd, np.ndarray) else ()
         shapes = [rd_shape, np.shape(rs), np.shape(ax), np.shape(ay)]
         if not any(shapes):
             self._shape: Optional[Tuple[int, ...]] = None
@@ -547,9 +557,30 @@ class Physical:
             self._rho_s, self._alpha_x, self._alpha_y = rs, ax, ay
             return
         shape = _broadcast_fields(fn, ("rho_d", "rho_s", "alpha_x", "alpha_y"), (rd, rs, ax, ay), shapes)
+        self._set_arrays(shape, rd, rs, ax, ay)
+
+    def _set_arrays(self, shape: Tuple[int, ...], rd: Any, rs: Any, ax: Any, ay: Any) -> None:
+        """Array storage: ``_rho_d`` channel-first (3,) + shape, the others of ``shape``; all
+        read-only (broadcast views where a field was smaller)."""
         self._shape = shape
-        self._rho_d = np.broadcast_to(np.asarray(rd, dtype=np.float64), shape + (3,))
+        rd3 = np.asarray(rd, dtype=np.float64)
+        if rd3.ndim == 1:  # one colour for all
+            rd3 = rd3.reshape((3,) + (1,) * len(shape))
+        self._rho_d = np.broadcast_to(rd3, (3,) + shape)
         self._rho_s, self._alpha_x, self._alpha_y = (_view(v, shape) for v in (rs, ax, ay))
+
+    @classmethod
+    def _adopt(cls, rd3: np.ndarray, rs: np.ndarray, ax: np.ndarray, ay: np.ndarray,
+               normalization: Union[Normalization, int]) -> "Physical":
+        """An array Physical over new arrays the caller gives up (a conversion's outputs): no
+        copy. rd3: (3,) + shape."""
+        self = cls.__new__(cls)
+        for x in (rd3, rs, ax, ay):
+            x.flags.writeable = False
+        self._normalization = normalization
+        self._material = None
+        self._set_arrays(tuple(rs.shape), rd3, rs, ax, ay)
+        return self
 
     @classmethod
     def stack(cls, paints: Sequence[Union["Physical", Material]]) -> "Physical":
@@ -572,7 +603,7 @@ class Physical:
             raise ValueError(f"pgloss.{fn}: the paints have different normalizations {sorted(norms)}; an array of "
                              f"paints has one")
         try:
-            rd = np.stack([np.broadcast_to(np.asarray(p._rho_d, dtype=np.float64), p.shape + (3,)) for p in items])
+            rd = np.stack([np.broadcast_to(np.asarray(p.rho_d, dtype=np.float64), p.shape + (3,)) for p in items])
             f = [np.stack([_view(getattr(p, a), p.shape) for p in items]) for a in ("_rho_s", "_alpha_x", "_alpha_y")]
         except ValueError:
             raise ValueError(f"pgloss.{fn}: the paints differ in shape") from None
@@ -602,7 +633,10 @@ class Physical:
     # Fields ---------------------------------------------------------------------------------
     @property
     def rho_d(self) -> Any:
-        """Diffuse reflectance (r, g, b), linear RGB; an array ``shape + (3,)`` for arrays."""
+        """Diffuse reflectance (r, g, b), linear RGB; an array ``shape + (3,)`` for arrays (a
+        read-only view of the channel-first storage)."""
+        if self._shape is not None:
+            return np.moveaxis(self._rho_d, 0, -1)
         return self._rho_d
 
     @property
@@ -650,8 +684,10 @@ class Physical:
         """The six fields as flat contiguous float64 columns, broadcast to ``shape`` (default
         the paint's own): rho_d r, g, b, rho_s, alpha_x, alpha_y."""
         shape = self.shape if shape is None else shape
-        rd = np.broadcast_to(np.asarray(self._rho_d, dtype=np.float64), self.shape + (3,))
-        cols = [_flat(rd[..., k], shape) for k in range(3)]
+        if self._shape is None:
+            cols = [_flat(x, shape) for x in self._rho_d]
+        else:
+            cols = [_flat(self._rho_d[k], shape) for k in range(3)]
         return cols + [_flat(v, shape) for v in (self._rho_s, self._alpha_x, self._alpha_y)]
 
     # Conversions ------------------------------------------------------------------------------
@@ -683,7 +719,7 @@ class Physical:
     def replace(self, **changes: Any) -> "Physical":
         """A copy with some fields changed (``rho_d``, ``rho_s``, ``alpha``, ``alpha_x``,
         ``alpha_y``, ``normalization``)."""
-        kw: dict = dict(rho_d=self._rho_d, rho_s=self._rho_s, alpha_x=self._alpha_x, alpha_y=self._alpha_y,
+        kw: dict = dict(rho_d=self.rho_d, rho_s=self._rho_s, alpha_x=self._alpha_x, alpha_y=self._alpha_y,
                         normalization=self._normalization)
         if "alpha" in changes:
             kw.pop("alpha_x"), kw.pop("alpha_y")
@@ -701,7 +737,7 @@ class Physical:
         if self._shape is None:
             raise TypeError("a single pgloss.Physical is not indexable (it is not an array of paints)")
         sel = _index_of(self._shape, key)
-        rd = np.asarray(self._rho_d).reshape(-1, 3)[sel.reshape(-1)].reshape(sel.shape + (3,))
+        rd = np.stack([np.asarray(self._rho_d[k]).reshape(-1)[sel] for k in range(3)], axis=-1)
         f = [np.asarray(v).reshape(-1)[sel] for v in (self._rho_s, self._alpha_x, self._alpha_y)]
         if sel.ndim == 0:
             return Physical(tuple(float(x) for x in rd), float(f[0]), alpha_x=float(f[1]), alpha_y=float(f[2]),
@@ -719,7 +755,7 @@ class Physical:
         if self._shape is not None:
             al = (f"alpha={_array_repr(self._alpha_x)}" if self.is_isotropic
                   else f"alpha_x={_array_repr(self._alpha_x)}, alpha_y={_array_repr(self._alpha_y)}")
-            return (f"Physical(rho_d={_array_repr(self._rho_d)}, rho_s={_array_repr(self._rho_s)}, {al}, "
+            return (f"Physical(rho_d={_array_repr(self.rho_d)}, rho_s={_array_repr(self._rho_s)}, {al}, "
                     f"normalization={ns})  # shape {self._shape}")
         rd = self._rho_d
         rd_s = repr(rd[0]) if rd[0] == rd[1] == rd[2] else f"({rd[0]!r}, {rd[1]!r}, {rd[2]!r})"
@@ -747,7 +783,7 @@ class Physical:
 
     def __reduce__(self):
         if self._shape is not None:
-            return (_make_physical, (np.ascontiguousarray(self._rho_d), np.ascontiguousarray(self._rho_s),
+            return (_make_physical, (np.ascontiguousarray(self.rho_d), np.ascontiguousarray(self._rho_s),
                                      np.ascontiguousarray(self._alpha_x), np.ascontiguousarray(self._alpha_y),
                                      int(self._normalization)))
         return (_make_physical, (self._rho_d, self._rho_s, self._alpha_x, self._alpha_y, int(self._normalization)))
@@ -805,6 +841,16 @@ class Perceptual:
         shape = _broadcast_fields(fn, _PERCEPTUAL_FIELDS, v, shapes)
         self._shape = shape
         self._v = tuple(_view(x, shape) for x in v)
+
+    @classmethod
+    def _adopt(cls, cols: Sequence[np.ndarray]) -> "Perceptual":
+        """An array Perceptual over new arrays the caller gives up (a conversion's outputs): no copy."""
+        self = cls.__new__(cls)
+        for x in cols:
+            x.flags.writeable = False
+        self._shape = tuple(cols[0].shape)
+        self._v = tuple(cols)
+        return self
 
     @classmethod
     def achromatic(cls, L: Union[float, ArrayLike], c: Union[float, ArrayLike],
@@ -981,8 +1027,8 @@ def _brdf_material(function: str, material: Any) -> Tuple[Optional[Material], Op
         return (None, material) if material.is_array else (material.material(), None)
     if isinstance(material, (list, tuple)) and material and all(isinstance(p, (Physical, Material)) for p in material):
         return None, Physical.stack(material)
-    raise TypeError(f"pgloss.{function}: material must be a pgloss.Physical (one paint or an array), a sequence "
-                    f"of them, or a pgloss.Material, not {type(material).__name__}")
+    raise TypeError(f"pgloss.{function}: material must be a pgloss.Physical or pgloss.Material (one paint, an "
+                    f"array of paints, or a sequence of them), not {type(material).__name__}")
 
 
 def _out_array(function: str, name: str, out: Any, shape: Tuple[int, ...], dtype: np.dtype,
@@ -1378,7 +1424,7 @@ def check_physical(physical: Physical) -> Any:
     (``pgloss_check_physical_batch``)."""
     if not isinstance(physical, Physical):
         raise TypeError(f"pgloss.check_physical: expected a pgloss.Physical, not {type(physical).__name__}")
-    (st,) = _core.check_physical(*physical._columns(), int(physical.normalization))
+    st = _core.check_physical(*physical._columns(), int(physical.normalization))[0]
     return _status_out(st, physical.shape)
 
 
@@ -1395,7 +1441,7 @@ def check_perceptual(perceptual: Perceptual, space: Union[ColorSpace, int] = Col
     if not isinstance(perceptual, Perceptual):
         raise TypeError(f"pgloss.check_perceptual: expected a pgloss.Perceptual, not {type(perceptual).__name__}")
     sp = int(_color_space("check_perceptual", space)[0])
-    (st,) = _core.check_perceptual(*perceptual._columns(), sp)
+    st = _core.check_perceptual(*perceptual._columns(), sp)[0]
     return _status_out(st, perceptual.shape)
 
 
@@ -1433,9 +1479,9 @@ def physical_from_perceptual(perceptual: Perceptual,
         v = [float(r[0]) for r in res[:6]]
         out = Physical(v[0:3], v[3], alpha_x=v[4], alpha_y=v[5], normalization=norm)
     else:
-        rd = np.stack(res[:3], axis=-1).reshape(shape + (3,))
-        out = Physical(rd, res[3].reshape(shape), alpha_x=res[4].reshape(shape), alpha_y=res[5].reshape(shape),
-                       normalization=norm)
+        block = res[7]  # the outputs' (6, n) block: rho_d r, g, b rows are channel-first already
+        out = Physical._adopt(block[0:3].reshape((3,) + shape), *(block[k].reshape(shape) for k in (3, 4, 5)),
+                              normalization=norm)
     if want_status:
         return out, _status_out(res[6], shape)
     _check(fn, res[6], shape, out, scalar=shape == ())
@@ -1465,7 +1511,7 @@ def perceptual_from_physical(physical: Physical,
     if shape == ():
         out = Perceptual(*(float(r[0]) for r in res[:5]))
     else:
-        out = Perceptual(*(r.reshape(shape) for r in res[:5]))
+        out = Perceptual._adopt([r.reshape(shape) for r in res[:5]])
     if want_status:
         return out, _status_out(res[5], shape)
     _check(fn, res[5], shape, out, scalar=shape == ())
