@@ -46,6 +46,12 @@ CASES: List[List[str]] = [
     ["match", "0.03", "0.5", "99"],                           # ENVELOPE: values printed
     ["distance", "0.087", "0.93", "0.1", "0.9"],
     ["distance", "0.087", "inf", "0.1", "0.9"],
+    ["distance", "-1e-1", "0.93", "-.1", "-0.9"],             # negative numbers are numbers, not options
+    ["distance", "0.1", "0.9", "-inf", "0.9"],
+    ["distance", "0.1", "0.9", "0x1p-3", "0.9"],              # strtod's hexadecimal floats
+    ["distance", "0.1", "0.9", "1_0", "0.9"],                 # not strtod's: 2
+    ["distance", "0.1", "0.9", "0.2"],                        # too few: 2
+    ["distance", "0.1", "0.9", "0.2", "0.9", "0.1"],          # too many: 2
     ["envelope", "50"],
     ["envelope", "0"],
     ["envelope", "-5"],

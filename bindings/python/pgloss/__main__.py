@@ -246,13 +246,20 @@ COMMANDS: Tuple[Command, ...] = tuple(_tool(n) for n in (
 
 
 def main(argv: Optional[Sequence[str]] = None) -> int:
+    args_in = list(sys.argv[1:] if argv is None else argv)
+    if args_in and not {"-h", "--help"} & set(args_in[1:]):
+        from . import cli
+
+        tool = cli.find(args_in[0])
+        if tool is not None:  # the C tool's commands read their arguments as it does (e.g. -1e3)
+            return cli.run_argv(tool, args_in[1:])
     parser = argparse.ArgumentParser(prog="python -m pgloss", description="pgloss command line: "
                                      + ", ".join(c.name for c in COMMANDS))
     parser.add_argument("--version", action="version", version=f"pgloss {pgloss.__version__}")
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     for c in COMMANDS:
         c.arguments(sub.add_parser(c.name, help=c.help, description=c.description or c.help))
-    args = parser.parse_args(argv)
+    args = parser.parse_args(args_in)
     return next(c for c in COMMANDS if c.name == args.command).run(args)
 
 

@@ -258,17 +258,48 @@ def add_arguments(command: ToolCommand, parser: argparse.ArgumentParser) -> None
     parser.set_defaults(tool_command=command)
 
 
-def run(args: argparse.Namespace) -> int:
-    command: ToolCommand = args.tool_command
+def usage() -> str:
+    """The C tool's usage text, from the command table."""
+    lines = ["usage: pgloss <command> [args]"]
+    for t in TOOL_COMMANDS:
+        head = " ".join((t.name, *t.numbers, *(("[norm]",) if t.norm else ())))
+        lines.append(f"  {head:<32} {t.usage}" if len(head) <= 32 else f"  {head}\n  {'':<32} {t.usage}")
+    lines.append(f"  {'--version':<32} the version of the pgloss library in use")
+    lines.append("norm: ward (eq. 2, default) | ward-dur | bounded")
+    return "\n".join(lines) + "\n"
+
+
+def run_argv(command: ToolCommand, argv: Sequence[str]) -> int:
+    """Runs a command on its raw arguments, as the C tool reads them: positional only, so that
+    negative numbers such as ``-1e3`` or ``-inf`` are numbers, not options; a wrong count or a
+    bad number prints the C tool's lines to stderr and returns 2."""
+    n = len(command.numbers)
+    ok = len(argv) == n or (command.norm and len(argv) == n + 1)
     try:
-        values = [parse_double(getattr(args, n), n) for n in command.numbers]
-        norm = parse_norm(args.norm) if command.norm and args.norm is not None else pgloss.Normalization.WARD
+        if not ok:
+            raise ArgumentError("")
+        values = [parse_double(a, name) for a, name in zip(argv, command.numbers)]
+        norm = parse_norm(argv[n]) if len(argv) > n else pgloss.Normalization.WARD
     except ArgumentError as e:
-        print(e, file=sys.stderr)
-        print(f"pgloss {command.name}: wrong arguments", file=sys.stderr)
+        if str(e):
+            print(e, file=sys.stderr)
+        print(f"pgloss {command.name}: wrong arguments\n{usage()}", end="", file=sys.stderr)
         return 2
-    sys.stdout.flush()
     return command.run(values, norm)
+
+
+def run(args: argparse.Namespace) -> int:
+    """The argparse entry (``python -m pgloss CMD --help`` shows the arguments)."""
+    command: ToolCommand = args.tool_command
+    raw = [getattr(args, name) for name in command.numbers]
+    if command.norm and args.norm is not None:
+        raw.append(args.norm)
+    return run_argv(command, raw)
+
+
+def find(name: str) -> Optional[ToolCommand]:
+    """The tool command of that name, if any."""
+    return next((t for t in TOOL_COMMANDS if t.name == name), None)
 
 
 def main(argv: Optional[Sequence[str]] = None) -> int:  # pragma: no cover - use python -m pgloss
