@@ -205,6 +205,8 @@ def test_vectors_sample_per_element_materials(dtype: str, vector_report: pv.Repo
         mat = _brdf_material_array(doc, cs)
         wo = np.array([[num(x) for x in c["input"]["wo"]] for c in cs], dtype=dtype)
         u = np.array([[num(x) for x in c["input"]["u"]] for c in cs], dtype=dtype)
+        if dtype == "float64":  # the float API's clamp of u, which the vectors encode (see test_vectors.u64)
+            u = np.minimum(u, 1.0 - 2.0 ** -24)
         try:
             r = pgloss.sample(mat, wo, u, lobes)
             st = np.zeros(len(cs), dtype=np.int8)

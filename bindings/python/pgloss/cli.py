@@ -26,6 +26,7 @@ from typing import Callable, List, NamedTuple, Optional, Sequence, Tuple
 import numpy as np
 
 import pgloss
+from pgloss import _core
 
 DEG = math.pi / 180.0
 
@@ -90,15 +91,10 @@ def _call(thunk: Callable[[], object]) -> Tuple[int, object]:
     return 0, out
 
 
-def _f32(x: float) -> float:
-    """A float of the C API (pgloss_rgb, the pdf) as printf receives it."""
-    return float(np.float32(x))
-
-
-def direction(theta_deg: float, phi_deg: float) -> np.ndarray:
+def direction(theta_deg: float, phi_deg: float) -> List[float]:
     """The C tool's direction: double trigonometry, rounded to float."""
     t, p = theta_deg * DEG, phi_deg * DEG
-    return np.array([math.sin(t) * math.cos(p), math.sin(t) * math.sin(p), math.cos(t)], dtype=np.float32)
+    return [float(np.float32(x)) for x in (math.sin(t) * math.cos(p), math.sin(t) * math.sin(p), math.cos(t))]
 
 
 # ---------------------------------------------------------------------------------------------
@@ -164,13 +160,9 @@ def eval_(v: List[float], norm: pgloss.Normalization) -> int:
     st, m = _call(p.material)
     if st != 0:  # the C tool stops at any status of pgloss_material_init
         return report(st)
-    wo, wi = direction(v[3], v[4]), direction(v[5], v[6])
-    # float64 directions (exactly the C tool's floats): double arithmetic, printed as the C
-    # API's float results.
-    st, r = _call(lambda: pgloss.eval_pdf(m, wo.astype(np.float64), wi.astype(np.float64)))
+    f, pdf, st = _core.eval_pdf_reference(m, int(pgloss.Lobe.ALL), direction(v[3], v[4]), direction(v[5], v[6]))
     if st >= 0:
-        f, pdf = r  # type: ignore[misc]
-        print("f = %.8g  pdf = %.8g" % (_f32(f[0]), _f32(pdf)))
+        print("f = %.8g  pdf = %.8g" % (f[0], pdf))
     return report(st)
 
 
@@ -211,9 +203,8 @@ def demo(v: List[float], norm: pgloss.Normalization) -> int:
     print("  rho_d = (%.4f, %.4f, %.4f)  rho_s = %.4f  alpha = %.3f  [%s]" % (
         *p.rho_d, p.rho_s, p.alpha_x, pgloss.status_name(st)))  # type: ignore[union-attr]
     m = p.material()  # type: ignore[union-attr]
-    f, pdf = pgloss.eval_pdf(m, direction(30, 0).astype(np.float64), direction(30, 180).astype(np.float64))
-    print("  BRDF in the mirror direction at 30 degrees: f = (%.4f, %.4f, %.4f) /sr, pdf = %.3f" % (
-        _f32(f[0]), _f32(f[1]), _f32(f[2]), _f32(pdf)))
+    f, pdf, _ = _core.eval_pdf_reference(m, int(pgloss.Lobe.ALL), direction(30, 0), direction(30, 180))
+    print("  BRDF in the mirror direction at 30 degrees: f = (%.4f, %.4f, %.4f) /sr, pdf = %.3f" % (*f, pdf))
     return 0
 
 

@@ -420,6 +420,23 @@ Columns columns_of(const std::array<darr, 6> &cols, size_t n) {
     return c;
 }
 
+// One chunk of the material columns in the batch's precision. The parameters are rounded to
+// float in both: a material is a pgloss_material (float parameters, as every C caller's and
+// the scalar double reference's), whatever the directions' precision; the double path widens
+// them again exactly. Beyond float range they become ±Inf, which the core reports as
+// NONFINITE, as pgloss_material_init does.
+template <class T>
+std::array<const T *, 6> material_chunk(const Columns &C, size_t base, size_t m, T *buf) {
+    std::array<const T *, 6> mc{};
+    for (size_t k = 0; k < 6; ++k) {
+        T *dst = buf + k * kChunk;
+        const double *src = C.p[k] + base;
+        for (size_t j = 0; j < m; ++j) dst[j] = static_cast<T>(to_float(src[j]));
+        mc[k] = dst;
+    }
+    return mc;
+}
+
 template <class T>
 py::tuple eval_materials(const std::array<darr, 6> &cols, int normalization, unsigned lobes,
                          const py::array_t<T, py::array::c_style> &wo, const py::array_t<T, py::array::c_style> &wi,
@@ -442,34 +459,31 @@ py::tuple eval_materials(const std::array<darr, 6> &cols, int normalization, uns
         std::vector<T> buf(10 * kChunk);
         T *ox = buf.data(), *oy = ox + kChunk, *oz = oy + kChunk, *ix = oz + kChunk, *iy = ix + kChunk,
           *iz = iy + kChunk, *fr = iz + kChunk, *fg = fr + kChunk, *fb = fg + kChunk, *pd = fb + kChunk;
-        std::vector<float> mbuf(std::is_same_v<T, float> ? 6 * kChunk : 0);
+        std::vector<T> mbuf(6 * kChunk);
         for (size_t base = 0; base < n; base += kChunk) {
             if (sig.stop(base)) break;
             const size_t m = n - base < kChunk ? n - base : kChunk;
             deinterleave_any(m, o + 3 * base, ox, oy, oz);
             deinterleave_any(m, i + 3 * base, ix, iy, iz);
-            std::fill(sp + base, sp + base + m, kUnwritten);
-            int st;
-            if constexpr (std::is_same_v<T, float>) {
-                std::array<const float *, 6> mc{};
-                for (size_t k = 0; k < 6; ++k) {
-                    float *dst = mbuf.data() + k * kChunk;
-                    const double *src = C.p[k] + base;
-                    for (size_t j = 0; j < m; ++j) dst[j] = to_float(src[j]);
-                    mc[k] = dst;
-                }
-                st = pgloss_py_eval_pdf_batch_materials(mc.data(), normalization, lobes, m, pgloss_vec3_array{ox, oy, oz},
-                                                        pgloss_vec3_array{ix, iy, iz},
-                                                        want_f ? pgloss_rgb_out{fr, fg, fb} : pgloss_rgb_out{nullptr, nullptr, nullptr},
-                                                        want_pdf ? pd : nullptr, sp + base);
-            } else {
-                std::array<const double *, 6> mc{};
-                for (size_t k = 0; k < 6; ++k) mc[k] = C.p[k] + base;
-                st = pgloss_py_eval_pdf_batch_materials_d(
-                    mc.data(), normalization, lobes, m, pgloss_vec3_array_d{ox, oy, oz}, pgloss_vec3_array_d{ix, iy, iz},
-                    want_f ? pgloss_rgb_out_d{fr, fg, fb} : pgloss_rgb_out_d{nullptr, nullptr, nullptr},
-                    want_pdf ? pd : nullptr, sp + base);
-            }
+            const auto mc = material_chunk<T>(C, base, m, mbuf.data());
+            auto call = [&](signed char *status_out) -> int {
+                if constexpr (std::is_same_v<T, float>)
+                    return pgloss_py_eval_pdf_batch_materials(
+                        mc.data(), normalization, lobes, m, pgloss_vec3_array{ox, oy, oz}, pgloss_vec3_array{ix, iy, iz},
+                        want_f ? pgloss_rgb_out{fr, fg, fb} : pgloss_rgb_out{nullptr, nullptr, nullptr},
+                        want_pdf ? pd : nullptr, status_out);
+                else
+                    return pgloss_py_eval_pdf_batch_materials_d(
+                        mc.data(), normalization, lobes, m, pgloss_vec3_array_d{ox, oy, oz},
+                        pgloss_vec3_array_d{ix, iy, iz},
+                        want_f ? pgloss_rgb_out_d{fr, fg, fb} : pgloss_rgb_out_d{nullptr, nullptr, nullptr},
+                        want_pdf ? pd : nullptr, status_out);
+            };
+            // Without the status array first (writing it halves the loop's speed); a chunk
+            // with an error runs again with it, for the statuses (the outputs are the same).
+            int st = call(nullptr);
+            std::fill(sp + base, sp + base + m, st < 0 ? kUnwritten : 0);
+            if (st < 0) st = call(sp + base);
             if (st < 0 && m > 0 && sp[base] == kUnwritten) {
                 // A whole-call error (nothing written): every element gets it.
                 std::fill(sp + base, sp + base + m, static_cast<signed char>(st));
@@ -517,7 +531,7 @@ py::tuple sample_any(const Material *M, const Columns *C, int normalization, uns
         T *ox = buf.data(), *oy = ox + kChunk, *oz = oy + kChunk, *u0 = oz + kChunk, *u1 = u0 + kChunk,
           *u2 = u1 + kChunk, *wx = u2 + kChunk, *wy = wx + kChunk, *wz = wy + kChunk, *pd = wz + kChunk,
           *gr = pd + kChunk, *gg = gr + kChunk, *gb = gg + kChunk;
-        std::vector<float> mbuf(std::is_same_v<T, float> && C ? 6 * kChunk : 0);
+        std::vector<T> mbuf(C ? 6 * kChunk : 0);
         std::vector<signed char> chunk_status(C ? 0 : kChunk);
         for (size_t base = 0; base < n; base += kChunk) {
             if (sig.stop(base)) break;
@@ -526,48 +540,44 @@ py::tuple sample_any(const Material *M, const Columns *C, int normalization, uns
             deinterleave_any(m, uu + 3 * base, u0, u1, u2);
             const T *uc[3] = {u0, u1, u2};
             signed char *cs = C ? sp + base : chunk_status.data();
-            std::fill(cs, cs + m, kUnwritten);
-            int st;
-            if constexpr (std::is_same_v<T, float>) {
-                const pgloss_vec3_array a{ox, oy, oz};
-                const pgloss_vec3_out wo_{wx, wy, wz};
-                const pgloss_rgb_out go{gr, gg, gb};
-                if (C) {
-                    std::array<const float *, 6> mc{};
-                    for (size_t k = 0; k < 6; ++k) {
-                        float *dst = mbuf.data() + k * kChunk;
-                        const double *src = C->p[k] + base;
-                        for (size_t j = 0; j < m; ++j) dst[j] = to_float(src[j]);
-                        mc[k] = dst;
-                    }
-                    st = pgloss_py_sample_batch_materials(mc.data(), normalization, lobes, m, a, uc, wo_, pd, go,
-                                                          lp + base, cs);
-                } else {
-                    st = pgloss_sample_batch(&M->m, lobes, m, a, u0, u1, u2, wo_, pd, go, lp + base);
-                    if (st < 0) {  // which element? the scalar function, on the error path only
-                        std::fill(cs, cs + m, 0);
+            std::array<const T *, 6> mc{};
+            if (C) mc = material_chunk<T>(*C, base, m, mbuf.data());
+            // As eval_materials: without the status array first, again with it on an error.
+            auto call = [&](signed char *status_out) -> int {
+                if constexpr (std::is_same_v<T, float>) {
+                    const pgloss_vec3_array a{ox, oy, oz};
+                    const pgloss_vec3_out wo_{wx, wy, wz};
+                    const pgloss_rgb_out go{gr, gg, gb};
+                    if (C)
+                        return pgloss_py_sample_batch_materials(mc.data(), normalization, lobes, m, a, uc, wo_, pd, go,
+                                                                lp + base, status_out);
+                    const int r = pgloss_sample_batch(&M->m, lobes, m, a, u0, u1, u2, wo_, pd, go, lp + base);
+                    if (r < 0 && status_out) {  // which element? the scalar function, on the error path only
+                        std::fill(status_out, status_out + m, 0);
                         for (size_t j = 0; j < m; ++j) {
-                            pgloss_sample_record r;
+                            pgloss_sample_record rec;
                             const float uj[3] = {u0[j], u1[j], u2[j]};
-                            cs[j] = static_cast<signed char>(
-                                pgloss_sample(&M->m, pgloss_vec3{ox[j], oy[j], oz[j]}, uj, lobes, &r));
-                            if (cs[j] < 0) break;
+                            status_out[j] = static_cast<signed char>(
+                                pgloss_sample(&M->m, pgloss_vec3{ox[j], oy[j], oz[j]}, uj, lobes, &rec));
+                            if (status_out[j] < 0) break;
                         }
                     }
-                }
-            } else {
-                const pgloss_vec3_array_d a{ox, oy, oz};
-                const pgloss_vec3_out_d wo_{wx, wy, wz};
-                const pgloss_rgb_out_d go{gr, gg, gb};
-                if (C) {
-                    std::array<const double *, 6> mc{};
-                    for (size_t k = 0; k < 6; ++k) mc[k] = C->p[k] + base;
-                    st = pgloss_py_sample_batch_materials_d(mc.data(), normalization, lobes, m, a, uc, wo_, pd, go,
-                                                            lp + base, cs);
+                    return r;
                 } else {
-                    st = pgloss_sample_batch_d_ex(nullptr, &M->m, lobes, m, a, u0, u1, u2, wo_, pd, go, lp + base, cs);
+                    const pgloss_vec3_array_d a{ox, oy, oz};
+                    const pgloss_vec3_out_d wo_{wx, wy, wz};
+                    const pgloss_rgb_out_d go{gr, gg, gb};
+                    if (C)
+                        return pgloss_py_sample_batch_materials_d(mc.data(), normalization, lobes, m, a, uc, wo_, pd,
+                                                                  go, lp + base, status_out);
+                    if (!status_out) return pgloss_sample_batch_d(&M->m, lobes, m, a, u0, u1, u2, wo_, pd, go, lp + base);
+                    return pgloss_sample_batch_d_ex(nullptr, &M->m, lobes, m, a, u0, u1, u2, wo_, pd, go, lp + base,
+                                                    status_out);
                 }
-            }
+            };
+            int st = call(nullptr);
+            std::fill(cs, cs + m, st < 0 ? kUnwritten : 0);
+            if (st < 0) st = call(cs);
             if (st < 0 && m > 0 && cs[0] == kUnwritten) {
                 std::fill(cs, cs + m, static_cast<signed char>(st));  // a whole-call error: nothing was written
                 std::fill(wx, wx + m, T(0));
@@ -732,6 +742,16 @@ PYBIND11_MODULE(_core, mod) {
                                        py::object d) {
         const Columns C = columns_of({r, g, b, rs, ax, ay}, rows_of(wo, "wo"));
         return sample_any<double>(nullptr, &C, norm, lobes, wo, u, a, bb, c, d);
+    });
+    // One pgloss_eval_pdf call (the scalar reference: float directions, double inside, float
+    // results), as the C tool calls it: python -m pgloss eval / demo print exactly its numbers.
+    mod.def("eval_pdf_reference", [](const Material &M, unsigned lobes, std::array<float, 3> wo,
+                                     std::array<float, 3> wi) {
+        pgloss_rgb f{0, 0, 0};
+        float pdf = 0;
+        const int st = pgloss_eval_pdf(&M.m, pgloss_vec3{wo[0], wo[1], wo[2]}, pgloss_vec3{wi[0], wi[1], wi[2]}, lobes,
+                                       &f, &pdf);
+        return py::make_tuple(py::make_tuple(f.r, f.g, f.b), pdf, st);
     });
     mod.def("time_eval_batch", &time_eval_batch,
             "Seconds per repetition of pgloss_eval_batch on (3, n) float32 SoA buffers (benchmark helper).");
