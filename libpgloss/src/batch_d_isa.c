@@ -42,6 +42,11 @@ PGLOSS__D_FN double unit_d(double *x, double *y, double *z)
     return l2 > 0.0 ? l2 : 0.0;
 }
 
+PGLOSS__D_FN double clamp_max(double v)
+{
+    return v < (double)FLT_MAX ? v : (double)FLT_MAX;
+}
+
 /* pgloss_material_init's checks on a double parameter set (|v| > FLT_MAX counts as
  * non-finite, NaN fails every comparison): 1 if valid, else 0, as a double (unit_d). */
 PGLOSS__D_FN double material_valid_d(double r, double g, double b, double s, double ax, double ay)
@@ -122,13 +127,14 @@ PGLOSS__D_FN size_t eval_d_loop(const pgloss__consts_d *k, const pgloss_physical
         const int ok = (v < mat_ok ? v : mat_ok) > 0.0;
         double f[3], p;
         pgloss__lobe_d(&kj, active, norm, ox, oy, oz, ix, iy, iz, want_f, want_p, f, &p);
+        /* outputs at most FLT_MAX, as in every precision (brdf.h) */
         if (want_f) {
-            fr[j] = ok ? f[0] : 0.0;
-            fg[j] = ok ? f[1] : 0.0;
-            fb[j] = ok ? f[2] : 0.0;
+            fr[j] = ok ? clamp_max(f[0]) : 0.0;
+            fg[j] = ok ? clamp_max(f[1]) : 0.0;
+            fb[j] = ok ? clamp_max(f[2]) : 0.0;
         }
         if (want_p)
-            pdf[j] = ok ? p : 0.0;
+            pdf[j] = ok ? clamp_max(p) : 0.0;
         bad += !ok;
     }
     return bad;
@@ -180,7 +186,7 @@ size_t EVAL_PDF_D_FN(const pgloss__consts_d *k, const pgloss_physical_array *pa,
 
 /* ---- sampling: pgloss_sample in double, element by element ------------------------------ */
 
-#define ONE_MINUS_EPS_D 0x1.fffffffffffffp-1 /* 1 - 2^-53 */
+#define ONE_MINUS_EPS_D 0x1.fffffep-1 /* 1 - 2^-24, as the float paths (brdf.h) */
 
 PGLOSS__D_FN double clamp_u_d(double u)
 {
@@ -233,10 +239,10 @@ void SAMPLE_D_FN(const pgloss__consts_d *k, const pgloss_physical_array *pa, uns
         wi.x[j] = w[0];
         wi.y[j] = w[1];
         wi.z[j] = w[2];
-        pdf[j] = p;
-        weight.r[j] = f[0];
-        weight.g[j] = f[1];
-        weight.b[j] = f[2];
+        pdf[j] = clamp_max(p);
+        weight.r[j] = clamp_max(f[0]);
+        weight.g[j] = clamp_max(f[1]);
+        weight.b[j] = clamp_max(f[2]);
         if (lobe)
             lobe[j] = (unsigned char)chosen;
     }
