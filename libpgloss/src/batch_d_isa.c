@@ -42,6 +42,11 @@ PGLOSS__D_FN double unit_d(double *x, double *y, double *z)
     return l2 > 0.0 ? l2 : 0.0;
 }
 
+PGLOSS__D_FN double clamp_max(double v)
+{
+    return v < (double)FLT_MAX ? v : (double)FLT_MAX;
+}
+
 /* pgloss_material_init's checks on a double parameter set (|v| > FLT_MAX counts as
  * non-finite, NaN fails every comparison): 1 if valid, else 0, as a double (unit_d). */
 PGLOSS__D_FN double material_valid_d(double r, double g, double b, double s, double ax, double ay)
@@ -101,35 +106,72 @@ PGLOSS__D_FN mat_ptrs mat_ptrs_of(const pgloss_physical_array *pa)
     return m;
 }
 
-PGLOSS__D_FN size_t eval_d_loop(const pgloss__consts_d *k, const pgloss_physical_array *pa,
-                                const int per_element, const unsigned active, const int norm,
-                                const int want_f, const int want_p, size_t n,
-                                const double *restrict oxs, const double *restrict oys,
-                                const double *restrict ozs, const double *restrict ixs,
-                                const double *restrict iys, const double *restrict izs,
-                                double *restrict fr, double *restrict fg, double *restrict fb,
-                                double *restrict pdf)
+/* One chunk, on stack copies of its inputs and outputs: with every array local, the loop
+ * holds no possible alias for the compiler to check at run time (its versioned loops took the
+ * scalar path otherwise). */
+#define CHUNK_D 256
+
+PGLOSS__D_FN size_t eval_d_chunk(const pgloss__consts_d *kc, const mat_ptrs *mp,
+                                 const int per_element, const unsigned active, const int norm,
+                                 const int want_f, const int want_p, size_t m, size_t base,
+                                 const double *restrict oxs, const double *restrict oys,
+                                 const double *restrict ozs, const double *restrict ixs,
+                                 const double *restrict iys, const double *restrict izs,
+                                 double *restrict fr, double *restrict fg, double *restrict fb,
+                                 double *restrict pdf)
 {
-    const pgloss__consts_d kc = per_element ? pgloss__consts_d_of(0, 0, 0, 0, 1, 1, 0, 0) : *k;
-    const mat_ptrs mp = mat_ptrs_of(pa);
     size_t bad = 0;
-    for (size_t j = 0; j < n; ++j) {
+    for (size_t j = 0; j < m; ++j) {
         double ox = oxs[j], oy = oys[j], oz = ozs[j], ix = ixs[j], iy = iys[j], iz = izs[j];
         double mat_ok;
-        const pgloss__consts_d kj = consts_at_d(&kc, &mp, per_element, active, norm, j, &mat_ok);
+        const pgloss__consts_d kj =
+            consts_at_d(kc, mp, per_element, active, norm, base + j, &mat_ok);
         const double vo = unit_d(&ox, &oy, &oz), vi = unit_d(&ix, &iy, &iz);
         const double v = vo < vi ? vo : vi;
         const int ok = (v < mat_ok ? v : mat_ok) > 0.0;
         double f[3], p;
         pgloss__lobe_d(&kj, active, norm, ox, oy, oz, ix, iy, iz, want_f, want_p, f, &p);
+        /* outputs at most FLT_MAX, as in every precision (brdf.h) */
         if (want_f) {
-            fr[j] = ok ? f[0] : 0.0;
-            fg[j] = ok ? f[1] : 0.0;
-            fb[j] = ok ? f[2] : 0.0;
+            fr[j] = ok ? clamp_max(f[0]) : 0.0;
+            fg[j] = ok ? clamp_max(f[1]) : 0.0;
+            fb[j] = ok ? clamp_max(f[2]) : 0.0;
         }
         if (want_p)
-            pdf[j] = ok ? p : 0.0;
+            pdf[j] = ok ? clamp_max(p) : 0.0;
         bad += !ok;
+    }
+    return bad;
+}
+
+PGLOSS__D_FN size_t eval_d_loop(const pgloss__consts_d *k, const pgloss_physical_array *pa,
+                                const int per_element, const unsigned active, const int norm,
+                                const int want_f, const int want_p, size_t n,
+                                const double *oxs, const double *oys, const double *ozs,
+                                const double *ixs, const double *iys, const double *izs,
+                                double *fr, double *fg, double *fb, double *pdf)
+{
+    const pgloss__consts_d kc = per_element ? pgloss__consts_d_of(0, 0, 0, 0, 1, 1, 0, 0) : *k;
+    const mat_ptrs mp = mat_ptrs_of(pa);
+    double in[6][CHUNK_D], out[4][CHUNK_D];
+    size_t bad = 0;
+    for (size_t base = 0; base < n; base += CHUNK_D) {
+        const size_t m = n - base < CHUNK_D ? n - base : CHUNK_D;
+        memcpy(in[0], oxs + base, m * sizeof(double));
+        memcpy(in[1], oys + base, m * sizeof(double));
+        memcpy(in[2], ozs + base, m * sizeof(double));
+        memcpy(in[3], ixs + base, m * sizeof(double));
+        memcpy(in[4], iys + base, m * sizeof(double));
+        memcpy(in[5], izs + base, m * sizeof(double));
+        bad += eval_d_chunk(&kc, &mp, per_element, active, norm, want_f, want_p, m, base, in[0],
+                            in[1], in[2], in[3], in[4], in[5], out[0], out[1], out[2], out[3]);
+        if (want_f) {
+            memcpy(fr + base, out[0], m * sizeof(double));
+            memcpy(fg + base, out[1], m * sizeof(double));
+            memcpy(fb + base, out[2], m * sizeof(double));
+        }
+        if (want_p)
+            memcpy(pdf + base, out[3], m * sizeof(double));
     }
     return bad;
 }
@@ -180,7 +222,7 @@ size_t EVAL_PDF_D_FN(const pgloss__consts_d *k, const pgloss_physical_array *pa,
 
 /* ---- sampling: pgloss_sample in double, element by element ------------------------------ */
 
-#define ONE_MINUS_EPS_D 0x1.fffffffffffffp-1 /* 1 - 2^-53 */
+#define ONE_MINUS_EPS_D 0x1.fffffep-1 /* 1 - 2^-24, as the float paths (brdf.h) */
 
 PGLOSS__D_FN double clamp_u_d(double u)
 {
@@ -233,10 +275,10 @@ void SAMPLE_D_FN(const pgloss__consts_d *k, const pgloss_physical_array *pa, uns
         wi.x[j] = w[0];
         wi.y[j] = w[1];
         wi.z[j] = w[2];
-        pdf[j] = p;
-        weight.r[j] = f[0];
-        weight.g[j] = f[1];
-        weight.b[j] = f[2];
+        pdf[j] = clamp_max(p);
+        weight.r[j] = clamp_max(f[0]);
+        weight.g[j] = clamp_max(f[1]);
+        weight.b[j] = clamp_max(f[2]);
         if (lobe)
             lobe[j] = (unsigned char)chosen;
     }

@@ -38,20 +38,21 @@
  * x = n ln2 + r (Cody–Waite: ln2_hi has 32 significant bits, so n ln2_hi is exact for
  * |n| <= 1022), |r| <= ln2/2, e^r by its degree-12 Taylor polynomial in Estrin's scheme
  * (truncation < 0.347^13/13! < 3e-16), times 2^n built in the exponent bits (the rounding
- * trick leaves n in the low bits of x/ln2 + 1.5·2^52). Within 2 ulp. Below x = -708 (where
- * 2^n would leave the normal range) x is raised to -708, so the result is exp(-708) = 3.3e-308
- * instead of a smaller number: no output can tell, since e enters them multiplied by at most
- * spec_scale·norm < FLT_MAX·2.5e35 (f) or 2 pdf_scale·(h·h)/hzc³ < 1e34 (pdf), so the
- * specular term stays below 1e-233, which leaves any nonzero diffuse term (>= 1e-168)
- * unchanged in double (and is 0 in float). A NaN x (only where the caller discards the
- * result) gives a finite value. */
+ * trick leaves n in the low bits of x/ln2 + 1.5·2^52). Within 2 ulp on the normal range.
+ * Below x = -700 the result is exp(x + 1021 ln2) · 2^-1021, so that it goes on into the
+ * subnormals (relative error there ~1e-13 from rounding the shift, then the subnormal's
+ * rounding): the double batches return such values, and e is multiplied by up to ~1e35.
+ * Below x = -1416 the result is 0. A NaN x (only where the caller discards the result)
+ * gives a finite value. */
 PGLOSS__D_FN double pgloss__exp_neg_d(double x)
 {
-    x = PGLOSS__D_MAX(x, -708.0);
+    const int low = x < -700.0;
+    double y = low ? x + 707.70327135170422 : x; /* + 1021 ln2 */
+    y = PGLOSS__D_MAX(y, -708.0);
     const double shift = 0x1.8p52; /* (v + shift) - shift = round(v) */
-    const double nd = x * 0x1.71547652b82fep0 + shift;
+    const double nd = y * 0x1.71547652b82fep0 + shift;
     const double n = nd - shift;
-    const double r = (x - n * 0x1.62e42feep-1) - n * 0x1.a39ef35793c76p-33;
+    const double r = (y - n * 0x1.62e42feep-1) - n * 0x1.a39ef35793c76p-33;
     uint64_t nbits, sbits_shift;
     memcpy(&nbits, &nd, sizeof nbits);
     memcpy(&sbits_shift, &shift, sizeof sbits_shift);
@@ -65,7 +66,7 @@ PGLOSS__D_FN double pgloss__exp_neg_d(double x)
     const double pab = 1.0 / 3628800.0 + r * (1.0 / 39916800.0);
     const double p = ((p01 + r2 * p23) + r4 * (p45 + r2 * p67)) +
                      r8 * ((p89 + r2 * pab) + r4 * (1.0 / 479001600.0));
-    return p * scale;
+    return (p * scale) * (low ? 0x1p-1021 : 1.0);
 }
 
 /* What the double lobe takes from a material for the active lobes. */

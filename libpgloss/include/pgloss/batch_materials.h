@@ -31,7 +31,9 @@
  * precision is validated but the double lobe is already the reference formula: the per-point
  * code of the scalar pgloss_eval_pdf, shared with brdf.c). f and pdf agree with the scalar
  * double reference within 1e-12 relative times the conditioning of exp (the shared vectors'
- * double tolerance); samples within the same bound, wi within 1e-12 absolute.
+ * double tolerance); samples within the same bound, wi within 1e-12 absolute. Outputs are
+ * clamped to at most FLT_MAX as in every precision (brdf.h), and tails of the lobe go on into
+ * the subnormals rather than stopping at float's range.
  *
  * Arrays may be any alignment. Input and output arrays must not overlap.
  */
@@ -110,7 +112,8 @@ PGLOSS_API pgloss_status pgloss_sample_batch_materials_ex(
 
 /* ---- double, one material for the batch ------------------------------------------------ */
 /* m's parameters (floats) are widened exactly; its derived constants are recomputed in
- * double. Random numbers are clamped to [0, 1 - 2^-53] (NaN: PGLOSS_ERR_RANDOM). */
+ * double. Random numbers are clamped to [0, 1 - 2^-24] as in pgloss_sample (NaN:
+ * PGLOSS_ERR_RANDOM), so that every precision draws the same directions. */
 
 PGLOSS_API pgloss_status pgloss_eval_batch_d(const pgloss_material *m, unsigned lobes, size_t n,
                                              pgloss_vec3_array_d wo, pgloss_vec3_array_d wi,

@@ -5,19 +5,20 @@
  * and pgloss/color.h over SoA double arrays (a texture of paints), with a status per element.
  *
  * Element j gets exactly what the scalar function returns for element j: the same status and
- * the same outputs, bit for bit (both run the same inline per-element code, libpgloss/src/
- * perceptual_inline.h; the loops hold no call and vectorise), so the scalar functions' error
- * against the shared vectors (relative 1e-12, tests/vectors) is theirs too. That includes the
- * documented outputs of a failed element: 0, except the exact values of a GAMUT element
- * (rgb_from_lab, physical_from_perceptual) and the matched values of an ENVELOPE element
- * (match_gloss).
+ * the same outputs, bit for bit (each loop runs the scalar function's code on the element), so
+ * the scalar functions' error against the shared vectors (relative 1e-12, tests/vectors) is
+ * theirs too. That includes the documented outputs of a failed element: 0, except the exact
+ * values of a GAMUT element (rgb_from_lab, physical_from_perceptual) and the matched values of
+ * an ENVELOPE element (match_gloss). Timings: bench/bench_texture.c.
  *
  * status (may be NULL): n signed chars, element j's pgloss_status.
  * Returned status: the first error (< 0) in index order if any element has one, else the
  * first warning (PGLOSS_WARN_ALPHA_UNTRUSTED) if any, else PGLOSS_OK. So a return >= 0 means
- * every output is usable. With n > 0, a required array that is NULL is PGLOSS_ERR_NULL and an
- * unknown colour space or normalization is PGLOSS_ERR_ARGUMENT / PGLOSS_ERR_NORMALIZATION
- * as in the scalar functions, but for the whole call: nothing is written. n == 0 is OK.
+ * every output is usable. Errors of the whole call (nothing is written, status included): with
+ * n > 0 a required array that is NULL (PGLOSS_ERR_NULL), an unknown colour space
+ * (PGLOSS_ERR_ARGUMENT), and physical_from_perceptual's unknown normalization
+ * (PGLOSS_ERR_NORMALIZATION). check_physical takes the normalization per element, in the
+ * scalar function's order. n == 0 is OK.
  *
  * Input and output arrays must not overlap, except that an output may be the very same array
  * as an input (in place, element by element).
