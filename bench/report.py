@@ -73,7 +73,7 @@ def main() -> int:
     d, dst = Path(sys.argv[1]), Path(sys.argv[2])
     core = (d / "core.md").read_text()
     peers = (d / "peers.md").read_text() if (d / "peers.md").exists() else "(peers not run)\n"
-    textures = (d / "textures.md").read_text() if (d / "textures.md").exists() else "(bench_textures not run)\n"
+    textures = (d / "python_textures.md").read_text() if (d / "python_textures.md").exists() else "(bench_textures.py not run)\n"
     inline = "".join((d / f"inline_{v}.md").read_text() + "\n" for v in ("v3", "plain", "mca")
                      if (d / f"inline_{v}.md").exists()) or "(bench_inline not run)\n"
     plot = pareto(d)

@@ -36,7 +36,7 @@ fi
 n=$((1 << 20)); [[ ${#quick[@]} -gt 0 ]] && n=$((1 << 16))
 "$py" bench/peers.py --n "$n" --csv out/bench/peers.csv | tee out/bench/peers.md
 side=4096; [[ ${#quick[@]} -gt 0 ]] && side=512
-"$py" bindings/python/bench/bench_textures.py --size "$side" --csv out/bench/textures.csv | tee out/bench/textures.md
+"$py" bindings/python/bench/bench_textures.py --size "$side" --csv out/bench/python_textures.csv | tee out/bench/python_textures.md
 
 echo "== BENCHMARKS.md"
 MPLBACKEND=Agg MPLCONFIGDIR="$PWD/out/bench/mpl" "$py" bench/report.py out/bench BENCHMARKS.md
