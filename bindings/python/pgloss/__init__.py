@@ -1149,8 +1149,9 @@ def eval(material: Union[Physical, Material, Sequence[Physical]], wo: ArrayLike,
     -------
     numpy.ndarray, shape (..., 3)
         f per channel: ``float32`` for float32 directions (the vectorised float batch),
-        ``float64`` otherwise (the vectorised double batch, double-reference accuracy).
-        0 when either direction is at or below the horizon.
+        ``float64`` otherwise (the vectorised double batch, double-reference accuracy). The
+        material's parameters are float in both (``pgloss_material``; an array of paints is
+        rounded element by element). 0 when either direction is at or below the horizon.
 
     Raises
     ------
