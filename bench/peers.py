@@ -9,7 +9,7 @@ to the straightforward numpy implementation measured in the same run (timings on
 machine drift; ratios within one run do not).
 
 Rows: numpy float64 and float32 transcriptions of eq. 2; pgloss.eval through the Python
-binding (float32: the vectorised C batch; float64: the scalar double path) and the C batch
+binding (float32: the vectorised C batch; float64: the vectorised double batch) and the C batch
 it calls; Mitsuba 3 (llvm_ad_rgb) evaluating its closest built-in BSDF, `roughplastic`
 with a Beckmann distribution (a different model: time only); and, informational, the GLSL
 port on Mesa llvmpipe (time per evaluation of a compute dispatch).
@@ -163,7 +163,7 @@ def main(argv=None) -> int:
     rows.append(("pgloss.eval, float32 arrays (C float batch)", t, *errors(pgloss.eval(mat, wo, wi)[:, 0], want, x)))
     wo64, wi64 = wo.astype(np.float64), wi.astype(np.float64)
     t = timed(lambda: pgloss.eval(mat, wo64, wi64), max(3, a.repeat // 2)) / n * 1e9
-    rows.append(("pgloss.eval, float64 arrays (C scalar double)", t, *errors(pgloss.eval(mat, wo64, wi64)[:, 0], want, x)))
+    rows.append(("pgloss.eval, float64 arrays (C double batch)", t, *errors(pgloss.eval(mat, wo64, wi64)[:, 0], want, x)))
     if hasattr(_core, "time_eval_batch"):
         wo_soa, wi_soa = np.ascontiguousarray(wo.T), np.ascontiguousarray(wi.T)
         ts = list(_core.time_eval_batch(mat, int(pgloss.Lobe.ALL), wo_soa, wi_soa, a.repeat))
@@ -194,8 +194,8 @@ def main(argv=None) -> int:
         except Exception as e:  # noqa: BLE001
             rows.append((f"GLSL: unavailable ({type(e).__name__}: {e})", float("nan"), float("nan"), float("nan")))
 
-    # The perceptual conversions, batched: pgloss's array functions (a C loop over the double
-    # scalar functions, GIL released) against numpy transcriptions of eqs. 4 and 6–7.
+    # The perceptual conversions, batched: pgloss's array functions (the batched C functions of
+    # pgloss/perceptual_batch.h, GIL released) against numpy transcriptions of eqs. 4 and 6–7.
     prng = np.random.default_rng(7)
     rd = 0.001 + 0.8 * prng.random(n)
     rs = 1e-4 + 0.15 * prng.random(n) * (1 - rd)

@@ -76,6 +76,7 @@ def main() -> int:
     d, dst = Path(sys.argv[1]), Path(sys.argv[2])
     core = (d / "core.md").read_text()
     peers = (d / "peers.md").read_text() if (d / "peers.md").exists() else "(peers not run)\n"
+    textures = (d / "python_textures.md").read_text() if (d / "python_textures.md").exists() else "(bench_textures.py not run)\n"
     inline = "".join((d / f"inline_{v}.md").read_text() + "\n" for v in ("v3", "plain", "mca")
                      if (d / f"inline_{v}.md").exists()) or "(bench_inline not run)\n"
     plot = pareto(d)
@@ -166,7 +167,14 @@ with `bash bench/run.sh`; the critical path in cycles: `bash bench/mca.sh --inli
 {inline}
 ## Peers (`bench/peers.py`)
 
-{peers}"""
+{peers}
+## Whole textures from Python (`bindings/python/bench/bench_textures.py`)
+
+Arrays of paints through the Python package against numpy's bare formulas in the same run
+(issue 18): the batched conversions with a status per texel, one material per direction pair,
+float64 against float32.
+
+{textures}"""
     # The tracer's comparison with Mitsuba takes minutes and has its own program
     # (examples/tracer/bench/run.sh): its section is carried over as it stands.
     if dst.exists():

@@ -15,9 +15,12 @@ mkdir -p out/bench
 
 echo "== build (Release, default flags)"
 cmake --preset bench >/dev/null
-cmake --build --preset bench --target pgloss_bench_core pgloss_bench_inline_v3 pgloss_bench_inline_plain >/dev/null
+cmake --build --preset bench --target pgloss_bench_core pgloss_bench_inline_v3 pgloss_bench_inline_plain \
+  pgloss_bench_texture >/dev/null
 echo "== bench_core"
 ./build-bench/bench/pgloss_bench_core "${quick[@]}" --csv out/bench/core.csv | tee out/bench/core.md
+echo "== bench_texture"
+./build-bench/bench/pgloss_bench_texture "${quick[@]}" | tee out/bench/texture.md
 echo "== bench_inline (-O2 -march=x86-64-v3, then -O2)"
 ./build-bench/bench/pgloss_bench_inline_v3 "${quick[@]}" | tee out/bench/inline_v3.md
 ./build-bench/bench/pgloss_bench_inline_plain "${quick[@]}" | tee out/bench/inline_plain.md
@@ -32,6 +35,8 @@ if [[ "$(cat .venv-py/.pgloss-bench-pins 2>/dev/null)" != "${peer_pins[*]}" ]]; 
 fi
 n=$((1 << 20)); [[ ${#quick[@]} -gt 0 ]] && n=$((1 << 16))
 "$py" bench/peers.py --n "$n" --csv out/bench/peers.csv | tee out/bench/peers.md
+side=4096; [[ ${#quick[@]} -gt 0 ]] && side=512
+"$py" bindings/python/bench/bench_textures.py --size "$side" --csv out/bench/python_textures.csv | tee out/bench/python_textures.md
 
 echo "== BENCHMARKS.md"
 MPLBACKEND=Agg MPLCONFIGDIR="$PWD/out/bench/mpl" "$py" bench/report.py out/bench BENCHMARKS.md

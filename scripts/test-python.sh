@@ -5,6 +5,10 @@
 # repository root into the venv .venv-py, then pytest tests/python — the shared vectors,
 # the binding's behaviour, the figures command, a smoke run of the benchmark and pgloss.psychophysics
 # (scipy: its runtime dependency; scikit-learn: the peer of its tests only; colour-science: the peer of the working-colour-space tests only).
+# Also (issue 18): the C tool `pgloss` (build-py/cli), the reference of `python -m pgloss`'s
+# subcommands in tests/python/test_cli.py; and the distributions (scripts/check-python-dist.sh:
+# the wheel, `auditwheel show` (manylinux), the sdist and a wheel built from it), whose metadata
+# tests/python/test_package_metadata.py reads.
 # Nothing is skipped: with PGLOSS_REQUIRE_ALL=1 (the default here, and what CI sets) a skipped
 # test is a failure. Quick when run again: the venv is kept while the pins are unchanged, the
 # package is reinstalled only when its sources changed, and CMake's build folder
@@ -12,7 +16,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PGLOSS_REQUIRE_ALL="${PGLOSS_REQUIRE_ALL:-1}"
-bash scripts/bootstrap.sh apt g++ python3 python3-venv python3-dev
+bash scripts/bootstrap.sh apt g++ cmake python3 python3-venv python3-dev
 
 root=$PWD
 venv=.venv-py
@@ -38,6 +42,15 @@ fi
 
 # bench/run.sh needs the installed package only.
 [[ ${PGLOSS_PY_SETUP_ONLY:-0} == 1 ]] && exit 0
+
+echo "== the C tool (build-py/cli), the reference of python -m pgloss's subcommands"
+cmake -S . -B build-py/cli -DCMAKE_BUILD_TYPE=Release -DPGLOSS_BUILD_PYTHON=OFF -DPGLOSS_BUILD_TESTS=OFF \
+  -DPGLOSS_INSTALL=OFF >/dev/null
+cmake --build build-py/cli --target pgloss_cli -j2 >/dev/null
+export PGLOSS_CLI="$PWD/build-py/cli/tools/pgloss"
+
+bash scripts/check-python-dist.sh
+export PGLOSS_WHEEL="$(ls "$PWD"/build-py/dist/pgloss-*.whl)"
 
 echo "== pytest tests/python"
 export MPLBACKEND=Agg MPLCONFIGDIR="$PWD/build-py/mplconfig"

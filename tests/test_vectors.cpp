@@ -1056,4 +1056,507 @@ TEST(Vectors, sample_batch) {
     EXPECT_GT(groups, 0);
 }
 
+
+// ------------------------------------------------------------------------------------------
+// Per-element materials and the double path (pgloss/batch_materials.h): every non-NULL case of
+// brdf_eval.json / brdf_sample.json grouped by lobes only, so that one call holds many
+// materials; float entry points at the file's float tolerance, the double ones at its double
+// tolerance (relative 1e-12, the header's bound).
+
+Tol tolerance_at(const json &doc, const std::string &fn, const std::string &out, const char *prec) {
+    const json &t = doc["tolerance"].at(fn).at(out).at(prec);
+    Tol r;
+    r.rel = t.at("rel").get<double>();
+    r.kappa_rel = t.at("kappa_rel").get<double>();
+    r.abs = t.at("abs").get<double>();
+    return r;
+}
+
+std::map<unsigned, std::vector<const json *>> lobe_groups_of(const json &doc) {
+    std::map<unsigned, std::vector<const json *>> g;
+    for (const auto &c : doc["cases"]) {
+        if (c["input"].contains("null")) continue;
+        g[c["input"]["lobes"].get<unsigned>()].push_back(&c);
+    }
+    return g;
+}
+
+// SoA material arrays (float and double) of the cases' materials, misaligned by one element.
+struct MatArrays {
+    std::vector<float> f[6];
+    std::vector<double> d[6];
+    int norm = 0;
+    bool one_norm = true;
+    MatArrays(const json &doc, const std::vector<const json *> &cs) {
+        for (auto &v : f) v.push_back(0);
+        for (auto &v : d) v.push_back(0);
+        bool first = true;
+        for (const json *c : cs) {
+            const pgloss_physical p = physical_from(doc["materials"].at((*c)["input"]["material"].get<std::string>()));
+            const double v[6] = {p.rho_d[0], p.rho_d[1], p.rho_d[2], p.rho_s, p.alpha_x, p.alpha_y};
+            for (int k = 0; k < 6; ++k) {
+                f[k].push_back(static_cast<float>(v[k]));
+                d[k].push_back(v[k]);
+            }
+            if (first) norm = static_cast<int>(p.normalization);
+            one_norm = one_norm && static_cast<int>(p.normalization) == norm;
+            first = false;
+        }
+    }
+    pgloss_material_array fa(int nm) const {
+        return pgloss_material_array{f[0].data() + 1, f[1].data() + 1, f[2].data() + 1, f[3].data() + 1,
+                                     f[4].data() + 1, f[5].data() + 1, static_cast<pgloss_normalization>(nm)};
+    }
+    pgloss_physical_array da(int nm) const {
+        return pgloss_physical_array{d[0].data() + 1, d[1].data() + 1, d[2].data() + 1, d[3].data() + 1,
+                                     d[4].data() + 1, d[5].data() + 1, static_cast<pgloss_normalization>(nm)};
+    }
+};
+
+// Cases of one (lobes, normalisation): the arrays hold one normalisation per call.
+std::map<std::pair<unsigned, int>, std::vector<const json *>> lobe_norm_groups_of(const json &doc) {
+    std::map<std::pair<unsigned, int>, std::vector<const json *>> g;
+    for (const auto &kv : lobe_groups_of(doc))
+        for (const json *c : kv.second) {
+            const int nm = doc["materials"].at((*c)["input"]["material"].get<std::string>()).at("normalization").get<int>();
+            g[{kv.first, nm}].push_back(c);
+        }
+    return g;
+}
+
+TEST(Vectors, eval_pdf_batch_materials_and_double) {
+    const json *doc = doc_or_fail("brdf_eval.json");
+    if (!doc) return;
+    int groups = 0;
+    for (const auto &kv : lobe_norm_groups_of(*doc)) {
+        const std::vector<const json *> &cs = kv.second;
+        const size_t n = cs.size();
+        const unsigned lobes = kv.first.first;
+        const MatArrays ma(*doc, cs);
+        SoA ox(n, 0), oy(n, 0), oz(n, 0), ix(n, 0), iy(n, 0), iz(n, 0);
+        std::vector<double> dox(n + 1), doy(n + 1), doz(n + 1), dix(n + 1), diy(n + 1), diz(n + 1);
+        for (size_t k = 0; k < n; ++k) {
+            const pgloss_vec3 wo = vec3((*cs[k])["input"]["wo"]), wi = vec3((*cs[k])["input"]["wi"]);
+            ox.p()[k] = wo.x, oy.p()[k] = wo.y, oz.p()[k] = wo.z;
+            ix.p()[k] = wi.x, iy.p()[k] = wi.y, iz.p()[k] = wi.z;
+            dox[k + 1] = wo.x, doy[k + 1] = wo.y, doz[k + 1] = wo.z;
+            dix[k + 1] = wi.x, diy[k + 1] = wi.y, diz[k + 1] = wi.z;
+        }
+        const pgloss_vec3_array wo{ox.p(), oy.p(), oz.p()}, wi{ix.p(), iy.p(), iz.p()};
+        const pgloss_vec3_array_d dwo{dox.data() + 1, doy.data() + 1, doz.data() + 1},
+            dwi{dix.data() + 1, diy.data() + 1, diz.data() + 1};
+        const std::string want = first_error(cs);
+        // float, per element
+        {
+            SoA fr(n, -1), fg(n, -1), fb(n, -1), pdf(n, -1);
+            std::vector<signed char> st(n, 99);
+            const pgloss_material_array m = ma.fa(kv.first.second);
+            const pgloss_status r = pgloss_eval_pdf_batch_materials_ex(nullptr, &m, lobes, n, wo, wi,
+                                                                       pgloss_rgb_out{fr.p(), fg.p(), fb.p()}, pdf.p(), st.data());
+            EXPECT_EQ(std::string(pgloss_status_name(r)), want) << "eval_pdf_batch_materials lobes " << lobes;
+            for (size_t k = 0; k < n; ++k) {
+                const json &c = *cs[k];
+                check_status("eval_pdf_batch_materials", c, static_cast<pgloss_status>(st[k]));
+                const bool s = sanity_float(*doc, c);
+                const double got[3] = {fr.p()[k], fg.p()[k], fb.p()[k]};
+                for (int j = 0; j < 3; ++j)
+                    check("eval_pdf_batch_materials", "f", c, got[j], c["expected"]["f"][static_cast<size_t>(j)],
+                          sens_at(c, "f", j), tolerance(*doc, "eval_pdf", "f"), s, true);
+                check("eval_pdf_batch_materials", "pdf", c, pdf.p()[k], c["expected"]["pdf"], sens_at(c, "pdf", -1),
+                      tolerance(*doc, "eval_pdf", "pdf"), s, true);
+            }
+        }
+        // double: one material per call (each case's own), and per element
+        for (int per_element = 0; per_element < 2; ++per_element) {
+            const char *fn = per_element ? "eval_pdf_batch_materials_d" : "eval_pdf_batch_d";
+            std::vector<double> fr(n, -1), fg(n, -1), fb(n, -1), pdf(n, -1);
+            std::vector<signed char> st(n, 99);
+            if (per_element) {
+                const pgloss_physical_array m = ma.da(kv.first.second);
+                const pgloss_status r = pgloss_eval_pdf_batch_materials_d_ex(
+                    nullptr, &m, lobes, n, dwo, dwi, pgloss_rgb_out_d{fr.data(), fg.data(), fb.data()}, pdf.data(),
+                    st.data());
+                EXPECT_EQ(std::string(pgloss_status_name(r)), want) << fn << " lobes " << lobes;
+            } else {
+                for (size_t k = 0; k < n; ++k) {
+                    pgloss_material m;
+                    const pgloss_physical p = physical_from((*doc)["materials"].at((*cs[k])["input"]["material"].get<std::string>()));
+                    ASSERT_EQ(pgloss_material_init(&m, &p), PGLOSS_OK);
+                    const pgloss_vec3_array_d o1{dwo.x + k, dwo.y + k, dwo.z + k}, i1{dwi.x + k, dwi.y + k, dwi.z + k};
+                    const pgloss_status r = pgloss_eval_pdf_batch_d_ex(
+                        nullptr, &m, lobes, 1, o1, i1, pgloss_rgb_out_d{&fr[k], &fg[k], &fb[k]}, &pdf[k], &st[k]);
+                    EXPECT_EQ(r, static_cast<pgloss_status>(st[k]));
+                }
+            }
+            for (size_t k = 0; k < n; ++k) {
+                const json &c = *cs[k];
+                check_status(fn, c, static_cast<pgloss_status>(st[k]));
+                const double got[3] = {fr[k], fg[k], fb[k]};
+                for (int j = 0; j < 3; ++j)
+                    check(fn, "f", c, got[j], c["expected"]["f"][static_cast<size_t>(j)], sens_at(c, "f", j),
+                          tolerance_at(*doc, "eval_pdf", "f", "double"), false, true);
+                check(fn, "pdf", c, pdf[k], c["expected"]["pdf"], sens_at(c, "pdf", -1),
+                      tolerance_at(*doc, "eval_pdf", "pdf", "double"), false, true);
+            }
+        }
+        ++groups;
+    }
+    EXPECT_GT(groups, 0);
+}
+
+TEST(Vectors, sample_batch_materials_and_double) {
+    const json *doc = doc_or_fail("brdf_sample.json");
+    if (!doc) return;
+    int groups = 0;
+    for (const auto &kv : lobe_norm_groups_of(*doc)) {
+        const std::vector<const json *> &cs = kv.second;
+        const size_t n = cs.size();
+        const unsigned lobes = kv.first.first;
+        const MatArrays ma(*doc, cs);
+        SoA ox(n, 0), oy(n, 0), oz(n, 0), u0(n, 0), u1(n, 0), u2(n, 0);
+        std::vector<double> d[6];
+        for (auto &v : d) v.assign(n + 1, 0.0);
+        for (size_t k = 0; k < n; ++k) {
+            const json &in = (*cs[k])["input"];
+            const pgloss_vec3 wo = vec3(in["wo"]);
+            ox.p()[k] = wo.x, oy.p()[k] = wo.y, oz.p()[k] = wo.z;
+            u0.p()[k] = numf(in["u"][0]), u1.p()[k] = numf(in["u"][1]), u2.p()[k] = numf(in["u"][2]);
+            d[0][k + 1] = wo.x, d[1][k + 1] = wo.y, d[2][k + 1] = wo.z;
+            d[3][k + 1] = u0.p()[k], d[4][k + 1] = u1.p()[k], d[5][k + 1] = u2.p()[k];
+        }
+        const std::string want = first_error(cs);
+        {
+            SoA wx(n, kNaN), wy(n, kNaN), wz(n, kNaN), pdf(n, -1), gr(n, -1), gg(n, -1), gb(n, -1);
+            std::vector<unsigned char> lobe(n, 77);
+            std::vector<signed char> st(n, 99);
+            const pgloss_material_array m = ma.fa(kv.first.second);
+            const pgloss_status r = pgloss_sample_batch_materials_ex(
+                nullptr, &m, lobes, n, pgloss_vec3_array{ox.p(), oy.p(), oz.p()}, u0.p(), u1.p(), u2.p(),
+                pgloss_vec3_out{wx.p(), wy.p(), wz.p()}, pdf.p(), pgloss_rgb_out{gr.p(), gg.p(), gb.p()}, lobe.data(),
+                st.data());
+            EXPECT_EQ(std::string(pgloss_status_name(r)), want) << "sample_batch_materials lobes " << lobes;
+            for (size_t k = 0; k < n; ++k) {
+                check_status("sample_batch_materials", *cs[k], static_cast<pgloss_status>(st[k]));
+                const double wi[3] = {wx.p()[k], wy.p()[k], wz.p()[k]}, w[3] = {gr.p()[k], gg.p()[k], gb.p()[k]};
+                check_sample(*doc, "sample_batch_materials", *cs[k], wi, pdf.p()[k], w, lobe[k]);
+            }
+        }
+        {
+            std::vector<double> wx(n, kNaN), wy(n, kNaN), wz(n, kNaN), pdf(n, -1), gr(n, -1), gg(n, -1), gb(n, -1);
+            std::vector<unsigned char> lobe(n, 77);
+            std::vector<signed char> st(n, 99);
+            const pgloss_physical_array m = ma.da(kv.first.second);
+            const pgloss_status r = pgloss_sample_batch_materials_d_ex(
+                nullptr, &m, lobes, n, pgloss_vec3_array_d{d[0].data() + 1, d[1].data() + 1, d[2].data() + 1},
+                d[3].data() + 1, d[4].data() + 1, d[5].data() + 1, pgloss_vec3_out_d{wx.data(), wy.data(), wz.data()},
+                pdf.data(), pgloss_rgb_out_d{gr.data(), gg.data(), gb.data()}, lobe.data(), st.data());
+            EXPECT_EQ(std::string(pgloss_status_name(r)), want) << "sample_batch_materials_d lobes " << lobes;
+            for (size_t k = 0; k < n; ++k) {
+                const json &c = *cs[k];
+                check_status("sample_batch_materials_d", c, static_cast<pgloss_status>(st[k]));
+                const json &e = c["expected"];
+                const char *fn = "sample_batch_materials_d";
+                for (int j = 0; j < 3; ++j) {
+                    const size_t jj = static_cast<size_t>(j);
+                    const double wi[3] = {wx[k], wy[k], wz[k]}, w[3] = {gr[k], gg[k], gb[k]};
+                    check(fn, "wi", c, wi[j], e["wi"].is_null() ? json() : e["wi"][jj], sens_at(c, "wi", j),
+                          tolerance_at(*doc, "sample", "wi", "double"));
+                    check(fn, "weight", c, w[j], e["weight"][jj], sens_at(c, "weight", j),
+                          tolerance_at(*doc, "sample", "weight", "double"), false, true);
+                }
+                check(fn, "pdf", c, pdf[k], e["pdf"], sens_at(c, "pdf", -1), tolerance_at(*doc, "sample", "pdf", "double"),
+                      false, true);
+                if (!e["lobe"].is_null()) {
+                    EXPECT_EQ(lobe[k], lobe_value(e["lobe"].get<std::string>())) << case_id(c) << " " << fn << " lobe";
+                }
+            }
+        }
+        ++groups;
+    }
+    EXPECT_GT(groups, 0);
+}
+
+
+// ------------------------------------------------------------------------------------------
+// The batched perceptual and colour functions (pgloss/perceptual_batch.h): all non-NULL cases
+// of a function in one call (per colour space / normalisation where the function takes one,
+// arrays misaligned by one element), each element's status and outputs against the vectors at
+// the scalar functions' tolerance; the returned status is the first error, else the first
+// warning.
+
+std::string batch_summary(const std::vector<const json *> &cs) {
+    std::string warn;
+    for (const json *c : cs) {
+        const std::string st = (*c)["status"].get<std::string>();
+        const pgloss_status v = st == "PGLOSS_OK" ? PGLOSS_OK : st == "PGLOSS_WARN_ALPHA_UNTRUSTED" ? PGLOSS_WARN_ALPHA_UNTRUSTED : PGLOSS_ERR_NULL;
+        if (v == PGLOSS_ERR_NULL) return st;
+        if (v > 0 && warn.empty()) warn = st;
+    }
+    return warn.empty() ? "PGLOSS_OK" : warn;
+}
+
+// Cases of fn in file, without NULL arguments, grouped by key(c).
+template <class K>
+std::map<int, std::vector<const json *>> batch_groups(const json &doc, const char *fn, K key) {
+    std::map<int, std::vector<const json *>> g;
+    for (const auto &c : doc["cases"])
+        if (c.value("function", std::string()) == fn && !c["input"].contains("null") && key(c) >= 0)
+            g[key(c)].push_back(&c);
+    return g;
+}
+
+// n doubles (one element of padding in front).
+struct Col {
+    std::vector<double> v;
+    explicit Col(size_t n, double fill = kNaN) : v(n + 1, fill) {}
+    double *p() { return v.data() + 1; }
+};
+
+template <class Run>
+void batch_cases(const char *file, const char *fn, int (*key)(const json &), Run run) {
+    const json *doc = doc_or_fail(file);
+    if (!doc) return;
+    int groups = 0;
+    for (const auto &kv : batch_groups(*doc, fn, key)) {
+        const auto &cs = kv.second;
+        std::vector<signed char> st(cs.size(), 99);
+        const pgloss_status r = run(*doc, kv.first, cs, st.data());
+        const std::string want = batch_summary(cs);
+        EXPECT_EQ(std::string(pgloss_status_name(r)), want) << fn << "_batch group " << kv.first;
+        for (size_t k = 0; k < cs.size(); ++k)
+            check_status(std::string(fn) + "_batch", *cs[k], static_cast<pgloss_status>(st[k]));
+        ++groups;
+    }
+    EXPECT_GT(groups, 0) << fn;
+}
+
+int no_key(const json &) { return 0; }
+bool known_space(int s) { return s >= 0 && s <= 3; }
+bool known_norm(int n) { return n >= 0 && n <= 2; }
+// Unknown colour spaces and normalisations are errors of the whole call (header): -1 leaves
+// those cases out of the groups; PerceptualBatch.WholeCallErrors covers them.
+int space_key(const json &c) {
+    const int s = c["input"]["space"].get<int>();
+    return known_space(s) ? s : -1;
+}
+int norm_key(const json &c) {
+    const int n = c["input"]["normalization"].get<int>();
+    return known_norm(n) ? n : -1;
+}
+int space_norm_key(const json &c) {
+    const int s = space_key(c), n = norm_key(c);
+    return s < 0 || n < 0 ? -1 : 16 * s + n;
+}
+
+TEST(Vectors, gloss_batches) {
+    batch_cases("gloss.json", "gloss_from_physical", no_key, [](const json &doc, int, const std::vector<const json *> &cs, signed char *st) {
+        const size_t n = cs.size();
+        Col rd(n), rs(n), al(n), L(n), c(n), d(n);
+        for (size_t k = 0; k < n; ++k) {
+            const json &in = (*cs[k])["input"];
+            rd.p()[k] = num(in["rho_d"]), rs.p()[k] = num(in["rho_s"]), al.p()[k] = num(in["alpha"]);
+        }
+        const pgloss_status r = pgloss_gloss_from_physical_batch(n, rd.p(), rs.p(), al.p(), L.p(), c.p(), d.p(), st);
+        for (size_t k = 0; k < n; ++k) {
+            check_d(doc, "gloss_from_physical", "L", *cs[k], L.p()[k]);
+            check_d(doc, "gloss_from_physical", "c", *cs[k], c.p()[k]);
+            check_d(doc, "gloss_from_physical", "d", *cs[k], d.p()[k]);
+        }
+        return r;
+    });
+    batch_cases("gloss.json", "physical_from_gloss", no_key, [](const json &doc, int, const std::vector<const json *> &cs, signed char *st) {
+        const size_t n = cs.size();
+        Col L(n), c(n), d(n), rd(n), rs(n), al(n);
+        for (size_t k = 0; k < n; ++k) {
+            const json &in = (*cs[k])["input"];
+            L.p()[k] = num(in["L"]), c.p()[k] = num(in["c"]), d.p()[k] = num(in["d"]);
+        }
+        const pgloss_status r = pgloss_physical_from_gloss_batch(n, L.p(), c.p(), d.p(), rd.p(), rs.p(), al.p(), st);
+        for (size_t k = 0; k < n; ++k) {
+            check_d(doc, "physical_from_gloss", "rho_d", *cs[k], rd.p()[k]);
+            check_d(doc, "physical_from_gloss", "rho_s", *cs[k], rs.p()[k]);
+            check_d(doc, "physical_from_gloss", "alpha", *cs[k], al.p()[k]);
+        }
+        return r;
+    });
+    batch_cases("gloss.json", "envelope_contrast", no_key, [](const json &doc, int, const std::vector<const json *> &cs, signed char *st) {
+        const size_t n = cs.size();
+        Col L(n), cm(n);
+        for (size_t k = 0; k < n; ++k) L.p()[k] = num((*cs[k])["input"]["L"]);
+        const pgloss_status r = pgloss_envelope_contrast_batch(n, L.p(), cm.p(), st);
+        for (size_t k = 0; k < n; ++k) check_d(doc, "envelope_contrast", "c_max", *cs[k], cm.p()[k]);
+        return r;
+    });
+    batch_cases("gloss.json", "match_gloss", no_key, [](const json &doc, int, const std::vector<const json *> &cs, signed char *st) {
+        const size_t n = cs.size();
+        Col rd(n), rs(n), L(n), od(n), os(n);
+        for (size_t k = 0; k < n; ++k) {
+            const json &in = (*cs[k])["input"];
+            rd.p()[k] = num(in["rho_d"]), rs.p()[k] = num(in["rho_s"]), L.p()[k] = num(in["L_target"]);
+        }
+        const pgloss_status r = pgloss_match_gloss_batch(n, rd.p(), rs.p(), L.p(), od.p(), os.p(), st);
+        for (size_t k = 0; k < n; ++k) {
+            check_d(doc, "match_gloss", "rho_d_out", *cs[k], od.p()[k]);
+            check_d(doc, "match_gloss", "rho_s_out", *cs[k], os.p()[k]);
+        }
+        return r;
+    });
+}
+
+template <bool Ex>
+pgloss_status rgb_from_lab_run(const json &doc, int space, const std::vector<const json *> &cs, signed char *st) {
+    const size_t n = cs.size();
+    Col L(n), a(n), b(n), R(n), G(n), B(n);
+    for (size_t k = 0; k < n; ++k) {
+        const json &in = (*cs[k])["input"]["lab"];
+        L.p()[k] = num(in[0]), a.p()[k] = num(in[1]), b.p()[k] = num(in[2]);
+    }
+    const pgloss_lab_array lab{L.p(), a.p(), b.p()};
+    const pgloss_rgb_out_d rgb{R.p(), G.p(), B.p()};
+    const pgloss_status r = Ex ? pgloss_rgb_from_lab_batch_ex(n, lab, static_cast<pgloss_color_space>(space), rgb, st)
+                               : pgloss_rgb_from_lab_batch(n, lab, rgb, st);
+    const char *fn = Ex ? "rgb_from_lab_ex" : "rgb_from_lab";
+    for (size_t k = 0; k < n; ++k) {
+        const double got[3] = {R.p()[k], G.p()[k], B.p()[k]};
+        check_d3(doc, fn, "rgb", *cs[k], got);
+    }
+    return r;
+}
+
+template <bool Ex>
+pgloss_status lab_from_rgb_run(const json &doc, int space, const std::vector<const json *> &cs, signed char *st) {
+    const size_t n = cs.size();
+    Col R(n), G(n), B(n), L(n), a(n), b(n);
+    for (size_t k = 0; k < n; ++k) {
+        const json &in = (*cs[k])["input"]["rgb"];
+        R.p()[k] = num(in[0]), G.p()[k] = num(in[1]), B.p()[k] = num(in[2]);
+    }
+    const pgloss_rgb_array_d rgb{R.p(), G.p(), B.p()};
+    const pgloss_lab_out lab{L.p(), a.p(), b.p()};
+    const pgloss_status r = Ex ? pgloss_lab_from_rgb_batch_ex(n, rgb, static_cast<pgloss_color_space>(space), lab, st)
+                               : pgloss_lab_from_rgb_batch(n, rgb, lab, st);
+    const char *fn = Ex ? "lab_from_rgb_ex" : "lab_from_rgb";
+    for (size_t k = 0; k < n; ++k) {
+        const double got[3] = {L.p()[k], a.p()[k], b.p()[k]};
+        check_d3(doc, fn, "lab", *cs[k], got);
+    }
+    return r;
+}
+
+TEST(Vectors, color_batches) {
+    batch_cases("color.json", "rgb_from_lab", no_key, rgb_from_lab_run<false>);
+    batch_cases("color.json", "lab_from_rgb", no_key, lab_from_rgb_run<false>);
+    batch_cases("color_space.json", "rgb_from_lab_ex", space_key, rgb_from_lab_run<true>);
+    batch_cases("color_space.json", "lab_from_rgb_ex", space_key, lab_from_rgb_run<true>);
+    double x = 50, y = 0;
+    double o = kNaN;
+    EXPECT_EQ(pgloss_rgb_from_lab_batch_ex(1, pgloss_lab_array{&x, &y, &y}, static_cast<pgloss_color_space>(9),
+                                           pgloss_rgb_out_d{&o, &o, &o}, nullptr),
+              PGLOSS_ERR_ARGUMENT);
+    EXPECT_TRUE(std::isnan(o)) << "nothing written for an unknown space";
+}
+
+pgloss_physical_array physical_array_of(const std::vector<const json *> &cs, Col *cols, int norm) {
+    for (size_t k = 0; k < cs.size(); ++k) {
+        const pgloss_physical p = physical_from((*cs[k])["input"]["p"]);
+        const double v[6] = {p.rho_d[0], p.rho_d[1], p.rho_d[2], p.rho_s, p.alpha_x, p.alpha_y};
+        for (int j = 0; j < 6; ++j) cols[j].p()[k] = v[j];
+    }
+    return pgloss_physical_array{cols[0].p(), cols[1].p(), cols[2].p(), cols[3].p(), cols[4].p(), cols[5].p(),
+                                 static_cast<pgloss_normalization>(norm)};
+}
+
+int physical_norm_key(const json &c) { return c["input"]["p"]["normalization"].get<int>(); }
+
+template <bool Ex>
+pgloss_status perceptual_from_physical_run(const json &doc, int key, const std::vector<const json *> &cs, signed char *st) {
+    const size_t n = cs.size();
+    std::vector<Col> cols(6, Col(n));
+    const pgloss_physical_array pa = physical_array_of(cs, cols.data(), key % 16);
+    Col L(n), a(n), b(n), c(n), d(n);
+    const pgloss_perceptual_out q{L.p(), a.p(), b.p(), c.p(), d.p()};
+    const int space = key / 16;
+    const pgloss_status r = Ex ? pgloss_perceptual_from_physical_batch_ex(n, &pa, static_cast<pgloss_color_space>(space), q, st)
+                               : pgloss_perceptual_from_physical_batch(n, &pa, q, st);
+    const char *fn = Ex ? "perceptual_from_physical_ex" : "perceptual_from_physical";
+    for (size_t k = 0; k < n; ++k) {
+        check_d(doc, fn, "L", *cs[k], L.p()[k]);
+        check_d(doc, fn, "a", *cs[k], a.p()[k]);
+        check_d(doc, fn, "b", *cs[k], b.p()[k]);
+        check_d(doc, fn, "c", *cs[k], c.p()[k]);
+        check_d(doc, fn, "d", *cs[k], d.p()[k]);
+    }
+    return r;
+}
+
+template <bool Ex>
+pgloss_status physical_from_perceptual_run(const json &doc, int key, const std::vector<const json *> &cs, signed char *st) {
+    const size_t n = cs.size();
+    Col L(n), a(n), b(n), c(n), d(n);
+    for (size_t k = 0; k < n; ++k) {
+        const pgloss_perceptual q = perceptual_from((*cs[k])["input"]["q"]);
+        L.p()[k] = q.L, a.p()[k] = q.a, b.p()[k] = q.b, c.p()[k] = q.c, d.p()[k] = q.d;
+    }
+    Col R(n), G(n), B(n), S(n), AX(n), AY(n);
+    const pgloss_physical_out p{R.p(), G.p(), B.p(), S.p(), AX.p(), AY.p()};
+    const int space = key / 16, norm = key % 16;
+    const pgloss_perceptual_array q{L.p(), a.p(), b.p(), c.p(), d.p()};
+    const pgloss_status r =
+        Ex ? pgloss_physical_from_perceptual_batch_ex(n, q, static_cast<pgloss_normalization>(norm),
+                                                      static_cast<pgloss_color_space>(space), p, st)
+           : pgloss_physical_from_perceptual_batch(n, q, static_cast<pgloss_normalization>(norm), p, st);
+    const char *fn = Ex ? "physical_from_perceptual_ex" : "physical_from_perceptual";
+    for (size_t k = 0; k < n; ++k) {
+        const json &e = (*cs[k])["expected"];
+        if (!e.contains("rho_d")) continue;
+        const double rd[3] = {R.p()[k], G.p()[k], B.p()[k]};
+        check_d3(doc, fn, "rho_d", *cs[k], rd);
+        check_d(doc, fn, "rho_s", *cs[k], S.p()[k]);
+        check_d(doc, fn, "alpha_x", *cs[k], AX.p()[k]);
+        check_d(doc, fn, "alpha_y", *cs[k], AY.p()[k]);
+    }
+    return r;
+}
+
+TEST(Vectors, validity_and_material_batches) {
+    batch_cases("validity.json", "check_physical", physical_norm_key,
+                [](const json &, int norm, const std::vector<const json *> &cs, signed char *st) {
+                    std::vector<Col> cols(6, Col(cs.size()));
+                    const pgloss_physical_array pa = physical_array_of(cs, cols.data(), norm);
+                    return pgloss_check_physical_batch(cs.size(), &pa, st);
+                });
+    batch_cases("validity.json", "check_perceptual", no_key,
+                [](const json &, int, const std::vector<const json *> &cs, signed char *st) {
+                    const size_t n = cs.size();
+                    Col L(n), a(n), b(n), c(n), d(n);
+                    for (size_t k = 0; k < n; ++k) {
+                        const pgloss_perceptual q = perceptual_from((*cs[k])["input"]["q"]);
+                        L.p()[k] = q.L, a.p()[k] = q.a, b.p()[k] = q.b, c.p()[k] = q.c, d.p()[k] = q.d;
+                    }
+                    return pgloss_check_perceptual_batch(n, pgloss_perceptual_array{L.p(), a.p(), b.p(), c.p(), d.p()}, st);
+                });
+    batch_cases("perceptual_material.json", "perceptual_from_physical", physical_norm_key,
+                perceptual_from_physical_run<false>);
+    batch_cases("perceptual_material.json", "physical_from_perceptual", norm_key,
+                physical_from_perceptual_run<false>);
+    batch_cases("color_space.json", "physical_from_perceptual_ex", space_norm_key, physical_from_perceptual_run<true>);
+    batch_cases("color_space.json", "perceptual_from_physical_ex",
+                [](const json &c) {
+                    const int s = space_key(c);
+                    return s < 0 ? -1 : 16 * s + c["input"]["p"]["normalization"].get<int>();
+                },
+                perceptual_from_physical_run<true>);
+    batch_cases("color_space.json", "check_perceptual_ex", space_key,
+                [](const json &, int space, const std::vector<const json *> &cs, signed char *st) {
+                    const size_t n = cs.size();
+                    Col L(n), a(n), b(n), c(n), d(n);
+                    for (size_t k = 0; k < n; ++k) {
+                        const pgloss_perceptual q = perceptual_from((*cs[k])["input"]["q"]);
+                        L.p()[k] = q.L, a.p()[k] = q.a, b.p()[k] = q.b, c.p()[k] = q.c, d.p()[k] = q.d;
+                    }
+                    return pgloss_check_perceptual_batch_ex(n, pgloss_perceptual_array{L.p(), a.p(), b.p(), c.p(), d.p()},
+                                                            static_cast<pgloss_color_space>(space), st);
+                });
+}
+
 }  // namespace

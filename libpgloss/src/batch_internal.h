@@ -7,6 +7,7 @@
 
 #include <stddef.h>
 #include "pgloss/batch.h"
+#include "pgloss/batch_materials.h"
 #include "pgloss/inline.h"
 
 /* Per-call constants of the loops, derived from the material and the active lobes. */
@@ -35,6 +36,59 @@ typedef void (*pgloss__sample_fn)(const pgloss__batch_consts *k, unsigned active
                                        pgloss_vec3_array, const float *, const float *,          \
                                        const float *, pgloss_vec3_out, float *, pgloss_rgb_out,  \
                                        unsigned char *);
+
+/* Per-element materials (pgloss/batch_materials.h): one pair per ISA, FLOAT tier; `active`
+ * is the call's mask & PGLOSS_LOBE_ALL, m->alpha_y is never NULL here. eval_pdf returns the
+ * number of invalid elements met (materials and directions). */
+#define PGLOSS__DECLARE_MATERIAL_KERNELS(isa)                                                     \
+    size_t pgloss__eval_pdf_materials_##isa(const pgloss_material_array *, unsigned,     \
+                                                    size_t, pgloss_vec3_array, pgloss_vec3_array, \
+                                                    pgloss_rgb_out, float *);                     \
+    void pgloss__sample_materials_##isa(const pgloss_material_array *, unsigned, size_t,  \
+                                                pgloss_vec3_array, const float *, const float *,  \
+                                                const float *, pgloss_vec3_out, float *,          \
+                                                pgloss_rgb_out, unsigned char *);
+
+/* Whether a float material parameter set passes pgloss_material_init's checks: finite (for a
+ * float, |v| <= FLT_MAX), ρ >= 0, α > 0. */
+PGLOSS_INLINE_FN int pgloss__material_valid_f(float r, float g, float b, float s, float ax,
+                                               float ay)
+{
+    const int finite = pgloss_inl_finite(r) & pgloss_inl_finite(g) & pgloss_inl_finite(b) &
+                       pgloss_inl_finite(s) & pgloss_inl_finite(ax) & pgloss_inl_finite(ay);
+    return finite & (r >= 0.0f) & (g >= 0.0f) & (b >= 0.0f) & (s >= 0.0f) & (ax > 0.0f) &
+           (ay > 0.0f);
+}
+
+PGLOSS__DECLARE_MATERIAL_KERNELS(baseline)
+#if defined(PGLOSS_HAVE_AVX2)
+PGLOSS__DECLARE_MATERIAL_KERNELS(avx2)
+#endif
+#if defined(PGLOSS_HAVE_AVX512)
+PGLOSS__DECLARE_MATERIAL_KERNELS(avx512)
+#endif
+
+/* The double loops (batch_d_isa.c), one pair per ISA: k for one material, or pa (non-NULL)
+ * for one per element (pa->alpha_y never NULL here). eval_pdf returns the number of invalid
+ * elements. */
+struct pgloss__consts_d;
+#define PGLOSS__DECLARE_DOUBLE_KERNELS(isa)                                                       \
+    size_t pgloss__eval_pdf_batch_d_##isa(const struct pgloss__consts_d *,                        \
+                                          const pgloss_physical_array *, unsigned, int, size_t,   \
+                                          pgloss_vec3_array_d, pgloss_vec3_array_d,               \
+                                          pgloss_rgb_out_d, double *);                            \
+    void pgloss__sample_batch_d_##isa(const struct pgloss__consts_d *,                            \
+                                      const pgloss_physical_array *, unsigned, int, size_t,       \
+                                      pgloss_vec3_array_d, const double *, const double *,        \
+                                      const double *, pgloss_vec3_out_d, double *,                \
+                                      pgloss_rgb_out_d, unsigned char *);
+PGLOSS__DECLARE_DOUBLE_KERNELS(baseline)
+#if defined(PGLOSS_HAVE_AVX2)
+PGLOSS__DECLARE_DOUBLE_KERNELS(avx2)
+#endif
+#if defined(PGLOSS_HAVE_AVX512)
+PGLOSS__DECLARE_DOUBLE_KERNELS(avx512)
+#endif
 
 PGLOSS__DECLARE_KERNELS(baseline, float)
 PGLOSS__DECLARE_KERNELS(baseline, fast)

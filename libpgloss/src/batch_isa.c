@@ -50,6 +50,79 @@
  * vectorise where one fused loop defeats GCC's if-conversion. */
 #define CHUNK 256
 
+/* Per-element constants of a chunk (per-element materials): what pgloss_inl_consts_of gives
+ * for element j's material, the lobes active for it, and its α for the sampler. */
+typedef struct chunk_consts {
+    float fd0[CHUNK], fd1[CHUNK], fd2[CHUNK], spec[CHUNK], iax[CHUNK], iay[CHUNK];
+    float ps[CHUNK], pdf_d[CHUNK], pdf_s[CHUNK], ax[CHUNK], ay[CHUNK];
+    int act[CHUNK];
+} chunk_consts;
+
+/* The lobe constants of element j: the call's (c NULL, a constant of the instance) or the
+ * element's own. */
+PGLOSS_INLINE_FN pgloss_inl_consts consts_at(const pgloss__batch_consts *restrict k,
+                                             const chunk_consts *restrict c, size_t j)
+{
+    if (!c)
+        return k->lobe;
+    pgloss_inl_consts r;
+    r.fd[0] = c->fd0[j];
+    r.fd[1] = c->fd1[j];
+    r.fd[2] = c->fd2[j];
+    r.spec_scale = c->spec[j];
+    r.inv_ax = c->iax[j];
+    r.inv_ay = c->iay[j];
+    r.ps = c->ps[j];
+    r.pdf_d = c->pdf_d[j];
+    r.pdf_s = c->pdf_s[j];
+    return r;
+}
+
+/* pgloss_material_init of elements [0, m) of the arrays (offset to the chunk), inside the
+ * loop: validity (ok &= valid), pgloss_inl_material_derive, pgloss_inl_consts_of for the
+ * lobes that the mask and the element's material share. An invalid element gets a black
+ * material (and ok = 0, so 0 outputs). Returns the number of invalid elements. */
+PGLOSS_INLINE_FN size_t derive_chunk(unsigned lobes, int norm, size_t m,
+                                     const pgloss_material_array *ma, size_t base,
+                                     chunk_consts *restrict c, int *restrict ok)
+{
+    const float *restrict rr = ma->rho_d_r + base, *restrict rg = ma->rho_d_g + base;
+    const float *restrict rb = ma->rho_d_b + base, *restrict rs = ma->rho_s + base;
+    const float *restrict axs = ma->alpha_x + base, *restrict ays = ma->alpha_y + base;
+    size_t bad = 0;
+    for (size_t j = 0; j < m; ++j) {
+        const float r = rr[j], g = rg[j], b = rb[j], s = rs[j], ax = axs[j], ay = ays[j];
+        const int good = pgloss__material_valid_f(r, g, b, s, ax, ay);
+        pgloss_material mm;
+        /* (x > 0 ? x : 0): -0 becomes +0, as a material without that lobe gives (fuzz_brdf) */
+        mm.rho_d[0] = good & (r > 0.0f) ? r : 0.0f;
+        mm.rho_d[1] = good & (g > 0.0f) ? g : 0.0f;
+        mm.rho_d[2] = good & (b > 0.0f) ? b : 0.0f;
+        mm.rho_s = good & (s > 0.0f) ? s : 0.0f;
+        mm.alpha_x = good ? ax : 1.0f;
+        mm.alpha_y = good ? ay : 1.0f;
+        mm.normalization = (pgloss_normalization)norm;
+        pgloss_inl_material_derive(&mm);
+        const unsigned act = lobes & mm.lobes;
+        const pgloss_inl_consts k = pgloss_inl_consts_of(&mm, act);
+        c->fd0[j] = k.fd[0];
+        c->fd1[j] = k.fd[1];
+        c->fd2[j] = k.fd[2];
+        c->spec[j] = k.spec_scale;
+        c->iax[j] = k.inv_ax;
+        c->iay[j] = k.inv_ay;
+        c->ps[j] = k.ps;
+        c->pdf_d[j] = k.pdf_d;
+        c->pdf_s[j] = k.pdf_s;
+        c->ax[j] = mm.alpha_x;
+        c->ay[j] = mm.alpha_y;
+        c->act[j] = (int)act;
+        ok[j] &= good;
+        bad += !good;
+    }
+    return bad;
+}
+
 /* Whether every direction of a chunk is near-unit (which also rules out NaN and Inf). */
 PGLOSS_INLINE_FN int chunk_near_unit(size_t n, const float *restrict xs, const float *restrict ys,
                                   const float *restrict zs)
@@ -124,7 +197,8 @@ PGLOSS_INLINE_FN size_t normalize_chunk(size_t n, const float *restrict xs, cons
 /* f and pdf of a chunk (ok: validity in and out); returns the number of invalid directions.
  * Unwanted outputs go to scratch chunks instead of being a specialisation of their own: the
  * loops stay branch-free, and the file compiles in a third of the time. */
-PGLOSS_INLINE_FN size_t eval_chunk(const pgloss__batch_consts *restrict k, const unsigned active,
+PGLOSS_INLINE_FN size_t eval_chunk(const pgloss__batch_consts *restrict k,
+                                const chunk_consts *restrict pc, const unsigned active,
                                 const int norm, size_t m, const float *oxs, const float *oys,
                                 const float *ozs, const float *ixs, const float *iys,
                                 const float *izs, int *restrict ok, float *restrict r,
@@ -146,7 +220,8 @@ PGLOSS_INLINE_FN size_t eval_chunk(const pgloss__batch_consts *restrict k, const
     }
     for (size_t j = 0; j < m; ++j) {
         float f[3], pj;
-        pgloss_inl_eval_pdf_unit(&k->lobe, active, norm, oxs[j], oys[j], ozs[j], ixs[j], iys[j],
+        const pgloss_inl_consts kj = consts_at(k, pc, j);
+        pgloss_inl_eval_pdf_unit(&kj, active, norm, oxs[j], oys[j], ozs[j], ixs[j], iys[j],
                                  izs[j], ok[j], f, &pj);
         r[j] = f[0];
         g[j] = f[1];
@@ -170,7 +245,7 @@ PGLOSS_INLINE_FN size_t eval_pdf_loop(const pgloss__batch_consts *restrict k, co
         const size_t m = n - base < CHUNK ? n - base : CHUNK;
         for (size_t j = 0; j < m; ++j)
             ok[j] = 1;
-        bad += eval_chunk(k, active, norm, m, oxs + base, oys + base, ozs + base, ixs + base,
+        bad += eval_chunk(k, NULL, active, norm, m, oxs + base, oys + base, ozs + base, ixs + base,
                           iys + base, izs + base, ok, fr ? fr + base : sr, fr ? fg + base : sg,
                           fr ? fb + base : sb, pdf ? pdf + base : sp);
     }
@@ -239,8 +314,10 @@ size_t EVAL_PDF_FN(const pgloss__batch_consts *k, unsigned active, int norm, siz
 
 /* Three passes per chunk (wo, then the drawn direction, then f and pdf at it), for the
  * same reason as eval_pdf_loop. */
-PGLOSS_INLINE_FN void sample_loop(const pgloss__batch_consts *restrict k, const unsigned active,
-                               const int norm, size_t n, const float *restrict oxs,
+PGLOSS_INLINE_FN void sample_loop(const pgloss__batch_consts *restrict k,
+                               const pgloss_material_array *ma, const int per_element,
+                               const unsigned active, const int norm, size_t n,
+                               const float *restrict oxs,
                                const float *restrict oys, const float *restrict ozs,
                                const float *restrict u0s, const float *restrict u1s,
                                const float *restrict u2s, float *restrict wx,
@@ -251,6 +328,7 @@ PGLOSS_INLINE_FN void sample_loop(const pgloss__batch_consts *restrict k, const 
     float ox[CHUNK], oy[CHUNK], oz[CHUNK], ix[CHUNK], iy[CHUNK], iz[CHUNK];
     float c0[CHUNK], c1[CHUNK], c2[CHUNK];
     int ok[CHUNK], spec_c[CHUNK];
+    chunk_consts cc;
     for (size_t base = 0; base < n; base += CHUNK) {
         const size_t m = n - base < CHUNK ? n - base : CHUNK;
         /* Clamped random numbers in a pass of their own: GCC 12 does not if-convert the
@@ -262,6 +340,8 @@ PGLOSS_INLINE_FN void sample_loop(const pgloss__batch_consts *restrict k, const 
             c1[j] = pgloss_inl_clamp_u(r1);
             c2[j] = pgloss_inl_clamp_u(r2);
         }
+        if (per_element)
+            derive_chunk(active, norm, m, ma, base, &cc, ok);
         normalize_chunk(m, oxs + base, oys + base, ozs + base, ox, oy, oz, ok);
         /* The diffuse candidates (into ix, iy, iz, free until the eval pass). */
         if (active & PGLOSS_LOBE_DIFFUSE) {
@@ -270,13 +350,17 @@ PGLOSS_INLINE_FN void sample_loop(const pgloss__batch_consts *restrict k, const 
         }
         for (size_t j = 0; j < m; ++j) {
             const float u0 = c0[j];
-            const int spec = (active == PGLOSS_LOBE_SPECULAR) |
-                             ((active == PGLOSS_LOBE_ALL) & (u0 < k->lobe.ps));
-            const int drawn = ok[j] & (active != PGLOSS_LOBE_NONE);
+            /* the lobes of this element: the call's, or those its own material has */
+            const unsigned act = per_element ? (unsigned)cc.act[j] : active;
+            const float ps = per_element ? cc.ps[j] : k->lobe.ps;
+            const int spec = (act == PGLOSS_LOBE_SPECULAR) |
+                             ((act == PGLOSS_LOBE_ALL) & (u0 < ps));
+            const int drawn = ok[j] & (act != PGLOSS_LOBE_NONE);
             float sx = 0.0f, sy = 0.0f, sz = 1.0f, oh = 1.0f;
             if (active & PGLOSS_LOBE_SPECULAR)
-                oh = pgloss_inl_sample_specular(k->alpha_x, k->alpha_y, ox[j], oy[j], oz[j], c1[j],
-                                                c2[j], &sx, &sy, &sz);
+                oh = pgloss_inl_sample_specular(per_element ? cc.ax[j] : k->alpha_x,
+                                                per_element ? cc.ay[j] : k->alpha_y, ox[j], oy[j],
+                                                oz[j], c1[j], c2[j], &sx, &sy, &sz);
             const float dx = (active & PGLOSS_LOBE_DIFFUSE) ? ix[j] : 0.0f;
             const float dy = (active & PGLOSS_LOBE_DIFFUSE) ? iy[j] : 0.0f;
             const float dz = (active & PGLOSS_LOBE_DIFFUSE) ? iz[j] : 1.0f;
@@ -293,8 +377,9 @@ PGLOSS_INLINE_FN void sample_loop(const pgloss__batch_consts *restrict k, const 
         eval_pdf_loop_v(k, active, norm, m, oxs + base, oys + base, ozs + base, wx + base,
                         wy + base, wz + base, wr + base, wg + base, wb + base, pdfs + base, 1, 1);
 #else
-        eval_chunk(k, active, norm, m, oxs + base, oys + base, ozs + base, wx + base, wy + base,
-                   wz + base, ok, wr + base, wg + base, wb + base, pdfs + base);
+        eval_chunk(k, per_element ? &cc : NULL, active, norm, m, oxs + base, oys + base, ozs + base,
+                   wx + base, wy + base, wz + base, ok, wr + base, wg + base, wb + base,
+                   pdfs + base);
 #endif
         /* weight = f cosθi / pdf, 0 where the sample is rejected (pdf 0). */
         for (size_t j = 0; j < m; ++j)
@@ -311,8 +396,70 @@ void SAMPLE_FN(const pgloss__batch_consts *k, unsigned active, int norm, size_t 
                pgloss_vec3_out wi, float *pdf, pgloss_rgb_out weight, unsigned char *lobe)
 {
 #define LOOP(A, N)                                                                                 \
-    sample_loop(k, A, N, n, wo.x, wo.y, wo.z, u0, u1, u2, wi.x, wi.y, wi.z, pdf, weight.r,         \
-                weight.g, weight.b, lobe)
+    sample_loop(k, NULL, 0, A, N, n, wo.x, wo.y, wo.z, u0, u1, u2, wi.x, wi.y, wi.z, pdf,       \
+                weight.r, weight.g, weight.b, lobe)
     PGLOSS__BY_LOBES(LOOP);
 #undef LOOP
 }
+
+/* ---- per-element materials (FLOAT tier only: FAST runs these loops too) ------------------ */
+
+#if !PGLOSS_TIER_FAST
+#define PGLOSS__CAT2(a, b) a##_##b
+#define PGLOSS__NAME2(fn, isa) PGLOSS__CAT2(fn, isa)
+#define EVAL_PDF_MATERIALS_FN PGLOSS__NAME2(pgloss__eval_pdf_materials, PGLOSS_ISA)
+#define SAMPLE_MATERIALS_FN PGLOSS__NAME2(pgloss__sample_materials, PGLOSS_ISA)
+
+/* As eval_pdf_loop, with each chunk's constants derived from its materials first. */
+PGLOSS_INLINE_FN size_t eval_pdf_materials_loop(const pgloss_material_array *ma,
+                                                const unsigned active, const int norm, size_t n,
+                                                const float *restrict oxs,
+                                                const float *restrict oys,
+                                                const float *restrict ozs,
+                                                const float *restrict ixs,
+                                                const float *restrict iys,
+                                                const float *restrict izs, float *fr, float *fg,
+                                                float *fb, float *pdf)
+{
+    size_t bad = 0;
+    float sr[CHUNK], sg[CHUNK], sb[CHUNK], sp[CHUNK];
+    int ok[CHUNK];
+    chunk_consts cc;
+    for (size_t base = 0; base < n; base += CHUNK) {
+        const size_t m = n - base < CHUNK ? n - base : CHUNK;
+        for (size_t j = 0; j < m; ++j)
+            ok[j] = 1;
+        bad += derive_chunk(active, norm, m, ma, base, &cc, ok);
+        bad += eval_chunk(NULL, &cc, active, norm, m, oxs + base, oys + base, ozs + base,
+                          ixs + base, iys + base, izs + base, ok, fr ? fr + base : sr,
+                          fr ? fg + base : sg, fr ? fb + base : sb, pdf ? pdf + base : sp);
+    }
+    return bad;
+}
+
+/* Here `active` is the call's mask (lobes & PGLOSS_LOBE_ALL): each element narrows it to the
+ * lobes its material has through its constants. */
+size_t EVAL_PDF_MATERIALS_FN(const pgloss_material_array *m, unsigned active, size_t n,
+                             pgloss_vec3_array wo, pgloss_vec3_array wi, pgloss_rgb_out f,
+                             float *pdf)
+{
+    const int norm = (int)m->normalization;
+#define LOOP(A, N)                                                                                 \
+    eval_pdf_materials_loop(m, A, N, n, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, f.r, f.g, f.b, pdf)
+    return PGLOSS__BY_LOBES(LOOP);
+#undef LOOP
+}
+
+void SAMPLE_MATERIALS_FN(const pgloss_material_array *m, unsigned active, size_t n,
+                         pgloss_vec3_array wo, const float *u0, const float *u1, const float *u2,
+                         pgloss_vec3_out wi, float *pdf, pgloss_rgb_out weight,
+                         unsigned char *lobe)
+{
+    const int norm = (int)m->normalization;
+#define LOOP(A, N)                                                                                 \
+    sample_loop(NULL, m, 1, A, N, n, wo.x, wo.y, wo.z, u0, u1, u2, wi.x, wi.y, wi.z, pdf,          \
+                weight.r, weight.g, weight.b, lobe)
+    PGLOSS__BY_LOBES(LOOP);
+#undef LOOP
+}
+#endif

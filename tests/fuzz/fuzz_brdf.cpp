@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The pgloss authors
 // SPDX-License-Identifier: Apache-2.0
-// libFuzzer harness: the BRDF entry points (brdf.h, batch.h), every tier and instruction set.
+// libFuzzer harness: the BRDF entry points (brdf.h, batch.h, batch_materials.h), every tier and
+// instruction set.
 // Contracts asserted (from the headers):
 //   - every status is one the function documents; outputs are finite, f, pdf, weight >= 0;
 //     a rejected sample (pdf 0) has weight 0;
@@ -13,6 +14,7 @@
 #include <pgloss/pgloss.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <vector>
 
 namespace {
@@ -147,6 +149,31 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, size_t size) {
                 all.insert(all.end(), pd.begin(), pd.end());
                 if (float_ref.empty()) float_ref = all;
                 else FZ_CHECK(std::memcmp(all.data(), float_ref.data(), all.size() * sizeof(float)) == 0);
+                // Per-element materials (batch_materials.h): the same material in every element
+                // gives the uniform batch's bits; the double path keeps the contracts.
+                std::vector<float> mr(n, m.rho_d[0]), mg(n, m.rho_d[1]), mb(n, m.rho_d[2]), msp(n, m.rho_s),
+                    max_(n, m.alpha_x), may(n, m.alpha_y); /* the float values (p's may round to 0) */
+                const pgloss_material_array ma{mr.data(), mg.data(), mb.data(), msp.data(), max_.data(), may.data(),
+                                               p.normalization};
+                std::vector<float> er(n, -1), eg(n, -1), eb(n, -1), ep(n, -1);
+                std::vector<signed char> est(n, 99);
+                const pgloss_status es = pgloss_eval_pdf_batch_materials_ex(
+                    &opt, &ma, lobes, n, wo, wi, pgloss_rgb_out{er.data(), eg.data(), eb.data()}, ep.data(), est.data());
+                FZ_CHECK(es == se && est[0] == se);
+                FZ_CHECK(std::memcmp(er.data(), fr.data(), n * sizeof(float)) == 0 &&
+                         std::memcmp(ep.data(), pd.data(), n * sizeof(float)) == 0);
+                std::vector<double> dox(ox.begin(), ox.end()), doy(oy.begin(), oy.end()), doz(oz.begin(), oz.end()),
+                    dix(ix.begin(), ix.end()), diy(iy.begin(), iy.end()), diz(iz.begin(), iz.end()), dr(n, -1), dg(n, -1),
+                    db(n, -1), dp(n, -1);
+                const pgloss_status ds = pgloss_eval_pdf_batch_d_ex(
+                    &opt, &m, lobes, n, pgloss_vec3_array_d{dox.data(), doy.data(), doz.data()},
+                    pgloss_vec3_array_d{dix.data(), diy.data(), diz.data()}, pgloss_rgb_out_d{dr.data(), dg.data(), db.data()},
+                    dp.data(), nullptr);
+                FZ_CHECK(ds == se);
+                for (size_t k = 0; k < n; ++k) {
+                    FZ_CHECK(fz::finite3(dr[k], dg[k], db[k]) && std::isfinite(dp[k]));
+                    FZ_CHECK(dr[k] >= 0 && dg[k] >= 0 && db[k] >= 0 && dp[k] >= 0 && dr[k] <= FLT_MAX && dp[k] <= FLT_MAX);
+                }
             }
             std::vector<float> sx(n), sy(n), sz(n), sp(n), gr(n), gg(n), gb(n);
             std::vector<unsigned char> lb(n);

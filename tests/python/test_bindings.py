@@ -175,7 +175,7 @@ def test_scalar_vs_array_brdf() -> None:
         for k in range(64):
             fk, pk = pgloss.eval_pdf(GREY, wo[k].astype(dtype), wi[k].astype(dtype))
             sk = pgloss.sample(GREY, wo[k].astype(dtype), u[k].astype(dtype))
-            if dtype == np.float64:  # same scalar C path, element by element
+            if dtype == np.float64:  # the double batch: an element does not depend on its neighbours
                 np.testing.assert_array_equal(f[k], fk)
                 assert p[k] == pk and s.pdf[k] == sk.pdf and s.lobe[k] == sk.lobe
                 np.testing.assert_array_equal(s.wi[k], sk.wi)

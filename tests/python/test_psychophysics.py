@@ -175,7 +175,8 @@ def test_scipy_is_needed_only_by_the_fits_that_use_it() -> None:
 def test_cli_dispatcher() -> None:
     from pgloss import __main__ as cli
 
-    assert [c.name for c in cli.COMMANDS][:2] == ["figures", "mds"]
+    names = [c.name for c in cli.COMMANDS]
+    assert names.index("mds") == names.index("figures") + 1  # after the C tool's commands (test_cli.py)
     with pytest.raises(SystemExit) as e:
         cli.main(["mds", "--help"])
     assert e.value.code == 0

@@ -4,6 +4,9 @@
 
 Commands (``python -m pgloss COMMAND --help`` for each):
 
+* ``to-physical``, ``to-perceptual``, ``to-perceptual-rgb``, ``check``, ``match``,
+  ``distance``, ``envelope``, ``eval``, ``demo`` — the C tool ``pgloss``'s subcommands, with
+  its arguments, output and exit codes (:mod:`pgloss.cli`);
 * ``figures OUTDIR`` — the paper's Figs. 9, 10 and 11, computed by the library (below);
 * ``mds …`` — the paper's MDS analysis (§3) on proximity matrices in CSV
   (:mod:`pgloss.psychophysics.cli`);
@@ -217,8 +220,19 @@ class Command(NamedTuple):
     description: str = ""
 
 
-#: The subcommands, in the order ``--help`` lists them.
-COMMANDS: Tuple[Command, ...] = (
+def _tool(name: str) -> Command:
+    """One of the C tool's subcommands (pgloss.cli), as a Command."""
+    from . import cli
+
+    c = next(t for t in cli.TOOL_COMMANDS if t.name == name)
+    line = " ".join((*c.numbers, "[norm]") if c.norm else c.numbers)
+    return Command(c.name, f"{line}: {c.usage}" if line else c.usage, lambda p: cli.add_arguments(c, p), cli.run,
+                   f"{c.usage} (as the C tool: pgloss {c.name} {line})")
+
+
+#: The subcommands, in the order ``--help`` lists them: the C tool's first, then the package's own.
+COMMANDS: Tuple[Command, ...] = tuple(_tool(n) for n in (
+    "to-physical", "to-perceptual", "to-perceptual-rgb", "check", "match", "distance", "envelope", "eval", "demo")) + (
     Command("figures", "write PNG + SVG of the paper's Figs. 9, 10, 11 into OUTDIR", _figures_arguments,
             _figures_run),
     Command("mds", "MDS analysis of proximity matrices (CSV): stress curve, dimensionality, weighted Euclidean "
@@ -232,13 +246,20 @@ COMMANDS: Tuple[Command, ...] = (
 
 
 def main(argv: Optional[Sequence[str]] = None) -> int:
+    args_in = list(sys.argv[1:] if argv is None else argv)
+    if args_in and not {"-h", "--help"} & set(args_in[1:]):
+        from . import cli
+
+        tool = cli.find(args_in[0])
+        if tool is not None:  # the C tool's commands read their arguments as it does (e.g. -1e3)
+            return cli.run_argv(tool, args_in[1:])
     parser = argparse.ArgumentParser(prog="python -m pgloss", description="pgloss command line: "
                                      + ", ".join(c.name for c in COMMANDS))
     parser.add_argument("--version", action="version", version=f"pgloss {pgloss.__version__}")
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     for c in COMMANDS:
         c.arguments(sub.add_parser(c.name, help=c.help, description=c.description or c.help))
-    args = parser.parse_args(argv)
+    args = parser.parse_args(args_in)
     return next(c for c in COMMANDS if c.name == args.command).run(args)
 
 

@@ -19,6 +19,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <array>
 #include <cfloat>
 #include <chrono>
@@ -27,6 +28,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #if defined(__SSE2__)
@@ -70,6 +72,10 @@ struct SignalCheck {
     }
 };
 
+// A status no core function returns: marks a status array the core left unwritten (a
+// whole-call error, e.g. an unknown normalisation: nothing is written).
+constexpr signed char kUnwritten = 127;
+
 // ---------------------------------------------------------------------------------------
 // Element-wise map over double functions: NI flat inputs of equal length, NO outputs, and
 // the status of every element (int8). f(x, y) -> status; y is pre-filled with NaN so that
@@ -109,6 +115,61 @@ py::tuple vmap(const std::array<darr, NI> &in, F f) {
     py::tuple t(NO + 1);
     for (size_t k = 0; k < NO; ++k) t[k] = out[k];
     t[NO] = st;
+    return t;
+}
+
+// ---------------------------------------------------------------------------------------
+// Element-wise map over a batched core function (pgloss/perceptual_batch.h): NI flat
+// inputs of equal length, NO outputs and the status of every element (int8), in slices of
+// kSignalStride elements (Ctrl-C between slices). batch(m, x, y, st) runs one slice. A
+// whole-call error of the batch (an unknown colour space or normalisation: nothing written)
+// falls back to the scalar function, element by element, so that each element gets exactly
+// the scalar function's status (the order of its checks) and outputs.
+template <size_t NI, size_t NO, class Batch, class Scalar>
+py::tuple bmap(const std::array<darr, NI> &in, Batch batch, Scalar scalar) {
+    const py::ssize_t n = NI ? in[0].size() : 0;
+    std::array<const double *, NI> ip{};
+    for (size_t k = 0; k < NI; ++k) {
+        if (in[k].ndim() != 1 || in[k].size() != n)
+            throw std::invalid_argument("pgloss._core: inputs must be flat arrays of equal length");
+        ip[k] = in[k].data();
+    }
+    // One (NO, n) block: each output a contiguous row (a conversion's rho_d r, g, b rows are
+    // then one channel-first array for Python, without a copy).
+    darr block(std::vector<py::ssize_t>{static_cast<py::ssize_t>(NO), n});
+    std::array<double *, NO> op{};
+    for (size_t k = 0; k < NO; ++k) op[k] = block.mutable_data() + k * static_cast<size_t>(n);
+    py::array_t<std::int8_t> st(n);
+    auto *sp = reinterpret_cast<signed char *>(st.mutable_data());
+    SignalCheck sig;
+    {
+        py::gil_scoped_release nogil;
+        for (size_t base = 0; base < static_cast<size_t>(n); base += kSignalStride) {
+            if (base && sig.stop(base)) break;
+            const size_t m = std::min(kSignalStride, static_cast<size_t>(n) - base);
+            std::array<const double *, NI> x{};
+            std::array<double *, NO> y{};
+            for (size_t k = 0; k < NI; ++k) x[k] = ip[k] + base;
+            for (size_t k = 0; k < NO; ++k) y[k] = op[k] + base;
+            sp[base] = kUnwritten;
+            const int s = batch(m, x.data(), y.data(), sp + base);
+            if (s < 0 && sp[base] == kUnwritten) {
+                for (size_t j = 0; j < m; ++j) {
+                    std::array<double, NI> xs;
+                    std::array<double, NO> ys;
+                    for (size_t k = 0; k < NI; ++k) xs[k] = x[k][j];
+                    ys.fill(kNaN);
+                    sp[base + j] = static_cast<signed char>(scalar(xs.data(), ys.data()));
+                    for (size_t k = 0; k < NO; ++k) y[k][j] = ys[k];
+                }
+            }
+        }
+    }
+    sig.raise_if_interrupted();
+    py::tuple t(NO + 2);  // the outputs (rows of the block), the statuses, the block
+    for (size_t k = 0; k < NO; ++k) t[k] = block[py::int_(k)];
+    t[NO] = st;
+    t[NO + 1] = block;
     return t;
 }
 
@@ -207,175 +268,339 @@ inline void interleave(size_t m, const float *__restrict__ x, const float *__res
 }
 
 // ---------------------------------------------------------------------------------------
-// eval / pdf / eval_pdf.
+// Outputs: a caller's out= array (checked again here: C-contiguous, writeable, the exact
+// dtype and size) or a new one.
 
-py::tuple eval_f32(const Material &M, unsigned lobes, const farr &wo, const farr &wi, bool want_f, bool want_pdf) {
+template <class T>
+py::array_t<T> output(const py::object &given, py::ssize_t count, const std::vector<py::ssize_t> &shape,
+                      const char *what) {
+    if (given.is_none()) return py::array_t<T>(shape);
+    if (!py::isinstance<py::array>(given)) throw std::invalid_argument(std::string("pgloss._core: out ") + what);
+    py::array a = py::reinterpret_borrow<py::array>(given);
+    if (!a.dtype().is(py::dtype::of<T>()) || !(a.flags() & py::array::c_style) || !a.writeable() ||
+        a.size() != count)
+        throw std::invalid_argument(std::string("pgloss._core: out ") + what +
+                                    " must be a C-contiguous writeable array of the result's dtype and size");
+    return py::reinterpret_borrow<py::array_t<T>>(given);
+}
+
+template <class T>
+inline void deinterleave_any(size_t m, const T *__restrict__ src, T *__restrict__ x, T *__restrict__ y,
+                             T *__restrict__ z) {
+    if constexpr (std::is_same_v<T, float>) {
+        deinterleave(m, src, x, y, z);
+    } else {
+        for (size_t j = 0; j < m; ++j) {
+            x[j] = src[3 * j];
+            y[j] = src[3 * j + 1];
+            z[j] = src[3 * j + 2];
+        }
+    }
+}
+
+template <class T>
+inline void interleave_any(size_t m, const T *__restrict__ x, const T *__restrict__ y, const T *__restrict__ z,
+                           T *__restrict__ dst) {
+    if constexpr (std::is_same_v<T, float>) {
+        interleave(m, x, y, z, dst);
+    } else {
+        for (size_t j = 0; j < m; ++j) {
+            dst[3 * j] = x[j];
+            dst[3 * j + 1] = y[j];
+            dst[3 * j + 2] = z[j];
+        }
+    }
+}
+
+// The C structs of one precision: float (pgloss/batch.h) or double (pgloss/batch_materials.h).
+template <class T> struct Soa;
+template <> struct Soa<float> {
+    using in = pgloss_vec3_array;
+    using out = pgloss_vec3_out;
+    using rgb = pgloss_rgb_out;
+};
+template <> struct Soa<double> {
+    using in = pgloss_vec3_array_d;
+    using out = pgloss_vec3_out_d;
+    using rgb = pgloss_rgb_out_d;
+};
+
+// One material for the batch: float → pgloss_*_batch (the FLOAT tier); double →
+// pgloss_*_batch_d. The status of the first failing element is found, on the error path only,
+// from the _ex form's status array (double) or the scalar pdf (float).
+template <class T>
+int eval_chunk(const Material &M, unsigned lobes, size_t m, typename Soa<T>::in a, typename Soa<T>::in b,
+               typename Soa<T>::rgb fo, T *pd, bool want_f, bool want_pdf) {
+    if constexpr (std::is_same_v<T, float>) {
+        if (want_f && want_pdf) return pgloss_eval_pdf_batch(&M.m, lobes, m, a, b, fo, pd);
+        if (want_f) return pgloss_eval_batch(&M.m, lobes, m, a, b, fo);
+        return pgloss_pdf_batch(&M.m, lobes, m, a, b, pd);
+    } else {
+        if (want_f && want_pdf) return pgloss_eval_pdf_batch_d(&M.m, lobes, m, a, b, fo, pd);
+        if (want_f) return pgloss_eval_batch_d(&M.m, lobes, m, a, b, fo);
+        return pgloss_pdf_batch_d(&M.m, lobes, m, a, b, pd);
+    }
+}
+
+template <class T>
+py::ssize_t first_bad_eval(const Material &M, unsigned lobes, size_t m, typename Soa<T>::in a,
+                           typename Soa<T>::in b) {
+    if constexpr (std::is_same_v<T, float>) {
+        for (size_t j = 0; j < m; ++j) {
+            float p;
+            if (pgloss_pdf(&M.m, pgloss_vec3{a.x[j], a.y[j], a.z[j]}, pgloss_vec3{b.x[j], b.y[j], b.z[j]}, lobes, &p) <
+                0)
+                return static_cast<py::ssize_t>(j);
+        }
+        return 0;
+    } else {
+        std::vector<double> scratch(4 * m);
+        std::vector<signed char> st(m);
+        pgloss_eval_pdf_batch_d_ex(nullptr, &M.m, lobes, m, a, b,
+                                   pgloss_rgb_out_d{scratch.data(), scratch.data() + m, scratch.data() + 2 * m},
+                                   scratch.data() + 3 * m, st.data());
+        for (size_t j = 0; j < m; ++j)
+            if (st[j] < 0) return static_cast<py::ssize_t>(j);
+        return 0;
+    }
+}
+
+template <class T>
+py::tuple eval_uniform(const Material &M, unsigned lobes, const py::array_t<T, py::array::c_style> &wo,
+                       const py::array_t<T, py::array::c_style> &wi, bool want_f, bool want_pdf,
+                       const py::object &f_out, const py::object &p_out) {
     const size_t n = rows_of(wo, "wo");
     if (rows_of(wi, "wi") != n) throw std::invalid_argument("pgloss._core: wo and wi differ in length");
-    farr f(want_f ? std::vector<py::ssize_t>{static_cast<py::ssize_t>(n), 3} : std::vector<py::ssize_t>{0, 3});
-    farr pdf(want_pdf ? static_cast<py::ssize_t>(n) : 0);
-    const float *o = wo.data(), *i = wi.data();
-    float *fp = f.mutable_data(), *pp = pdf.mutable_data();
+    const auto N = static_cast<py::ssize_t>(n);
+    auto f = output<T>(want_f ? f_out : py::none(), want_f ? 3 * N : 0,
+                       std::vector<py::ssize_t>{want_f ? N : 0, 3}, "f");
+    auto pdf = output<T>(want_pdf ? p_out : py::none(), want_pdf ? N : 0, {want_pdf ? N : 0}, "pdf");
+    const T *o = wo.data(), *i = wi.data();
+    T *fp = want_f ? f.mutable_data() : nullptr, *pp = want_pdf ? pdf.mutable_data() : nullptr;
     FirstError err;
     SignalCheck sig;
     {
         py::gil_scoped_release nogil;
-        std::vector<float> buf(10 * kChunk);
-        float *ox = buf.data(), *oy = ox + kChunk, *oz = oy + kChunk, *ix = oz + kChunk, *iy = ix + kChunk,
-              *iz = iy + kChunk, *fr = iz + kChunk, *fg = fr + kChunk, *fb = fg + kChunk, *pd = fb + kChunk;
+        std::vector<T> buf(10 * kChunk);
+        T *ox = buf.data(), *oy = ox + kChunk, *oz = oy + kChunk, *ix = oz + kChunk, *iy = ix + kChunk,
+          *iz = iy + kChunk, *fr = iz + kChunk, *fg = fr + kChunk, *fb = fg + kChunk, *pd = fb + kChunk;
         for (size_t base = 0; base < n; base += kChunk) {
             if (sig.stop(base)) break;
             const size_t m = n - base < kChunk ? n - base : kChunk;
-            deinterleave(m, o + 3 * base, ox, oy, oz);
-            deinterleave(m, i + 3 * base, ix, iy, iz);
-            const pgloss_vec3_array a{ox, oy, oz}, b{ix, iy, iz};
-            const pgloss_rgb_out fo{fr, fg, fb};
-            pgloss_status st;
-            if (want_f && want_pdf)
-                st = pgloss_eval_pdf_batch(&M.m, lobes, m, a, b, fo, pd);
-            else if (want_f)
-                st = pgloss_eval_batch(&M.m, lobes, m, a, b, fo);
-            else
-                st = pgloss_pdf_batch(&M.m, lobes, m, a, b, pd);
-            if (want_f) interleave(m, fr, fg, fb, fp + 3 * base);
-            if (want_pdf)
-                for (size_t j = 0; j < m; ++j) pp[base + j] = pd[j];
-            if (st < 0 && err.status == PGLOSS_OK) {
-                // Which element? Ask the scalar function, element by element (error path only).
-                for (size_t j = 0; j < m; ++j) {
-                    float p;
-                    const int s = pgloss_pdf(&M.m, pgloss_vec3{ox[j], oy[j], oz[j]}, pgloss_vec3{ix[j], iy[j], iz[j]},
-                                             lobes, &p);
-                    if (s < 0) {
-                        err.note(s, static_cast<py::ssize_t>(base + j));
-                        break;
-                    }
-                }
-                err.note(st, static_cast<py::ssize_t>(base));  // not found: the chunk's start
-            }
+            deinterleave_any(m, o + 3 * base, ox, oy, oz);
+            deinterleave_any(m, i + 3 * base, ix, iy, iz);
+            const typename Soa<T>::in a{ox, oy, oz}, b{ix, iy, iz};
+            const int st = eval_chunk<T>(M, lobes, m, a, b, typename Soa<T>::rgb{fr, fg, fb}, pd, want_f, want_pdf);
+            if (want_f) interleave_any(m, fr, fg, fb, fp + 3 * base);
+            if (want_pdf) std::copy(pd, pd + m, pp + base);
+            if (st < 0 && err.status == PGLOSS_OK)
+                err.note(st, static_cast<py::ssize_t>(base) + first_bad_eval<T>(M, lobes, m, a, b));
         }
     }
     sig.raise_if_interrupted();
     return py::make_tuple(f, pdf, err.status, err.index);
 }
 
-py::tuple eval_f64(const Material &M, unsigned lobes, const f64arr &wo, const f64arr &wi, bool want_f, bool want_pdf) {
+// One material per element: the six double columns (rho_d r, g, b, rho_s, alpha_x, alpha_y)
+// of the broadcast shape, n each; float: rounded to float chunk by chunk (beyond float range
+// they become ±Inf, which the core reports as NONFINITE, as pgloss_material_init does).
+struct Columns {
+    std::array<const double *, 6> p{};
+    size_t n = 0;
+};
+
+Columns columns_of(const std::array<darr, 6> &cols, size_t n) {
+    Columns c;
+    c.n = n;
+    for (size_t k = 0; k < 6; ++k) {
+        if (cols[k].ndim() != 1 || static_cast<size_t>(cols[k].size()) != n)
+            throw std::invalid_argument("pgloss._core: material columns must be flat arrays of the batch's length");
+        c.p[k] = cols[k].data();
+    }
+    return c;
+}
+
+// One chunk of the material columns in the batch's precision. The parameters are rounded to
+// float in both: a material is a pgloss_material (float parameters, as every C caller's and
+// the scalar double reference's), whatever the directions' precision; the double path widens
+// them again exactly. Beyond float range they become ±Inf, which the core reports as
+// NONFINITE, as pgloss_material_init does.
+template <class T>
+std::array<const T *, 6> material_chunk(const Columns &C, size_t base, size_t m, T *buf) {
+    std::array<const T *, 6> mc{};
+    for (size_t k = 0; k < 6; ++k) {
+        T *dst = buf + k * kChunk;
+        const double *src = C.p[k] + base;
+        for (size_t j = 0; j < m; ++j) dst[j] = static_cast<T>(to_float(src[j]));
+        mc[k] = dst;
+    }
+    return mc;
+}
+
+template <class T>
+py::tuple eval_materials(const std::array<darr, 6> &cols, int normalization, unsigned lobes,
+                         const py::array_t<T, py::array::c_style> &wo, const py::array_t<T, py::array::c_style> &wi,
+                         bool want_f, bool want_pdf, const py::object &f_out, const py::object &p_out) {
     const size_t n = rows_of(wo, "wo");
     if (rows_of(wi, "wi") != n) throw std::invalid_argument("pgloss._core: wo and wi differ in length");
-    f64arr f(want_f ? std::vector<py::ssize_t>{static_cast<py::ssize_t>(n), 3} : std::vector<py::ssize_t>{0, 3});
-    f64arr pdf(want_pdf ? static_cast<py::ssize_t>(n) : 0);
-    const double *o = wo.data(), *i = wi.data();
-    double *fp = f.mutable_data(), *pp = pdf.mutable_data();
+    const Columns C = columns_of(cols, n);
+    const auto N = static_cast<py::ssize_t>(n);
+    auto f = output<T>(want_f ? f_out : py::none(), want_f ? 3 * N : 0,
+                       std::vector<py::ssize_t>{want_f ? N : 0, 3}, "f");
+    auto pdf = output<T>(want_pdf ? p_out : py::none(), want_pdf ? N : 0, {want_pdf ? N : 0}, "pdf");
+    py::array_t<std::int8_t> status(N);
+    const T *o = wo.data(), *i = wi.data();
+    T *fp = want_f ? f.mutable_data() : nullptr, *pp = want_pdf ? pdf.mutable_data() : nullptr;
+    auto *sp = reinterpret_cast<signed char *>(status.mutable_data());
     FirstError err;
     SignalCheck sig;
     {
         py::gil_scoped_release nogil;
-        for (size_t j = 0; j < n; ++j) {
-            if (sig.stop(j)) break;
-            const pgloss_vec3 a{to_float(o[3 * j]), to_float(o[3 * j + 1]), to_float(o[3 * j + 2])};
-            const pgloss_vec3 b{to_float(i[3 * j]), to_float(i[3 * j + 1]), to_float(i[3 * j + 2])};
-            pgloss_rgb c{0, 0, 0};
-            float p = 0;
-            pgloss_status st;
-            if (want_f && want_pdf)
-                st = pgloss_eval_pdf(&M.m, a, b, lobes, &c, &p);
-            else if (want_f)
-                st = pgloss_eval(&M.m, a, b, lobes, &c);
-            else
-                st = pgloss_pdf(&M.m, a, b, lobes, &p);
-            if (want_f) {
-                fp[3 * j] = c.r;
-                fp[3 * j + 1] = c.g;
-                fp[3 * j + 2] = c.b;
+        std::vector<T> buf(10 * kChunk);
+        T *ox = buf.data(), *oy = ox + kChunk, *oz = oy + kChunk, *ix = oz + kChunk, *iy = ix + kChunk,
+          *iz = iy + kChunk, *fr = iz + kChunk, *fg = fr + kChunk, *fb = fg + kChunk, *pd = fb + kChunk;
+        std::vector<T> mbuf(6 * kChunk);
+        for (size_t base = 0; base < n; base += kChunk) {
+            if (sig.stop(base)) break;
+            const size_t m = n - base < kChunk ? n - base : kChunk;
+            deinterleave_any(m, o + 3 * base, ox, oy, oz);
+            deinterleave_any(m, i + 3 * base, ix, iy, iz);
+            const auto mc = material_chunk<T>(C, base, m, mbuf.data());
+            auto call = [&](signed char *status_out) -> int {
+                if constexpr (std::is_same_v<T, float>)
+                    return pgloss_py_eval_pdf_batch_materials(
+                        mc.data(), normalization, lobes, m, pgloss_vec3_array{ox, oy, oz}, pgloss_vec3_array{ix, iy, iz},
+                        want_f ? pgloss_rgb_out{fr, fg, fb} : pgloss_rgb_out{nullptr, nullptr, nullptr},
+                        want_pdf ? pd : nullptr, status_out);
+                else
+                    return pgloss_py_eval_pdf_batch_materials_d(
+                        mc.data(), normalization, lobes, m, pgloss_vec3_array_d{ox, oy, oz},
+                        pgloss_vec3_array_d{ix, iy, iz},
+                        want_f ? pgloss_rgb_out_d{fr, fg, fb} : pgloss_rgb_out_d{nullptr, nullptr, nullptr},
+                        want_pdf ? pd : nullptr, status_out);
+            };
+            // Without the status array first (writing it halves the loop's speed); a chunk
+            // with an error runs again with it, for the statuses (the outputs are the same).
+            int st = call(nullptr);
+            std::fill(sp + base, sp + base + m, st < 0 ? kUnwritten : 0);
+            if (st < 0) st = call(sp + base);
+            if (st < 0 && m > 0 && sp[base] == kUnwritten) {
+                // A whole-call error (nothing written): every element gets it.
+                std::fill(sp + base, sp + base + m, static_cast<signed char>(st));
+                std::fill(fr, fr + 3 * kChunk + kChunk, T(0));
             }
-            if (want_pdf) pp[j] = p;
-            err.note(st, static_cast<py::ssize_t>(j));
+            if (want_f) interleave_any(m, fr, fg, fb, fp + 3 * base);
+            if (want_pdf) std::copy(pd, pd + m, pp + base);
+            if (st < 0 && err.status == PGLOSS_OK)
+                for (size_t j = 0; j < m; ++j)
+                    if (sp[base + j] < 0) {
+                        err.note(sp[base + j], static_cast<py::ssize_t>(base + j));
+                        break;
+                    }
         }
     }
     sig.raise_if_interrupted();
-    return py::make_tuple(f, pdf, err.status, err.index);
+    return py::make_tuple(f, pdf, status, err.status, err.index);
 }
 
 // ---------------------------------------------------------------------------------------
 // sample.
 
-py::tuple sample_f32(const Material &M, unsigned lobes, const farr &wo, const farr &u) {
+template <class T>
+py::tuple sample_any(const Material *M, const Columns *C, int normalization, unsigned lobes,
+                     const py::array_t<T, py::array::c_style> &wo, const py::array_t<T, py::array::c_style> &u,
+                     const py::object &wi_out, const py::object &pdf_out, const py::object &weight_out,
+                     const py::object &lobe_out) {
     const size_t n = rows_of(wo, "wo");
     if (rows_of(u, "u") != n) throw std::invalid_argument("pgloss._core: wo and u differ in length");
     const auto N = static_cast<py::ssize_t>(n);
-    farr wi(std::vector<py::ssize_t>{N, 3}), weight(std::vector<py::ssize_t>{N, 3}), pdf(N);
-    py::array_t<std::uint8_t> lobe(N);
-    const float *o = wo.data(), *uu = u.data();
-    float *wp = wi.mutable_data(), *gp = weight.mutable_data(), *pp = pdf.mutable_data();
+    auto wi = output<T>(wi_out, 3 * N, {N, 3}, "wi");
+    auto weight = output<T>(weight_out, 3 * N, {N, 3}, "weight");
+    auto pdf = output<T>(pdf_out, N, {N}, "pdf");
+    auto lobe = output<std::uint8_t>(lobe_out, N, {N}, "lobe");
+    py::array_t<std::int8_t> status(C ? N : 0);
+    const T *o = wo.data(), *uu = u.data();
+    T *wp = wi.mutable_data(), *gp = weight.mutable_data(), *pp = pdf.mutable_data();
     std::uint8_t *lp = lobe.mutable_data();
+    auto *sp = reinterpret_cast<signed char *>(status.mutable_data());
     FirstError err;
     SignalCheck sig;
     {
         py::gil_scoped_release nogil;
-        std::vector<float> buf(13 * kChunk);
-        float *ox = buf.data(), *oy = ox + kChunk, *oz = oy + kChunk, *u0 = oz + kChunk, *u1 = u0 + kChunk,
-              *u2 = u1 + kChunk, *wx = u2 + kChunk, *wy = wx + kChunk, *wz = wy + kChunk, *pd = wz + kChunk,
-              *gr = pd + kChunk, *gg = gr + kChunk, *gb = gg + kChunk;
+        std::vector<T> buf(13 * kChunk);
+        T *ox = buf.data(), *oy = ox + kChunk, *oz = oy + kChunk, *u0 = oz + kChunk, *u1 = u0 + kChunk,
+          *u2 = u1 + kChunk, *wx = u2 + kChunk, *wy = wx + kChunk, *wz = wy + kChunk, *pd = wz + kChunk,
+          *gr = pd + kChunk, *gg = gr + kChunk, *gb = gg + kChunk;
+        std::vector<T> mbuf(C ? 6 * kChunk : 0);
+        std::vector<signed char> chunk_status(C ? 0 : kChunk);
         for (size_t base = 0; base < n; base += kChunk) {
             if (sig.stop(base)) break;
             const size_t m = n - base < kChunk ? n - base : kChunk;
-            deinterleave(m, o + 3 * base, ox, oy, oz);
-            deinterleave(m, uu + 3 * base, u0, u1, u2);
-            const pgloss_status st = pgloss_sample_batch(&M.m, lobes, m, pgloss_vec3_array{ox, oy, oz}, u0, u1, u2,
-                                                         pgloss_vec3_out{wx, wy, wz}, pd, pgloss_rgb_out{gr, gg, gb},
-                                                         lp + base);
-            interleave(m, wx, wy, wz, wp + 3 * base);
-            interleave(m, gr, gg, gb, gp + 3 * base);
-            for (size_t j = 0; j < m; ++j) pp[base + j] = pd[j];
-            if (st < 0 && err.status == PGLOSS_OK) {
-                for (size_t j = 0; j < m; ++j) {
-                    pgloss_sample_record r;
-                    const float uj[3] = {u0[j], u1[j], u2[j]};
-                    const int s = pgloss_sample(&M.m, pgloss_vec3{ox[j], oy[j], oz[j]}, uj, lobes, &r);
-                    if (s < 0) {
-                        err.note(s, static_cast<py::ssize_t>(base + j));
+            deinterleave_any(m, o + 3 * base, ox, oy, oz);
+            deinterleave_any(m, uu + 3 * base, u0, u1, u2);
+            const T *uc[3] = {u0, u1, u2};
+            signed char *cs = C ? sp + base : chunk_status.data();
+            std::array<const T *, 6> mc{};
+            if (C) mc = material_chunk<T>(*C, base, m, mbuf.data());
+            // As eval_materials: without the status array first, again with it on an error.
+            auto call = [&](signed char *status_out) -> int {
+                if constexpr (std::is_same_v<T, float>) {
+                    const pgloss_vec3_array a{ox, oy, oz};
+                    const pgloss_vec3_out wo_{wx, wy, wz};
+                    const pgloss_rgb_out go{gr, gg, gb};
+                    if (C)
+                        return pgloss_py_sample_batch_materials(mc.data(), normalization, lobes, m, a, uc, wo_, pd, go,
+                                                                lp + base, status_out);
+                    const int r = pgloss_sample_batch(&M->m, lobes, m, a, u0, u1, u2, wo_, pd, go, lp + base);
+                    if (r < 0 && status_out) {  // which element? the scalar function, on the error path only
+                        std::fill(status_out, status_out + m, 0);
+                        for (size_t j = 0; j < m; ++j) {
+                            pgloss_sample_record rec;
+                            const float uj[3] = {u0[j], u1[j], u2[j]};
+                            status_out[j] = static_cast<signed char>(
+                                pgloss_sample(&M->m, pgloss_vec3{ox[j], oy[j], oz[j]}, uj, lobes, &rec));
+                            if (status_out[j] < 0) break;
+                        }
+                    }
+                    return r;
+                } else {
+                    const pgloss_vec3_array_d a{ox, oy, oz};
+                    const pgloss_vec3_out_d wo_{wx, wy, wz};
+                    const pgloss_rgb_out_d go{gr, gg, gb};
+                    if (C)
+                        return pgloss_py_sample_batch_materials_d(mc.data(), normalization, lobes, m, a, uc, wo_, pd,
+                                                                  go, lp + base, status_out);
+                    if (!status_out) return pgloss_sample_batch_d(&M->m, lobes, m, a, u0, u1, u2, wo_, pd, go, lp + base);
+                    return pgloss_sample_batch_d_ex(nullptr, &M->m, lobes, m, a, u0, u1, u2, wo_, pd, go, lp + base,
+                                                    status_out);
+                }
+            };
+            int st = call(nullptr);
+            std::fill(cs, cs + m, st < 0 ? kUnwritten : 0);
+            if (st < 0) st = call(cs);
+            if (st < 0 && m > 0 && cs[0] == kUnwritten) {
+                std::fill(cs, cs + m, static_cast<signed char>(st));  // a whole-call error: nothing was written
+                std::fill(wx, wx + m, T(0));
+                std::fill(wy, wy + m, T(0));
+                std::fill(wz, wz + m, T(1));
+                std::fill(pd, pd + m, T(0));
+                std::fill(gr, gr + 3 * kChunk, T(0));
+                std::fill(lp + base, lp + base + m, std::uint8_t(0));
+            }
+            interleave_any(m, wx, wy, wz, wp + 3 * base);
+            interleave_any(m, gr, gg, gb, gp + 3 * base);
+            std::copy(pd, pd + m, pp + base);
+            if (st < 0 && err.status == PGLOSS_OK)
+                for (size_t j = 0; j < m; ++j)
+                    if (cs[j] < 0) {
+                        err.note(cs[j], static_cast<py::ssize_t>(base + j));
                         break;
                     }
-                }
-                err.note(st, static_cast<py::ssize_t>(base));
-            }
+            if (st < 0 && err.status == PGLOSS_OK) err.note(st, static_cast<py::ssize_t>(base));
         }
     }
     sig.raise_if_interrupted();
-    return py::make_tuple(wi, pdf, weight, lobe, err.status, err.index);
-}
-
-py::tuple sample_f64(const Material &M, unsigned lobes, const f64arr &wo, const f64arr &u) {
-    const size_t n = rows_of(wo, "wo");
-    if (rows_of(u, "u") != n) throw std::invalid_argument("pgloss._core: wo and u differ in length");
-    const auto N = static_cast<py::ssize_t>(n);
-    f64arr wi(std::vector<py::ssize_t>{N, 3}), weight(std::vector<py::ssize_t>{N, 3}), pdf(N);
-    py::array_t<std::uint8_t> lobe(N);
-    const double *o = wo.data(), *uu = u.data();
-    double *wp = wi.mutable_data(), *gp = weight.mutable_data(), *pp = pdf.mutable_data();
-    std::uint8_t *lp = lobe.mutable_data();
-    FirstError err;
-    SignalCheck sig;
-    {
-        py::gil_scoped_release nogil;
-        for (size_t j = 0; j < n; ++j) {
-            if (sig.stop(j)) break;
-            const pgloss_vec3 a{to_float(o[3 * j]), to_float(o[3 * j + 1]), to_float(o[3 * j + 2])};
-            const float uj[3] = {to_float(uu[3 * j]), to_float(uu[3 * j + 1]), to_float(uu[3 * j + 2])};
-            pgloss_sample_record r{};
-            const int st = pgloss_sample(&M.m, a, uj, lobes, &r);
-            wp[3 * j] = r.wi.x;
-            wp[3 * j + 1] = r.wi.y;
-            wp[3 * j + 2] = r.wi.z;
-            gp[3 * j] = r.weight.r;
-            gp[3 * j + 1] = r.weight.g;
-            gp[3 * j + 2] = r.weight.b;
-            pp[j] = r.pdf;
-            lp[j] = static_cast<std::uint8_t>(r.lobe);
-            err.note(st, static_cast<py::ssize_t>(j));
-        }
-    }
-    sig.raise_if_interrupted();
+    if (C) return py::make_tuple(wi, pdf, weight, lobe, status, err.status, err.index);
     return py::make_tuple(wi, pdf, weight, lobe, err.status, err.index);
 }
 
@@ -479,14 +704,60 @@ PYBIND11_MODULE(_core, mod) {
     mod.def("specular_probability",
             [](const Material &M, unsigned lobes) { return pgloss_specular_probability(&M.m, lobes); });
 
-    mod.def("eval_f32", &eval_f32);
-    mod.def("eval_f64", &eval_f64);
-    mod.def("sample_f32", &sample_f32);
-    mod.def("sample_f64", &sample_f64);
+    mod.def("eval_f32", &eval_uniform<float>, py::arg("m"), py::arg("lobes"), py::arg("wo"), py::arg("wi"),
+            py::arg("want_f"), py::arg("want_pdf"), py::arg("f_out") = py::none(), py::arg("pdf_out") = py::none());
+    mod.def("eval_f64", &eval_uniform<double>, py::arg("m"), py::arg("lobes"), py::arg("wo"), py::arg("wi"),
+            py::arg("want_f"), py::arg("want_pdf"), py::arg("f_out") = py::none(), py::arg("pdf_out") = py::none());
+    mod.def("eval_materials_f32",
+            [](darr r, darr g, darr b, darr rs, darr ax, darr ay, int norm, unsigned lobes, const farr &wo,
+               const farr &wi, bool want_f, bool want_pdf, py::object f_out, py::object p_out) {
+                return eval_materials<float>({r, g, b, rs, ax, ay}, norm, lobes, wo, wi, want_f, want_pdf, f_out, p_out);
+            });
+    mod.def("eval_materials_f64",
+            [](darr r, darr g, darr b, darr rs, darr ax, darr ay, int norm, unsigned lobes, const f64arr &wo,
+               const f64arr &wi, bool want_f, bool want_pdf, py::object f_out, py::object p_out) {
+                return eval_materials<double>({r, g, b, rs, ax, ay}, norm, lobes, wo, wi, want_f, want_pdf, f_out,
+                                              p_out);
+            });
+    mod.def(
+        "sample_f32",
+        [](const Material &M, unsigned lobes, const farr &wo, const farr &u, py::object a, py::object b, py::object c,
+           py::object d) { return sample_any<float>(&M, nullptr, 0, lobes, wo, u, a, b, c, d); },
+        py::arg("m"), py::arg("lobes"), py::arg("wo"), py::arg("u"), py::arg("wi_out") = py::none(),
+        py::arg("pdf_out") = py::none(), py::arg("weight_out") = py::none(), py::arg("lobe_out") = py::none());
+    mod.def(
+        "sample_f64",
+        [](const Material &M, unsigned lobes, const f64arr &wo, const f64arr &u, py::object a, py::object b,
+           py::object c, py::object d) { return sample_any<double>(&M, nullptr, 0, lobes, wo, u, a, b, c, d); },
+        py::arg("m"), py::arg("lobes"), py::arg("wo"), py::arg("u"), py::arg("wi_out") = py::none(),
+        py::arg("pdf_out") = py::none(), py::arg("weight_out") = py::none(), py::arg("lobe_out") = py::none());
+    mod.def("sample_materials_f32", [](darr r, darr g, darr b, darr rs, darr ax, darr ay, int norm, unsigned lobes,
+                                       const farr &wo, const farr &u, py::object a, py::object bb, py::object c,
+                                       py::object d) {
+        const Columns C = columns_of({r, g, b, rs, ax, ay}, rows_of(wo, "wo"));
+        return sample_any<float>(nullptr, &C, norm, lobes, wo, u, a, bb, c, d);
+    });
+    mod.def("sample_materials_f64", [](darr r, darr g, darr b, darr rs, darr ax, darr ay, int norm, unsigned lobes,
+                                       const f64arr &wo, const f64arr &u, py::object a, py::object bb, py::object c,
+                                       py::object d) {
+        const Columns C = columns_of({r, g, b, rs, ax, ay}, rows_of(wo, "wo"));
+        return sample_any<double>(nullptr, &C, norm, lobes, wo, u, a, bb, c, d);
+    });
+    // One pgloss_eval_pdf call (the scalar reference: float directions, double inside, float
+    // results), as the C tool calls it: python -m pgloss eval / demo print exactly its numbers.
+    mod.def("eval_pdf_reference", [](const Material &M, unsigned lobes, std::array<float, 3> wo,
+                                     std::array<float, 3> wi) {
+        pgloss_rgb f{0, 0, 0};
+        float pdf = 0;
+        const int st = pgloss_eval_pdf(&M.m, pgloss_vec3{wo[0], wo[1], wo[2]}, pgloss_vec3{wi[0], wi[1], wi[2]}, lobes,
+                                       &f, &pdf);
+        return py::make_tuple(py::make_tuple(f.r, f.g, f.b), pdf, st);
+    });
     mod.def("time_eval_batch", &time_eval_batch,
             "Seconds per repetition of pgloss_eval_batch on (3, n) float32 SoA buffers (benchmark helper).");
 
-    // Perceptual and colour functions (double), element-wise.
+    // Perceptual and colour functions (double), element-wise: the batched core functions
+    // (pgloss/perceptual_batch.h) where the core has one, else the scalar function per element.
     mod.def("lightness_from_luminance", [](darr Y) {
         return vmap<1, 1>({Y}, [](const double *x, double *y) { return (int)pgloss_lightness_from_luminance(x[0], &y[0]); });
     });
@@ -502,14 +773,20 @@ PYBIND11_MODULE(_core, mod) {
         });
     });
     mod.def("gloss_from_physical", [](darr rd, darr rs, darr a) {
-        return vmap<3, 3>({rd, rs, a}, [](const double *x, double *y) {
-            return (int)pgloss_gloss_from_physical(x[0], x[1], x[2], &y[0], &y[1], &y[2]);
-        });
+        return bmap<3, 3>(
+            {rd, rs, a},
+            [](size_t m, const double *const *x, double *const *y, signed char *st) {
+                return (int)pgloss_gloss_from_physical_batch(m, x[0], x[1], x[2], y[0], y[1], y[2], st);
+            },
+            [](const double *x, double *y) { return (int)pgloss_gloss_from_physical(x[0], x[1], x[2], &y[0], &y[1], &y[2]); });
     });
     mod.def("physical_from_gloss", [](darr L, darr c, darr d) {
-        return vmap<3, 3>({L, c, d}, [](const double *x, double *y) {
-            return (int)pgloss_physical_from_gloss(x[0], x[1], x[2], &y[0], &y[1], &y[2]);
-        });
+        return bmap<3, 3>(
+            {L, c, d},
+            [](size_t m, const double *const *x, double *const *y, signed char *st) {
+                return (int)pgloss_physical_from_gloss_batch(m, x[0], x[1], x[2], y[0], y[1], y[2], st);
+            },
+            [](const double *x, double *y) { return (int)pgloss_physical_from_gloss(x[0], x[1], x[2], &y[0], &y[1], &y[2]); });
     });
     mod.def("gloss_distance", [](darr c1, darr d1, darr c2, darr d2) {
         return vmap<4, 1>({c1, d1, c2, d2}, [](const double *x, double *y) {
@@ -517,12 +794,20 @@ PYBIND11_MODULE(_core, mod) {
         });
     });
     mod.def("envelope_contrast", [](darr L) {
-        return vmap<1, 1>({L}, [](const double *x, double *y) { return (int)pgloss_envelope_contrast(x[0], &y[0]); });
+        return bmap<1, 1>(
+            {L},
+            [](size_t m, const double *const *x, double *const *y, signed char *st) {
+                return (int)pgloss_envelope_contrast_batch(m, x[0], y[0], st);
+            },
+            [](const double *x, double *y) { return (int)pgloss_envelope_contrast(x[0], &y[0]); });
     });
     mod.def("match_gloss", [](darr rd, darr rs, darr L) {
-        return vmap<3, 2>({rd, rs, L}, [](const double *x, double *y) {
-            return (int)pgloss_match_gloss(x[0], x[1], x[2], &y[0], &y[1]);
-        });
+        return bmap<3, 2>(
+            {rd, rs, L},
+            [](size_t m, const double *const *x, double *const *y, signed char *st) {
+                return (int)pgloss_match_gloss_batch(m, x[0], x[1], x[2], y[0], y[1], st);
+            },
+            [](const double *x, double *y) { return (int)pgloss_match_gloss(x[0], x[1], x[2], &y[0], &y[1]); });
     });
     mod.def("isogloss_contour", [](double c0, double d0, double D, size_t n) {
         darr c(static_cast<py::ssize_t>(n)), d(static_cast<py::ssize_t>(n));
@@ -534,45 +819,61 @@ PYBIND11_MODULE(_core, mod) {
         }
         return py::make_tuple(c, d, st);
     });
-    // The colour functions take the working space (pgloss_color_space) as a last column.
-    mod.def("rgb_from_lab", [](darr L, darr a, darr b, darr space) {
-        return vmap<4, 3>({L, a, b, space}, [](const double *x, double *y) {
-            return pgloss_py_rgb_from_lab(x, static_cast<int>(x[3]), y);
-        });
+    // The colour functions take the working space (pgloss_color_space) as an int.
+    mod.def("rgb_from_lab", [](darr L, darr a, darr b, int space) {
+        return bmap<3, 3>(
+            {L, a, b},
+            [space](size_t m, const double *const *x, double *const *y, signed char *st) {
+                return pgloss_py_rgb_from_lab_batch(m, x, space, y, st);
+            },
+            [space](const double *x, double *y) { return pgloss_py_rgb_from_lab(x, space, y); });
     });
-    mod.def("lab_from_rgb", [](darr r, darr g, darr b, darr space) {
-        return vmap<4, 3>({r, g, b, space}, [](const double *x, double *y) {
-            return pgloss_py_lab_from_rgb(x, static_cast<int>(x[3]), y);
-        });
+    mod.def("lab_from_rgb", [](darr r, darr g, darr b, int space) {
+        return bmap<3, 3>(
+            {r, g, b},
+            [space](size_t m, const double *const *x, double *const *y, signed char *st) {
+                return pgloss_py_lab_from_rgb_batch(m, x, space, y, st);
+            },
+            [space](const double *x, double *y) { return pgloss_py_lab_from_rgb(x, space, y); });
     });
-    mod.def("luminance", [](darr r, darr g, darr b, darr space) {
-        return vmap<4, 1>({r, g, b, space}, [](const double *x, double *y) {
-            return pgloss_py_luminance(x, static_cast<int>(x[3]), &y[0]);
-        });
+    mod.def("luminance", [](darr r, darr g, darr b, int space) {
+        return vmap<3, 1>({r, g, b}, [space](const double *x, double *y) { return pgloss_py_luminance(x, space, &y[0]); });
     });
-    // Structs: physical = (rho_d r, g, b, rho_s, alpha_x, alpha_y, normalization); perceptual = (L, a, b, c, d).
-    mod.def("check_physical", [](darr r, darr g, darr b, darr rs, darr ax, darr ay, darr norm) {
-        return vmap<7, 0>({r, g, b, rs, ax, ay, norm}, [](const double *x, double *) {
-            return pgloss_py_check_physical(x, static_cast<int>(x[6]));
-        });
+    // Structs: physical = (rho_d r, g, b, rho_s, alpha_x, alpha_y) columns and the
+    // normalisation; perceptual = (L, a, b, c, d) columns.
+    mod.def("check_physical", [](darr r, darr g, darr b, darr rs, darr ax, darr ay, int norm) {
+        return bmap<6, 0>(
+            {r, g, b, rs, ax, ay},
+            [norm](size_t m, const double *const *x, double *const *, signed char *st) {
+                return pgloss_py_check_physical_batch(m, x, norm, st);
+            },
+            [norm](const double *x, double *) { return pgloss_py_check_physical(x, norm); });
     });
-    mod.def("check_perceptual", [](darr L, darr a, darr b, darr c, darr d, darr space) {
-        return vmap<6, 0>({L, a, b, c, d, space}, [](const double *x, double *) {
-            return pgloss_py_check_perceptual(x, static_cast<int>(x[5]));
-        });
+    mod.def("check_perceptual", [](darr L, darr a, darr b, darr c, darr d, int space) {
+        return bmap<5, 0>(
+            {L, a, b, c, d},
+            [space](size_t m, const double *const *x, double *const *, signed char *st) {
+                return pgloss_py_check_perceptual_batch(m, x, space, st);
+            },
+            [space](const double *x, double *) { return pgloss_py_check_perceptual(x, space); });
     });
-    mod.def("physical_from_perceptual", [](darr L, darr a, darr b, darr c, darr d, darr norm, darr space) {
-        return vmap<7, 7>({L, a, b, c, d, norm, space}, [](const double *x, double *y) {
-            int n = 0;
-            const int st = pgloss_py_physical_from_perceptual(x, static_cast<int>(x[5]), static_cast<int>(x[6]), y, &n);
-            y[6] = n;
-            return st;
-        });
+    mod.def("physical_from_perceptual", [](darr L, darr a, darr b, darr c, darr d, int norm, int space) {
+        return bmap<5, 6>(
+            {L, a, b, c, d},
+            [norm, space](size_t m, const double *const *x, double *const *y, signed char *st) {
+                return pgloss_py_physical_from_perceptual_batch(m, x, norm, space, y, st);
+            },
+            [norm, space](const double *x, double *y) {
+                int n = 0;
+                return pgloss_py_physical_from_perceptual(x, norm, space, y, &n);
+            });
     });
-    mod.def("perceptual_from_physical", [](darr r, darr g, darr b, darr rs, darr ax, darr ay, darr norm,
-                                            darr space) {
-        return vmap<8, 5>({r, g, b, rs, ax, ay, norm, space}, [](const double *x, double *y) {
-            return pgloss_py_perceptual_from_physical(x, static_cast<int>(x[6]), static_cast<int>(x[7]), y);
-        });
+    mod.def("perceptual_from_physical", [](darr r, darr g, darr b, darr rs, darr ax, darr ay, int norm, int space) {
+        return bmap<6, 5>(
+            {r, g, b, rs, ax, ay},
+            [norm, space](size_t m, const double *const *x, double *const *y, signed char *st) {
+                return pgloss_py_perceptual_from_physical_batch(m, x, norm, space, y, st);
+            },
+            [norm, space](const double *x, double *y) { return pgloss_py_perceptual_from_physical(x, norm, space, y); });
     });
 }

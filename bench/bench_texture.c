@@ -1,0 +1,295 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
+/* pgloss texture benchmark: whole textures of paints through the batched entry points of
+ * pgloss/batch_materials.h and pgloss/perceptual_batch.h, as paired comparisons (the two
+ * sides of a row run alternately, repetition by repetition, and the median of each is
+ * reported, so that a loaded host moves both alike):
+ *   - eval_pdf with one material per element against the uniform-material batch (target <= 2x);
+ *   - the double path against the float one, uniform and per element (target <= 2x);
+ *   - the batched perceptual conversions, ns per element, with validity and statuses, next to
+ *     a bare C loop of the same formulas without any check (eqs. 6-7 plus Lab -> RGB; eq. 4).
+ * Prints Markdown tables.
+ *   bench_texture [--quick]
+ */
+#define _POSIX_C_SOURCE 199309L
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "pgloss/pgloss.h"
+
+static double now_s(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    const double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+typedef void (*bench_fn)(void *ctx);
+static int g_reps = 15;
+static size_t g_n = (size_t)1 << 16;
+
+/* Median ns per element of a and b, run alternately g_reps times (one call each, after a
+ * warm-up call). */
+static void paired(bench_fn a, void *ca, bench_fn b, void *cb, double *na, double *nb)
+{
+    double ta[64], tb[64];
+    a(ca);
+    b(cb);
+    for (int r = 0; r < g_reps; ++r) {
+        double t0 = now_s();
+        a(ca);
+        ta[r] = now_s() - t0;
+        t0 = now_s();
+        b(cb);
+        tb[r] = now_s() - t0;
+    }
+    qsort(ta, (size_t)g_reps, sizeof ta[0], cmp_double);
+    qsort(tb, (size_t)g_reps, sizeof tb[0], cmp_double);
+    *na = 1e9 * ta[g_reps / 2] / (double)g_n;
+    *nb = 1e9 * tb[g_reps / 2] / (double)g_n;
+}
+
+static double urand(unsigned *s)
+{
+    *s = *s * 1664525u + 1013904223u;
+    return (double)(*s >> 8) / 16777216.0;
+}
+
+/* ---- the data: a texture of paints and a direction pair per texel ------------------------ */
+
+typedef struct data {
+    size_t n;
+    float *m[6], *o[3], *i[3];
+    double *md[6], *od[3], *id[3];
+    pgloss_material mat;
+    pgloss_batch_options opt;
+    float *fr, *fg, *fb, *pdf;
+    double *dr, *dg, *db, *dpdf;
+    /* perceptual */
+    double *L, *a, *b, *c, *d, *out[6];
+    signed char *status;
+} data;
+
+static void *xmalloc(size_t bytes)
+{
+    void *p = malloc(bytes);
+    if (!p) {
+        fprintf(stderr, "out of memory\n");
+        exit(1);
+    }
+    return p;
+}
+
+static void make_data(data *D, size_t n)
+{
+    unsigned s = 12345u;
+    D->n = n;
+    for (int k = 0; k < 6; ++k) {
+        D->m[k] = xmalloc(n * sizeof(float));
+        D->md[k] = xmalloc(n * sizeof(double));
+        D->out[k] = xmalloc(n * sizeof(double));
+    }
+    for (int k = 0; k < 3; ++k) {
+        D->o[k] = xmalloc(n * sizeof(float));
+        D->i[k] = xmalloc(n * sizeof(float));
+        D->od[k] = xmalloc(n * sizeof(double));
+        D->id[k] = xmalloc(n * sizeof(double));
+    }
+    D->fr = xmalloc(n * sizeof(float)), D->fg = xmalloc(n * sizeof(float));
+    D->fb = xmalloc(n * sizeof(float)), D->pdf = xmalloc(n * sizeof(float));
+    D->dr = xmalloc(n * sizeof(double)), D->dg = xmalloc(n * sizeof(double));
+    D->db = xmalloc(n * sizeof(double)), D->dpdf = xmalloc(n * sizeof(double));
+    D->L = xmalloc(n * sizeof(double)), D->a = xmalloc(n * sizeof(double));
+    D->b = xmalloc(n * sizeof(double)), D->c = xmalloc(n * sizeof(double));
+    D->d = xmalloc(n * sizeof(double));
+    D->status = xmalloc(n);
+    for (size_t j = 0; j < n; ++j) {
+        const double v[6] = {0.05 + 0.6 * urand(&s), 0.05 + 0.6 * urand(&s), 0.05 + 0.6 * urand(&s),
+                             0.1 * urand(&s), 0.02 + 0.2 * urand(&s), 0.0};
+        for (int k = 0; k < 6; ++k) {
+            D->m[k][j] = (float)(k == 5 ? v[4] : v[k]);
+            D->md[k][j] = D->m[k][j];
+        }
+        /* wo over the hemisphere, wi near the mirror direction half the time (the lobe) */
+        const double co = 0.05 + 0.95 * urand(&s), po = 6.283185307 * urand(&s);
+        const double so = sqrt(1 - co * co);
+        const double ox = so * cos(po), oy = so * sin(po), oz = co;
+        double ix, iy, iz;
+        if (j & 1) {
+            const double ci = 0.05 + 0.95 * urand(&s), pi = 6.283185307 * urand(&s), si = sqrt(1 - ci * ci);
+            ix = si * cos(pi), iy = si * sin(pi), iz = ci;
+        } else {
+            ix = -ox + 0.05 * (urand(&s) - 0.5), iy = -oy + 0.05 * (urand(&s) - 0.5), iz = oz;
+            const double l = sqrt(ix * ix + iy * iy + iz * iz);
+            ix /= l, iy /= l, iz /= l;
+        }
+        D->o[0][j] = (float)ox, D->o[1][j] = (float)oy, D->o[2][j] = (float)oz;
+        D->i[0][j] = (float)ix, D->i[1][j] = (float)iy, D->i[2][j] = (float)iz;
+        D->od[0][j] = ox, D->od[1][j] = oy, D->od[2][j] = oz;
+        D->id[0][j] = ix, D->id[1][j] = iy, D->id[2][j] = iz;
+        /* paints inside gloss space: L* 20..90, small chroma, c below the envelope, d 0.8..1 */
+        D->L[j] = 20 + 70 * urand(&s);
+        D->a[j] = 20 * (urand(&s) - 0.5);
+        D->b[j] = 20 * (urand(&s) - 0.5);
+        D->c[j] = 0.08 * urand(&s);
+        D->d[j] = 0.8 + 0.19 * urand(&s);
+    }
+    const pgloss_physical p = {{0.4, 0.3, 0.2}, 0.05, 0.08, 0.08, PGLOSS_NORM_WARD};
+    pgloss_material_init(&D->mat, &p);
+    D->opt.precision = PGLOSS_PRECISION_FLOAT;
+    D->opt.isa = PGLOSS_ISA_AUTO;
+}
+
+static pgloss_material_array mats_f(const data *D)
+{
+    const pgloss_material_array m = {D->m[0], D->m[1], D->m[2], D->m[3], D->m[4], D->m[5], PGLOSS_NORM_WARD};
+    return m;
+}
+
+static pgloss_physical_array mats_d(const data *D)
+{
+    const pgloss_physical_array m = {D->md[0], D->md[1], D->md[2], D->md[3], D->md[4], D->md[5], PGLOSS_NORM_WARD};
+    return m;
+}
+
+static void run_uniform_f(void *ctx)
+{
+    data *D = ctx;
+    const pgloss_vec3_array wo = {D->o[0], D->o[1], D->o[2]}, wi = {D->i[0], D->i[1], D->i[2]};
+    const pgloss_rgb_out f = {D->fr, D->fg, D->fb};
+    pgloss_eval_pdf_batch_ex(&D->opt, &D->mat, PGLOSS_LOBE_ALL, D->n, wo, wi, f, D->pdf);
+}
+
+static void run_materials_f(void *ctx)
+{
+    data *D = ctx;
+    const pgloss_vec3_array wo = {D->o[0], D->o[1], D->o[2]}, wi = {D->i[0], D->i[1], D->i[2]};
+    const pgloss_rgb_out f = {D->fr, D->fg, D->fb};
+    const pgloss_material_array m = mats_f(D);
+    pgloss_eval_pdf_batch_materials_ex(&D->opt, &m, PGLOSS_LOBE_ALL, D->n, wo, wi, f, D->pdf, NULL);
+}
+
+static void run_uniform_d(void *ctx)
+{
+    data *D = ctx;
+    const pgloss_vec3_array_d wo = {D->od[0], D->od[1], D->od[2]}, wi = {D->id[0], D->id[1], D->id[2]};
+    const pgloss_rgb_out_d f = {D->dr, D->dg, D->db};
+    pgloss_eval_pdf_batch_d_ex(&D->opt, &D->mat, PGLOSS_LOBE_ALL, D->n, wo, wi, f, D->dpdf, NULL);
+}
+
+static void run_materials_d(void *ctx)
+{
+    data *D = ctx;
+    const pgloss_vec3_array_d wo = {D->od[0], D->od[1], D->od[2]}, wi = {D->id[0], D->id[1], D->id[2]};
+    const pgloss_rgb_out_d f = {D->dr, D->dg, D->db};
+    const pgloss_physical_array m = mats_d(D);
+    pgloss_eval_pdf_batch_materials_d_ex(&D->opt, &m, PGLOSS_LOBE_ALL, D->n, wo, wi, f, D->dpdf, NULL);
+}
+
+/* ---- perceptual ------------------------------------------------------------------------- */
+
+static void run_pfp(void *ctx)
+{
+    data *D = ctx;
+    const pgloss_perceptual_array q = {D->L, D->a, D->b, D->c, D->d};
+    const pgloss_physical_out p = {D->out[0], D->out[1], D->out[2], D->out[3], D->out[4], NULL};
+    pgloss_physical_from_perceptual_batch(D->n, q, PGLOSS_NORM_WARD, p, D->status);
+}
+
+static void run_check_perceptual(void *ctx)
+{
+    data *D = ctx;
+    const pgloss_perceptual_array q = {D->L, D->a, D->b, D->c, D->d};
+    pgloss_check_perceptual_batch(D->n, q, D->status);
+}
+
+/* eqs. 6-7 and CIELAB -> linear Rec. 709 without a check: what a numpy user writes. */
+static void run_bare_pfp(void *ctx)
+{
+    data *D = ctx;
+    const double M[3][3] = {{3.2409699419045213, -1.5373831775700935, -0.49861076029300328},
+                            {-0.96924363628087983, 1.8759675015077207, 0.041555057407175613},
+                            {0.055630079696993608, -0.20397695888897656, 1.0569715142428786}};
+    const double wx = 0.3127 / 0.3290, wz = 0.3583 / 0.3290, dl = 6.0 / 29.0;
+    for (size_t j = 0; j < D->n; ++j) {
+        const double fy = (D->L[j] + 16.0) / 116.0, fx = fy + D->a[j] / 500.0, fz = fy - D->b[j] / 200.0;
+        const double x = wx * (fx > dl ? fx * fx * fx : 3 * dl * dl * (fx - 4.0 / 29.0));
+        const double y = D->L[j] > 8.0 ? fy * fy * fy : D->L[j] / (24389.0 / 27.0);
+        const double z = wz * (fz > dl ? fz * fz * fz : 3 * dl * dl * (fz - 4.0 / 29.0));
+        for (int k = 0; k < 3; ++k)
+            D->out[k][j] = M[k][0] * x + M[k][1] * y + M[k][2] * z;
+        const double bb = cbrt(0.5 * y), c = D->c[j];
+        D->out[3][j] = c * (c * c + 3 * c * bb + 3 * bb * bb);
+        D->out[4][j] = 1.0 - D->d[j];
+    }
+}
+
+static void run_gfp(void *ctx)
+{
+    data *D = ctx;
+    /* ρd: the texture's diffuse red channel as an achromatic ρd, ρs, α */
+    pgloss_gloss_from_physical_batch(D->n, D->md[0], D->md[3], D->md[4], D->out[0], D->out[1], D->out[2],
+                                     D->status);
+}
+
+static void run_bare_gfp(void *ctx)
+{
+    data *D = ctx;
+    for (size_t j = 0; j < D->n; ++j) {
+        const double rd = D->md[0][j], rs = D->md[3][j];
+        D->out[1][j] = cbrt(rs + 0.5 * rd) - cbrt(0.5 * rd); /* eq. 4 */
+        D->out[0][j] = 116.0 * cbrt(rd) - 16.0;
+        D->out[2][j] = 1.0 - D->md[4][j];
+    }
+}
+
+static void run_rgb_from_lab(void *ctx)
+{
+    data *D = ctx;
+    const pgloss_lab_array lab = {D->L, D->a, D->b};
+    const pgloss_rgb_out_d rgb = {D->out[0], D->out[1], D->out[2]};
+    pgloss_rgb_from_lab_batch(D->n, lab, rgb, D->status);
+}
+
+int main(int argc, char **argv)
+{
+    for (int k = 1; k < argc; ++k)
+        if (!strcmp(argv[k], "--quick")) {
+            g_reps = 5;
+            g_n = (size_t)1 << 14;
+        }
+    data D;
+    make_data(&D, g_n);
+    printf("### Textures: per-element materials, float64, batched perceptual (bench_texture)\n\n");
+    printf("n = %zu texels per call, ISA %s, median of %d paired repetitions (ns per texel).\n\n", g_n,
+           pgloss_isa_name(pgloss_isa_best()), g_reps);
+    double a, b;
+    printf("| eval_pdf (f and pdf), WARD | A ns | B ns | B / A |\n|---|---:|---:|---:|\n");
+    paired(run_uniform_f, &D, run_materials_f, &D, &a, &b);
+    printf("| float: A uniform material, B one material per texel | %.2f | %.2f | %.2f |\n", a, b, b / a);
+    paired(run_uniform_f, &D, run_uniform_d, &D, &a, &b);
+    printf("| uniform material: A float, B double | %.2f | %.2f | %.2f |\n", a, b, b / a);
+    paired(run_materials_f, &D, run_materials_d, &D, &a, &b);
+    printf("| one material per texel: A float, B double | %.2f | %.2f | %.2f |\n", a, b, b / a);
+    paired(run_uniform_f, &D, run_materials_d, &D, &a, &b);
+    printf("| A float uniform, B double per texel | %.2f | %.2f | %.2f |\n\n", a, b, b / a);
+
+    printf("| perceptual (double) | A: pgloss batch, ns | B: bare C loop, no checks, ns | A / B |\n|---|---:|---:|---:|\n");
+    paired(run_pfp, &D, run_bare_pfp, &D, &a, &b);
+    printf("| physical_from_perceptual_batch (validity, statuses) vs eqs. 6-7 + Lab->RGB | %.2f | %.2f | %.2f |\n", a, b,
+           a / b);
+    paired(run_gfp, &D, run_bare_gfp, &D, &a, &b);
+    printf("| gloss_from_physical_batch vs eq. 4 + L* + eq. 3 | %.2f | %.2f | %.2f |\n", a, b, a / b);
+    paired(run_check_perceptual, &D, run_rgb_from_lab, &D, &a, &b);
+    printf("| check_perceptual_batch (A) and rgb_from_lab_batch (B) | %.2f | %.2f | %.2f |\n", a, b, a / b);
+    return 0;
+}

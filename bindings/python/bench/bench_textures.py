@@ -1,0 +1,163 @@
+#!/usr/bin/env python3
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
+"""Benchmark (issue 18): whole textures through the Python package, against numpy's bare
+formulas, all in one run. Not a test: it prints a Markdown table.
+
+Rows (median of --repeat runs after a warm-up, time.perf_counter around the public call):
+
+* ``physical_from_perceptual`` on N² texels (default 4096²) with every element's validity
+  (``Perceptual.to_physical(errors="status")``: LIGHTNESS, NEGATIVE, ALPHA, GAMUT… per texel),
+  and with the full model check added (``Perceptual.check()``: envelope and energy too), against
+  numpy's bare eqs. 6–7 (Y = f⁻¹(L*), ρs = (c + ∛(Y/2))³ − Y/2, α = 1 − d) plus Lab → linear
+  Rec. 709 RGB, without any check. Target: pgloss (with validity) ≤ numpy bare.
+* ``gloss_from_physical`` on N² paints against numpy's bare eq. 4 (c = ∛(ρs + ρd/2) − ∛(ρd/2),
+  c alone). Target: ≤ numpy.
+* ``eval`` on N²/16 direction pairs: one material for all (the uniform batch) and one material per
+  pair (an array ``Physical``), float32. Target: per-element ≤ 2× uniform.
+* float64 against float32, uniform and per-element materials. Target: float64 ≤ 2× float32.
+
+    python bindings/python/bench/bench_textures.py [--size 4096] [--repeat 5] [--csv FILE]
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import statistics
+import sys
+import time
+from typing import Callable, List, Tuple
+
+import numpy as np
+
+import pgloss
+
+
+def timed(fn: Callable[[], object], repeat: int) -> float:
+    fn()
+    ts = []
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        fn()
+        ts.append(time.perf_counter() - t0)
+    return statistics.median(ts)
+
+
+# numpy's bare formulas (CIE 1976 with the exact ε, κ; D65 of Rec. 709; the XYZ → linear
+# Rec. 709 matrix of IEC 61966-2-1).
+_D65 = (0.95047, 1.0, 1.08883)
+_XYZ_TO_RGB = np.array([[3.2404542, -1.5371385, -0.4985314],
+                        [-0.9692660, 1.8760108, 0.0415560],
+                        [0.0556434, -0.2040259, 1.0572252]])
+_EPS_CBRT = 6.0 / 29.0
+
+
+def numpy_physical_from_perceptual(L, a, b, c, d):
+    fy = (L + 16.0) / 116.0
+    fx = fy + a / 500.0
+    fz = fy - b / 200.0
+
+    def finv(t):
+        return np.where(t > _EPS_CBRT, t * t * t, 3.0 * _EPS_CBRT ** 2 * (t - 4.0 / 29.0))
+
+    X, Y, Z = _D65[0] * finv(fx), finv(fy), _D65[2] * finv(fz)
+    M = _XYZ_TO_RGB
+    r = M[0, 0] * X + M[0, 1] * Y + M[0, 2] * Z
+    g = M[1, 0] * X + M[1, 1] * Y + M[1, 2] * Z
+    bb = M[2, 0] * X + M[2, 1] * Y + M[2, 2] * Z
+    h = 0.5 * Y
+    rho_s = (c + np.cbrt(h)) ** 3 - h  # eq. 7
+    alpha = 1.0 - d  # eq. 8
+    return r, g, bb, rho_s, alpha
+
+
+def numpy_contrast_gloss(rho_d, rho_s):
+    h = 0.5 * rho_d
+    return np.cbrt(rho_s + h) - np.cbrt(h)  # eq. 4
+
+
+def directions(rng: np.random.Generator, n: int) -> np.ndarray:
+    v = rng.normal(size=(n, 3))
+    v[:, 2] = np.abs(v[:, 2]) + 0.05
+    return v / np.linalg.norm(v, axis=1, keepdims=True)
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--size", type=int, default=4096, help="texture side N (N² texels; default 4096)")
+    ap.add_argument("--repeat", type=int, default=5)
+    ap.add_argument("--csv", help="also write the rows as CSV")
+    args = ap.parse_args(argv)
+    N, rep = args.size, args.repeat
+    n = N * N
+    rng = np.random.default_rng(18)
+    rows: List[Tuple[str, str, float, str, float, str]] = []
+
+    def row(what: str, ours: str, t_ours: float, ref: str, t_ref: float, target: str) -> None:
+        rows.append((what, ours, t_ours, ref, t_ref, target))
+
+    # A texture of paints inside the gamut and envelope mostly; a few out on purpose.
+    L = rng.uniform(20.0, 80.0, (N, N))
+    a = rng.uniform(-20.0, 20.0, (N, N))
+    b = rng.uniform(-20.0, 20.0, (N, N))
+    c = rng.uniform(0.0, 0.08, (N, N))
+    d = rng.uniform(0.85, 0.99, (N, N))
+    a[::97, ::89] = 180.0  # out of gamut
+    tex = pgloss.Perceptual(L, a, b, c, d)
+
+    t_np = timed(lambda: numpy_physical_from_perceptual(L, a, b, c, d), rep)
+    t_pg = timed(lambda: tex.to_physical(errors="status"), rep)
+    t_pg_check = timed(lambda: (tex.to_physical(errors="status"), tex.check()), rep)
+    row(f"physical_from_perceptual, {N}² texels", "to_physical(errors=\"status\") (validity per texel)", t_pg,
+        "numpy eqs. 6–7 + Lab→RGB, no checks", t_np, "≤ 1")
+    row(f"physical_from_perceptual + check, {N}² texels", "to_physical + check() (full model check)", t_pg_check,
+        "numpy eqs. 6–7 + Lab→RGB, no checks", t_np, "")
+
+    rd = rng.uniform(0.0, 0.9, n)
+    rs = rng.uniform(0.0, 0.1, n)
+    al = rng.uniform(0.02, 0.2, n)
+    t_np = timed(lambda: numpy_contrast_gloss(rd, rs), rep)
+    t_pg = timed(lambda: pgloss.gloss_from_physical(rd, rs, al, errors="status"), rep)
+    row(f"gloss_from_physical, {n:,} paints", "gloss_from_physical (L, c, d + statuses)", t_pg,
+        "numpy eq. 4 (c only)", t_np, "≤ 1")
+
+    m = max(n // 16, 1 << 16)
+    wo64, wi64 = directions(rng, m), directions(rng, m)
+    wo32, wi32 = wo64.astype(np.float32), wi64.astype(np.float32)
+    uniform = pgloss.Physical((0.5, 0.3, 0.1), 0.05, 0.1)
+    per = pgloss.Physical(rng.uniform(0.0, 0.8, (m, 3)), rng.uniform(0.0, 0.1, m),
+                          alpha_x=rng.uniform(0.03, 0.2, m), alpha_y=rng.uniform(0.03, 0.2, m))
+    f32 = np.empty((m, 3), np.float32)
+    f64 = np.empty((m, 3), np.float64)
+    t_u32 = timed(lambda: pgloss.eval(uniform, wo32, wi32, out=f32), rep)
+    t_p32 = timed(lambda: pgloss.eval(per, wo32, wi32, out=f32), rep)
+    t_u64 = timed(lambda: pgloss.eval(uniform, wo64, wi64, out=f64), rep)
+    t_p64 = timed(lambda: pgloss.eval(per, wo64, wi64, out=f64), rep)
+    row(f"eval, {m:,} pairs, float32", "one material per pair", t_p32, "one material for all", t_u32, "≤ 2")
+    row(f"eval, {m:,} pairs, one material", "float64 (vectorised double)", t_u64, "float32", t_u32, "≤ 2")
+    row(f"eval, {m:,} pairs, per-pair materials", "float64 (vectorised double)", t_p64, "float32", t_p32, "≤ 2")
+    t_s32 = timed(lambda: pgloss.sample(uniform, wo32, rng.random((m, 3), dtype=np.float32)), rep)
+    t_s64 = timed(lambda: pgloss.sample(uniform, wo64, rng.random((m, 3))), rep)
+    row(f"sample, {m:,} draws, one material", "float64 (vectorised double)", t_s64, "float32", t_s32, "≤ 2")
+
+    try:
+        load = os.getloadavg()
+        load_s = f"load average {load[0]:.2f}, {load[1]:.2f}, {load[2]:.2f}"
+    except OSError:
+        load_s = "load average unknown"
+    print(f"pgloss {pgloss.__version__}, numpy {np.__version__}, {load_s}; median of {rep} runs\n")
+    print("| what | pgloss | time | reference | time | ratio | target |")
+    print("|---|---|---:|---|---:|---:|---|")
+    for what, ours, t1, ref, t2, target in rows:
+        print(f"| {what} | {ours} | {t1 * 1e3:.1f} ms | {ref} | {t2 * 1e3:.1f} ms | {t1 / t2:.2f} | {target} |")
+    if args.csv:
+        with open(args.csv, "w", encoding="utf-8") as fh:
+            fh.write("what,pgloss,seconds,reference,reference_seconds,ratio,target\n")
+            for what, ours, t1, ref, t2, target in rows:
+                fh.write(f"\"{what}\",\"{ours}\",{t1:.6g},\"{ref}\",{t2:.6g},{t1 / t2:.4g},\"{target}\"\n")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,285 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
+/* The double batch loops (pgloss/batch_materials.h, the _d functions): the double lobe of
+ * lobe_d.h — the code of the scalar reference functions — over SoA double arrays, with one
+ * material for the call or one per element (its constants formed inside the loop by
+ * pgloss__consts_d_of). Compiled once per ISA (libpgloss/CMakeLists.txt, PGLOSS_ISA);
+ * batch_materials.c picks one at run time. The eval/pdf loop is branch-free and vectorises
+ * (the exponential's table becomes a gather on AVX2 and AVX-512); the sampler calls log1p
+ * and stays a scalar loop. */
+#include "batch_internal.h"
+#include "lobe_d.h"
+
+#ifndef PGLOSS_ISA
+#error "PGLOSS_ISA must name the instruction set this file is compiled for"
+#endif
+
+#define PGLOSS__CAT2(a, b) a##_##b
+#define PGLOSS__NAME2(fn, isa) PGLOSS__CAT2(fn, isa)
+#define EVAL_PDF_D_FN PGLOSS__NAME2(pgloss__eval_pdf_batch_d, PGLOSS_ISA)
+#define SAMPLE_D_FN PGLOSS__NAME2(pgloss__sample_batch_d, PGLOSS_ISA)
+
+/* Normalises (x, y, z) after an exact power-of-two scaling chosen by the largest component
+ * (so no square overflows or underflows; for float-valued inputs the result is bit for bit
+ * that of pgloss__normalize); zeros for a zero or non-finite vector. Returns a double that is
+ * > 0 exactly for a valid vector: validity as a single comparison of a double is what GCC 12
+ * vectorises next to double arithmetic (ints combined from several double comparisons stop
+ * it). */
+PGLOSS__D_FN double unit_d(double *x, double *y, double *z)
+{
+    const double ax = fabs(*x), ay = fabs(*y), az = fabs(*z);
+    const double m = ax > ay ? (ax > az ? ax : az) : (ay > az ? ay : az);
+    /* ±0 if every component is finite, NaN otherwise */
+    const double t = (*x * 0.0 + *y * 0.0) + *z * 0.0;
+    /* exact powers of two: the squares of m s stay within [2^-1000, 2^1000] */
+    const double s = m > 0x1p500 ? 0x1p-600 : (m < 0x1p-500 ? 0x1p600 : 1.0);
+    const double a = *x * s, b = *y * s, c = *z * s;
+    const double l2 = (a * a + b * b + c * c) + t; /* NaN if not finite, 0 for zero */
+    const double inv = 1.0 / sqrt(l2 > 0.0 ? l2 : 1.0);
+    *x = l2 > 0.0 ? a * inv : 0.0;
+    *y = l2 > 0.0 ? b * inv : 0.0;
+    *z = l2 > 0.0 ? c * inv : 0.0;
+    return l2 > 0.0 ? l2 : 0.0;
+}
+
+PGLOSS__D_FN double clamp_max(double v)
+{
+    return v < (double)FLT_MAX ? v : (double)FLT_MAX;
+}
+
+/* pgloss_material_init's checks on a double parameter set (|v| > FLT_MAX counts as
+ * non-finite, NaN fails every comparison): 1 if valid, else 0, as a double (unit_d). */
+PGLOSS__D_FN double material_valid_d(double r, double g, double b, double s, double ax, double ay)
+{
+    const double L = (double)FLT_MAX;
+    double v = 1.0;
+    v = fabs(r) <= L ? v : 0.0;
+    v = fabs(g) <= L ? v : 0.0;
+    v = fabs(b) <= L ? v : 0.0;
+    v = fabs(s) <= L ? v : 0.0;
+    v = fabs(ax) <= L ? v : 0.0;
+    v = fabs(ay) <= L ? v : 0.0;
+    v = r >= 0.0 ? v : 0.0;
+    v = g >= 0.0 ? v : 0.0;
+    v = b >= 0.0 ? v : 0.0;
+    v = s >= 0.0 ? v : 0.0;
+    v = ax > 0.0 ? v : 0.0;
+    return ay > 0.0 ? v : 0.0;
+}
+
+/* A chunk of element constants, and the material arrays as restrict pointers (outputs never
+ * alias them), so that the loops below hold no load the compiler must repeat. */
+typedef struct mat_ptrs {
+    const double *restrict r, *restrict g, *restrict b, *restrict s, *restrict ax, *restrict ay;
+} mat_ptrs;
+
+/* The constants of element j: the call's (per_element a constant 0 of the instance) or those
+ * of element j's material (black if invalid; *valid says which). */
+PGLOSS__D_FN pgloss__consts_d consts_at_d(const pgloss__consts_d *kc, const mat_ptrs *mp,
+                                          const int per_element, unsigned active, int norm,
+                                          size_t j, double *valid)
+{
+    if (!per_element) {
+        *valid = 1.0;
+        return *kc;
+    }
+    const double r = mp->r[j], g = mp->g[j], b = mp->b[j], s = mp->s[j];
+    const double ax = mp->ax[j], ay = mp->ay[j];
+    const double good = material_valid_d(r, g, b, s, ax, ay);
+    *valid = good;
+    return pgloss__consts_d_of(good > 0.0 ? r : 0.0, good > 0.0 ? g : 0.0, good > 0.0 ? b : 0.0,
+                               good > 0.0 ? s : 0.0, good > 0.0 ? ax : 1.0,
+                               good > 0.0 ? ay : 1.0, norm, active);
+}
+
+PGLOSS__D_FN mat_ptrs mat_ptrs_of(const pgloss_physical_array *pa)
+{
+    mat_ptrs m = {NULL, NULL, NULL, NULL, NULL, NULL};
+    if (pa) {
+        m.r = pa->rho_d_r;
+        m.g = pa->rho_d_g;
+        m.b = pa->rho_d_b;
+        m.s = pa->rho_s;
+        m.ax = pa->alpha_x;
+        m.ay = pa->alpha_y;
+    }
+    return m;
+}
+
+/* One chunk, on stack copies of its inputs and outputs: with every array local, the loop
+ * holds no possible alias for the compiler to check at run time (its versioned loops took the
+ * scalar path otherwise). */
+#define CHUNK_D 256
+
+PGLOSS__D_FN size_t eval_d_chunk(const pgloss__consts_d *kc, const mat_ptrs *mp,
+                                 const int per_element, const unsigned active, const int norm,
+                                 const int want_f, const int want_p, size_t m, size_t base,
+                                 const double *restrict oxs, const double *restrict oys,
+                                 const double *restrict ozs, const double *restrict ixs,
+                                 const double *restrict iys, const double *restrict izs,
+                                 double *restrict fr, double *restrict fg, double *restrict fb,
+                                 double *restrict pdf)
+{
+    size_t bad = 0;
+    for (size_t j = 0; j < m; ++j) {
+        double ox = oxs[j], oy = oys[j], oz = ozs[j], ix = ixs[j], iy = iys[j], iz = izs[j];
+        double mat_ok;
+        const pgloss__consts_d kj =
+            consts_at_d(kc, mp, per_element, active, norm, base + j, &mat_ok);
+        const double vo = unit_d(&ox, &oy, &oz), vi = unit_d(&ix, &iy, &iz);
+        const double v = vo < vi ? vo : vi;
+        const int ok = (v < mat_ok ? v : mat_ok) > 0.0;
+        double f[3], p;
+        pgloss__lobe_d(&kj, active, norm, ox, oy, oz, ix, iy, iz, want_f, want_p, f, &p);
+        /* outputs at most FLT_MAX, as in every precision (brdf.h) */
+        if (want_f) {
+            fr[j] = ok ? clamp_max(f[0]) : 0.0;
+            fg[j] = ok ? clamp_max(f[1]) : 0.0;
+            fb[j] = ok ? clamp_max(f[2]) : 0.0;
+        }
+        if (want_p)
+            pdf[j] = ok ? clamp_max(p) : 0.0;
+        bad += !ok;
+    }
+    return bad;
+}
+
+PGLOSS__D_FN size_t eval_d_loop(const pgloss__consts_d *k, const pgloss_physical_array *pa,
+                                const int per_element, const unsigned active, const int norm,
+                                const int want_f, const int want_p, size_t n,
+                                const double *oxs, const double *oys, const double *ozs,
+                                const double *ixs, const double *iys, const double *izs,
+                                double *fr, double *fg, double *fb, double *pdf)
+{
+    const pgloss__consts_d kc = per_element ? pgloss__consts_d_of(0, 0, 0, 0, 1, 1, 0, 0) : *k;
+    const mat_ptrs mp = mat_ptrs_of(pa);
+    double in[6][CHUNK_D], out[4][CHUNK_D];
+    size_t bad = 0;
+    for (size_t base = 0; base < n; base += CHUNK_D) {
+        const size_t m = n - base < CHUNK_D ? n - base : CHUNK_D;
+        memcpy(in[0], oxs + base, m * sizeof(double));
+        memcpy(in[1], oys + base, m * sizeof(double));
+        memcpy(in[2], ozs + base, m * sizeof(double));
+        memcpy(in[3], ixs + base, m * sizeof(double));
+        memcpy(in[4], iys + base, m * sizeof(double));
+        memcpy(in[5], izs + base, m * sizeof(double));
+        bad += eval_d_chunk(&kc, &mp, per_element, active, norm, want_f, want_p, m, base, in[0],
+                            in[1], in[2], in[3], in[4], in[5], out[0], out[1], out[2], out[3]);
+        if (want_f) {
+            memcpy(fr + base, out[0], m * sizeof(double));
+            memcpy(fg + base, out[1], m * sizeof(double));
+            memcpy(fb + base, out[2], m * sizeof(double));
+        }
+        if (want_p)
+            memcpy(pdf + base, out[3], m * sizeof(double));
+    }
+    return bad;
+}
+
+/* (lobes, normalisation) as constants, then the outputs wanted. */
+#define BY_NORM(LOOP, A)                                                                           \
+    (norm == PGLOSS_NORM_WARD_DUR                                                                  \
+         ? LOOP(A, PGLOSS_NORM_WARD_DUR)                                                           \
+         : (norm == PGLOSS_NORM_BOUNDED ? LOOP(A, PGLOSS_NORM_BOUNDED) : LOOP(A, PGLOSS_NORM_WARD)))
+#define BY_LOBES(LOOP)                                                                             \
+    (active == PGLOSS_LOBE_DIFFUSE    ? LOOP(PGLOSS_LOBE_DIFFUSE, PGLOSS_NORM_WARD)                \
+     : active == PGLOSS_LOBE_SPECULAR ? BY_NORM(LOOP, PGLOSS_LOBE_SPECULAR)                        \
+     : active == PGLOSS_LOBE_ALL      ? BY_NORM(LOOP, PGLOSS_LOBE_ALL)                             \
+                                      : LOOP(PGLOSS_LOBE_NONE, PGLOSS_NORM_WARD))
+
+PGLOSS__D_FN size_t eval_d_outputs(const pgloss__consts_d *k, const pgloss_physical_array *pa,
+                                   const int per_element, unsigned active, int norm, size_t n,
+                                   pgloss_vec3_array_d wo, pgloss_vec3_array_d wi,
+                                   pgloss_rgb_out_d f, double *pdf)
+{
+#define LOOP_FP(A, N)                                                                              \
+    eval_d_loop(k, pa, per_element, A, N, 1, 1, n, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, f.r, f.g,   \
+                f.b, pdf)
+#define LOOP_F(A, N)                                                                               \
+    eval_d_loop(k, pa, per_element, A, N, 1, 0, n, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, f.r, f.g,   \
+                f.b, pdf)
+#define LOOP_P(A, N)                                                                               \
+    eval_d_loop(k, pa, per_element, A, N, 0, 1, n, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, f.r, f.g,   \
+                f.b, pdf)
+    if (f.r && pdf)
+        return BY_LOBES(LOOP_FP);
+    if (f.r)
+        return BY_LOBES(LOOP_F);
+    return BY_LOBES(LOOP_P);
+#undef LOOP_FP
+#undef LOOP_F
+#undef LOOP_P
+}
+
+size_t EVAL_PDF_D_FN(const pgloss__consts_d *k, const pgloss_physical_array *pa, unsigned active,
+                     int norm, size_t n, pgloss_vec3_array_d wo, pgloss_vec3_array_d wi,
+                     pgloss_rgb_out_d f, double *pdf)
+{
+    if (pa)
+        return eval_d_outputs(NULL, pa, 1, active, norm, n, wo, wi, f, pdf);
+    return eval_d_outputs(k, NULL, 0, active, norm, n, wo, wi, f, pdf);
+}
+
+/* ---- sampling: pgloss_sample in double, element by element ------------------------------ */
+
+#define ONE_MINUS_EPS_D 0x1.fffffep-1 /* 1 - 2^-24, as the float paths (brdf.h) */
+
+PGLOSS__D_FN double clamp_u_d(double u)
+{
+    return u > 0.0 ? (u < ONE_MINUS_EPS_D ? u : ONE_MINUS_EPS_D) : 0.0;
+}
+
+void SAMPLE_D_FN(const pgloss__consts_d *k, const pgloss_physical_array *pa, unsigned active,
+                 int norm, size_t n, pgloss_vec3_array_d wo, const double *u0s, const double *u1s,
+                 const double *u2s, pgloss_vec3_out_d wi, double *pdf, pgloss_rgb_out_d weight,
+                 unsigned char *lobe)
+{
+    const mat_ptrs mp = mat_ptrs_of(pa);
+    for (size_t j = 0; j < n; ++j) {
+        double mat_ok;
+        const pgloss__consts_d kj =
+            pa ? consts_at_d(NULL, &mp, 1, active, norm, j, &mat_ok)
+               : consts_at_d(k, &mp, 0, active, norm, j, &mat_ok);
+        double w[3] = {0.0, 0.0, 1.0}, p = 0.0, f[3] = {0.0, 0.0, 0.0};
+        unsigned chosen = PGLOSS_LOBE_NONE;
+        double ox = wo.x[j], oy = wo.y[j], oz = wo.z[j];
+        const double u0 = u0s[j], u1 = u1s[j], u2 = u2s[j];
+        const int ok = (mat_ok > 0.0) & !(isnan(u0) | isnan(u1) | isnan(u2)) &
+                       (unit_d(&ox, &oy, &oz) > 0.0);
+        if (ok && kj.active) {
+            const double c0 = clamp_u_d(u0), c1 = clamp_u_d(u1), c2 = clamp_u_d(u2);
+            int good = oz > 0.0;
+            if (c0 < kj.ps) {
+                chosen = PGLOSS_LOBE_SPECULAR;
+                good &= pgloss__sample_specular_d(kj.alpha_x, kj.alpha_y, ox, oy, oz, 1.0, c1, c2,
+                                                  w) > 0.0;
+            } else {
+                chosen = PGLOSS_LOBE_DIFFUSE;
+                pgloss__sample_cosine_d(c1, c2, w);
+            }
+            double ix = w[0], iy = w[1], iz = w[2];
+            if (good && unit_d(&ix, &iy, &iz) > 0.0) {
+                pgloss__lobe_d(&kj, kj.active, norm, ox, oy, oz, ix, iy, iz, 1, 1, f, &p);
+                if (p > 0.0) {
+                    const double r = iz / p; /* weight = f cosθi / pdf */
+                    f[0] *= r;
+                    f[1] *= r;
+                    f[2] *= r;
+                } else {
+                    p = 0.0;
+                }
+            }
+            if (!(p > 0.0))
+                f[0] = f[1] = f[2] = 0.0;
+        }
+        wi.x[j] = w[0];
+        wi.y[j] = w[1];
+        wi.z[j] = w[2];
+        pdf[j] = clamp_max(p);
+        weight.r[j] = clamp_max(f[0]);
+        weight.g[j] = clamp_max(f[1]);
+        weight.b[j] = clamp_max(f[2]);
+        if (lobe)
+            lobe[j] = (unsigned char)chosen;
+    }
+}
