@@ -3,8 +3,9 @@
 /* Scalar evaluation of the Ward BRDF (paper eq. 2 and its two later normalisations) and of
  * the sampling density. Double internally: this is the reference the float paths
  * (pgloss/inline.h, the batches) and the shader ports are held to. One path: both directions
- * are normalised (pgloss__normalize), then pgloss__eval_pdf_d applies the formulas of brdf.h
- * literally, with exp_parts below instead of libm's exp. */
+ * are normalised (pgloss__normalize), then pgloss__eval_pdf_d runs the double lobe of lobe_d.h
+ * (brdf.h's formulas literally, with an inline exp instead of libm's; the double batches run
+ * the same code) on the float material's constants. */
 #include <stdint.h>
 #include <string.h>
 #include "internal.h"

@@ -11,6 +11,7 @@
 
 #include <pgloss/pgloss.h>
 
+#include <cstring>
 #include <vector>
 
 namespace {
@@ -109,5 +110,27 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, size_t size) {
     FZ_CHECK(documented(cp) && documented(pf));
     FZ_CHECK(std::isfinite(q3.L) && std::isfinite(q3.a) && std::isfinite(q3.b) && std::isfinite(q3.c) &&
              std::isfinite(q3.d));
+
+    // The batched forms (perceptual_batch.h): element by element the scalar function's status
+    // and bits, the returned status the first error (else warning).
+    auto same = [](double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; };
+    {
+        double o1, o2, o3;
+        signed char st = 99;
+        const pgloss_status r = pgloss_gloss_from_physical_batch(1, &rd, &rs, &alpha, &o1, &o2, &o3, &st);
+        FZ_CHECK(r == st && st == pgloss_gloss_from_physical(rd, rs, alpha, &gl, &gc, &gd));
+        FZ_CHECK(same(o1, gl) && same(o2, gc) && same(o3, gd));
+    }
+    if (norm <= PGLOSS_NORM_BOUNDED) {
+        const pgloss_perceptual_array qa{&q.L, &q.a, &q.b, &q.c, &q.d};
+        double r0, r1, r2, s0, ax, ay;
+        signed char st = 99;
+        const pgloss_status r =
+            pgloss_physical_from_perceptual_batch(1, qa, norm, pgloss_physical_out{&r0, &r1, &r2, &s0, &ax, &ay}, &st);
+        FZ_CHECK(r == pq && st == pq);
+        FZ_CHECK(same(r0, p.rho_d[0]) && same(r1, p.rho_d[1]) && same(r2, p.rho_d[2]) && same(s0, p.rho_s) &&
+                 same(ax, p.alpha_x) && same(ay, p.alpha_y));
+        FZ_CHECK(pgloss_check_perceptual_batch(1, qa, &st) == cq && st == cq);
+    }
     return 0;
 }

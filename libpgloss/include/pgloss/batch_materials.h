@@ -9,7 +9,7 @@
  * built as pgloss_material_init builds it from element j of the arrays: the same checks
  * (NONFINITE — NaN, Inf, |v| > FLT_MAX —, NEGATIVE ρd or ρs, ALPHA αx or αy <= 0, in that
  * order), the same α floor (PGLOSS_ALPHA_MIN) and the same derived constants, computed
- * inside the vectorised loop (pgloss_inl_derive in pgloss/inline.h is the one formula for
+ * inside the batched loop (pgloss_inl_material_derive in pgloss/inline.h is the one formula for
  * them; pgloss_material_init calls it too). Energy (ρd + ρs > 1) is not rejected, as in
  * pgloss_material_init. An element whose material is invalid gets that status and 0 outputs
  * (a sample's wi = (0, 0, 1)); its directions are then not examined. Otherwise the element's
