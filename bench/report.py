@@ -76,6 +76,7 @@ def main() -> int:
     d, dst = Path(sys.argv[1]), Path(sys.argv[2])
     core = (d / "core.md").read_text()
     peers = (d / "peers.md").read_text() if (d / "peers.md").exists() else "(peers not run)\n"
+    texture_c = (d / "texture.md").read_text() if (d / "texture.md").exists() else "(bench_texture not run)\n"
     textures = (d / "python_textures.md").read_text() if (d / "python_textures.md").exists() else "(bench_textures.py not run)\n"
     inline = "".join((d / f"inline_{v}.md").read_text() + "\n" for v in ("v3", "plain", "mca")
                      if (d / f"inline_{v}.md").exists()) or "(bench_inline not run)\n"
@@ -165,6 +166,12 @@ and a plain float transcription of eq. 2 (see the program's header for the loops
 with `bash bench/run.sh`; the critical path in cycles: `bash bench/mca.sh --inline`.
 
 {inline}
+## Whole textures in C (`bench/bench_texture.c`)
+
+Per-element materials against one material, the float64 batches against float, and the batched
+perceptual functions against bare C loops (pgloss/batch_materials.h, pgloss/perceptual_batch.h).
+
+{texture_c}
 ## Peers (`bench/peers.py`)
 
 {peers}
