@@ -12,7 +12,6 @@
 
 from __future__ import annotations
 
-import os
 import sys
 from pathlib import Path
 from typing import Optional
@@ -22,6 +21,9 @@ import pytest
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "vectors"))
 
 import pgloss_vectors as pv  # noqa: E402
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+import require_all  # noqa: E402  (tests/require_all.py: skips fail under PGLOSS_REQUIRE_ALL=1)
 
 _session: Optional[pv.Report] = None
 
@@ -40,14 +42,8 @@ def pytest_terminal_summary(terminalreporter, exitstatus, config):  # noqa: D103
         terminalreporter.write_line("")
         for line in _session.summary_lines("pgloss vectors (Python)"):
             terminalreporter.write_line(line)
-    if os.environ.get("PGLOSS_REQUIRE_ALL") == "1":
-        skipped = terminalreporter.stats.get("skipped", [])
-        if skipped:
-            terminalreporter.write_line(f"PGLOSS_REQUIRE_ALL=1: {len(skipped)} skipped tests count as failures")
+    require_all.summary(terminalreporter)
 
 
 def pytest_sessionfinish(session, exitstatus):  # noqa: D103
-    if os.environ.get("PGLOSS_REQUIRE_ALL") == "1":
-        reporter = session.config.pluginmanager.get_plugin("terminalreporter")
-        if reporter is not None and reporter.stats.get("skipped") and session.exitstatus == 0:
-            session.exitstatus = 1
+    require_all.finish(session)
