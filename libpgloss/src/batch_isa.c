@@ -95,10 +95,10 @@ PGLOSS_INLINE_FN size_t derive_chunk(unsigned lobes, int norm, size_t m,
         const int good = pgloss__material_valid_f(r, g, b, s, ax, ay);
         pgloss_material mm;
         /* (x > 0 ? x : 0): -0 becomes +0, as a material without that lobe gives (fuzz_brdf) */
-        mm.rho_d[0] = good & (r > 0.0f) ? r : 0.0f;
-        mm.rho_d[1] = good & (g > 0.0f) ? g : 0.0f;
-        mm.rho_d[2] = good & (b > 0.0f) ? b : 0.0f;
-        mm.rho_s = good & (s > 0.0f) ? s : 0.0f;
+        mm.rho_d[0] = (good & (r > 0.0f)) ? r : 0.0f;
+        mm.rho_d[1] = (good & (g > 0.0f)) ? g : 0.0f;
+        mm.rho_d[2] = (good & (b > 0.0f)) ? b : 0.0f;
+        mm.rho_s = (good & (s > 0.0f)) ? s : 0.0f;
         mm.alpha_x = good ? ax : 1.0f;
         mm.alpha_y = good ? ay : 1.0f;
         mm.normalization = (pgloss_normalization)norm;
