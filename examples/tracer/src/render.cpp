@@ -137,6 +137,8 @@ struct ShadeRec {
     pgloss_vec3 wo{0, 0, 1}, wil{0, 0, 1};  // local directions: to the viewer, to the light
     float pdf_light = 0, tmax = 0;
     float u[3] = {0, 0, 0};          // the BRDF sample's random numbers
+    float ul[2] = {0, 0};            // the light sample's
+    int li = -1;                     // the light sampled; -1: no next-event estimate
     int mat = -1;                    // material index; -1: the path ends at this hit
     Prev strat = Prev::LIGHT;
     bool nee = false;                // a next-event estimate to weight
@@ -191,7 +193,7 @@ struct Renderer::Impl {
     // (Embree took ~40 ns a ray for the stimulus box).
     static constexpr size_t kSmallTriangles = 32;
     struct Tri {
-        glm::vec3 v0, e1, e2, ng;
+        glm::vec3 v0, e1, e2, n;  // n: unit normal
         GeomRef ref;
     };
     std::vector<Tri> tris;
@@ -266,7 +268,7 @@ struct Renderer::Impl {
         if (tris.size() <= kSmallTriangles)
             for (const glm::uvec3 &f : faces) {
                 const glm::vec3 a = verts[f.x], b = verts[f.y], c = verts[f.z];
-                tris.push_back({a, b - a, c - a, glm::cross(b - a, c - a), ref});
+                tris.push_back({a, b - a, c - a, glm::normalize(glm::cross(b - a, c - a)), ref});
             }
         RTCGeometry g = rtcNewGeometry(device, use_quads ? RTC_GEOMETRY_TYPE_QUAD : RTC_GEOMETRY_TYPE_TRIANGLE);
         auto *v = static_cast<float *>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
@@ -392,7 +394,7 @@ struct Renderer::Impl {
         h.p = o + t * d;
         if (prim >= 0) {
             h.ref = tris[size_t(prim)].ref;
-            h.n = glm::normalize(tris[size_t(prim)].ng);
+            h.n = tris[size_t(prim)].n;
         } else {
             h.ref = GeomRef{GeomKind::SPHERE, -2 - prim};
             h.n = glm::normalize(h.p - scene.spheres[size_t(-2 - prim)].center);
@@ -438,7 +440,7 @@ struct Renderer::Impl {
     int material_index_at(int mi, glm::vec3 p) const {
         const Material &m = scene.materials[size_t(mi)];
         if (!m.checker) return mi;
-        glm::vec3 q = glm::floor((p - m.check_offset) / m.check_size);
+        glm::vec3 q = glm::floor((p - m.check_offset) * (1.0f / m.check_size));
         long parity = (long(q.x) + long(q.y) + long(q.z)) & 1L;
         return parity ? m.check_b : m.check_a;
     }
@@ -470,7 +472,6 @@ struct Renderer::Impl {
     bool shade_begin(PathState &ps, const Hit &hit, const RenderSettings &set, ShadeRec &r) const {
         const Mode mode = set.mode;
         const int max_depth = set.max_depth;
-        const bool solid_angle = set.solid_angle_lights;
         const glm::vec3 d = ps.d;
         const float nl = float(light_count());
         ps.shadow = false;
@@ -517,45 +518,12 @@ struct Renderer::Impl {
 
         r.nee = false;
         r.wil = r.wo;  // a valid direction for the batched call where there is no estimate
-        if (r.strat != Prev::BRDF && nl > 0) {  // next-event estimation
-            size_t li = std::min(size_t(smp.get1() * nl), light_count() - 1);
+        r.li = -1;
+        if (r.strat != Prev::BRDF && nl > 0) {  // next-event estimation: its numbers now, the rest in light_sample
+            // (a scene with one light draws no number to choose it)
+            r.li = light_count() == 1 ? 0 : int(std::min(size_t(smp.get1() * nl), light_count() - 1));
             const glm::vec2 ul = smp.get2();
-            const float u1 = ul.x, u2 = ul.y;
-            glm::vec3 wi, Le;
-            float pdf_light, tmax;
-            bool ok = true;
-            if (li < scene.lights.size()) {
-                const AreaLight &l = scene.lights[li];
-                const SphRect q = solid_angle ? sphrect_setup(rects[li], r.p) : SphRect{};
-                glm::vec3 y;
-                if (q.state == SphRect::OK) {  // uniform in the light's solid angle: pdf 1/S
-                    const glm::dvec2 st = sphrect_sample(rects[li], q, u1, u2);
-                    y = glm::vec3(rects[li].corner + st.x * rects[li].ex + st.y * rects[li].ey);
-                } else {  // uniform in area
-                    y = l.corner + u1 * l.edge1 + u2 * l.edge2;
-                }
-                glm::vec3 dv = y - r.p;
-                float dist2 = glm::dot(dv, dv), dist = std::sqrt(dist2);
-                wi = dv * (1.0f / dist);
-                float cos_l = -glm::dot(l.normal, wi);
-                ok = cos_l > 0 && dist2 > 0;
-                pdf_light = !ok ? 0 : q.state == SphRect::OK ? float(1.0 / q.S) : dist2 / (l.area * cos_l);
-                Le = ok ? light_emission(l, cos_l) : glm::vec3(0);
-                tmax = dist * (1.0f - 1e-4f);
-            } else {  // environment: cosine-weighted about n
-                float rr = std::sqrt(u1), phi = 2 * kPi * u2;
-                pgloss_vec3 lw{rr * std::cos(phi), rr * std::sin(phi), std::sqrt(std::max(0.0f, 1 - u1))};
-                wi = r.frame.to_world(lw);
-                pdf_light = lw.z / kPi;
-                ok = pdf_light > 0;
-                Le = scene.environment;
-                tmax = std::numeric_limits<float>::infinity();
-            }
-            pgloss_vec3 wil = r.frame.to_local(wi);
-            if (ok && wil.z > 0) {
-                r.nee = true;
-                r.wil = wil, r.wi = wi, r.Le = Le, r.pdf_light = pdf_light / nl, r.tmax = tmax;
-            }
+            r.ul[0] = ul.x, r.ul[1] = ul.y;
         }
         // The BRDF sample's random numbers, drawn now: each path's stream is consumed in the
         // order of the scalar recursion (light sample, BRDF sample, Russian roulette).
@@ -563,6 +531,50 @@ struct Renderer::Impl {
         const glm::vec2 ud = smp.get2();
         r.u[1] = ud.x, r.u[2] = ud.y;
         return true;
+    }
+
+    // Stage 1b: the light sample of a next-event estimate (r.li, r.ul from stage 1). A loop of
+    // its own over the step's hits: its chain of square root and divisions overlaps across
+    // paths there, instead of stalling the long stage 1 of one path.
+    void light_sample(ShadeRec &r, bool solid_angle) const {
+        const float nl = float(light_count());
+        const size_t li = size_t(r.li);
+        const float u1 = r.ul[0], u2 = r.ul[1];
+        glm::vec3 wi, Le;
+        float pdf_light, tmax;
+        bool ok = true;
+        if (li < scene.lights.size()) {
+            const AreaLight &l = scene.lights[li];
+            const SphRect q = solid_angle ? sphrect_setup(rects[li], r.p) : SphRect{};
+            glm::vec3 y;
+            if (q.state == SphRect::OK) {  // uniform in the light's solid angle: pdf 1/S
+                const glm::dvec2 st = sphrect_sample(rects[li], q, u1, u2);
+                y = glm::vec3(rects[li].corner + st.x * rects[li].ex + st.y * rects[li].ey);
+            } else {  // uniform in area
+                y = l.corner + u1 * l.edge1 + u2 * l.edge2;
+            }
+            glm::vec3 dv = y - r.p;
+            float dist2 = glm::dot(dv, dv), dist = std::sqrt(dist2);
+            wi = dv * (1.0f / dist);
+            float cos_l = -glm::dot(l.normal, wi);
+            ok = cos_l > 0 && dist2 > 0;
+            pdf_light = !ok ? 0 : q.state == SphRect::OK ? float(1.0 / q.S) : dist2 / (l.area * cos_l);
+            Le = ok ? light_emission(l, cos_l) : glm::vec3(0);
+            tmax = dist * (1.0f - 1e-4f);
+        } else {  // environment: cosine-weighted about n
+            float rr = std::sqrt(u1), phi = 2 * kPi * u2;
+            pgloss_vec3 lw{rr * std::cos(phi), rr * std::sin(phi), std::sqrt(std::max(0.0f, 1 - u1))};
+            wi = r.frame.to_world(lw);
+            pdf_light = lw.z / kPi;
+            ok = pdf_light > 0;
+            Le = scene.environment;
+            tmax = std::numeric_limits<float>::infinity();
+        }
+        pgloss_vec3 wil = r.frame.to_local(wi);
+        if (ok && wil.z > 0) {
+            r.nee = true;
+            r.wil = wil, r.wi = wi, r.Le = Le, r.pdf_light = pdf_light / nl, r.tmax = tmax;
+        }
     }
 
     // Stage 3: the next-event estimate from the lobe's f and pdf at r.wil (left in
@@ -707,6 +719,8 @@ struct Renderer::Impl {
             rays += na;
             wf.recs.resize(na);
             for (size_t i = 0; i < na; ++i) shade_begin(paths[wf.active[i]], wf.hits[i], set, wf.recs[i]);
+            for (size_t i = 0; i < na; ++i)
+                if (wf.recs[i].mat >= 0 && wf.recs[i].li >= 0) light_sample(wf.recs[i], set.solid_angle_lights);
             shade_batched(paths, wf, na);
             wf.next.clear();
             wf.shadows.clear();

@@ -66,17 +66,21 @@ inline std::uint32_t reverse_bits(std::uint32_t x) {
     return (x >> 16) | (x << 16);
 }
 
-// Nested uniform scrambling in base 2 (Owen 1995) of the bits of x, most significant first:
-// bit j flips by a hash of the bits above it. Laine & Karras 2011's hash form with Burley
-// 2020's constants, applied to the reversed bits (where each bit depends on those below).
-inline std::uint32_t owen_scramble(std::uint32_t x, std::uint32_t seed) {
-    x = reverse_bits(x);
+// The Laine & Karras 2011 hash with Burley 2020's constants: a bijection of 32-bit words in
+// which each bit depends only on itself and the bits below it, and on the seed.
+inline std::uint32_t laine_karras(std::uint32_t x, std::uint32_t seed) {
     x += seed;
     x ^= x * 0x6c50b47cu;
     x ^= x * 0xb82f1e52u;
     x ^= x * 0xc7afe638u;
     x ^= x * 0x8d22f6e6u;
-    return reverse_bits(x);
+    return x;
+}
+
+// Nested uniform scrambling in base 2 (Owen 1995) of the bits of x, most significant first:
+// each bit flips by a hash of the bits above it (Laine–Karras on the reversed bits).
+inline std::uint32_t owen_scramble(std::uint32_t x, std::uint32_t seed) {
+    return reverse_bits(laine_karras(reverse_bits(x), seed));
 }
 
 // The first two dimensions of Sobol's sequence as 32-bit fractions: the van der Corput
@@ -118,24 +122,31 @@ public:
             rng_ = Rng(seed, pixel, sample);
         } else {
             pixel_seed_ = splitmix64(splitmix64(seed) ^ pixel);
-            index_ = std::uint32_t(sample);
+            rev_index_ = sobol::reverse_bits(std::uint32_t(sample));
         }
     }
+    // Sobol': the shuffled index i = owen_scramble(index, s0), with reverse_bits(index) computed
+    // once per path; dimension 0 of Sobol' is reverse_bits(i), so its scramble
+    // owen_scramble(reverse_bits(i), s1) is reverse_bits(laine_karras(i, s1)).
     __attribute__((always_inline)) float get1() {
         if (kind_ == Sampler::INDEPENDENT) return rng_.uniform();
         const std::uint64_t h = dim_hash();
-        const std::uint32_t i = sobol::owen_scramble(index_, std::uint32_t(h));
-        return sobol::to_float(sobol::owen_scramble(sobol::dim0(i), std::uint32_t(h >> 32)));
+        const std::uint32_t i = sobol::reverse_bits(sobol::laine_karras(rev_index_, std::uint32_t(h)));
+        return sobol::to_float(sobol::reverse_bits(sobol::laine_karras(i, std::uint32_t(h >> 32))));
     }
     __attribute__((always_inline)) glm::vec2 get2() {
         if (kind_ == Sampler::INDEPENDENT) {
             const float a = rng_.uniform();
             return {a, rng_.uniform()};
         }
-        const std::uint64_t h = dim_hash(), h2 = splitmix64(h);
-        const std::uint32_t i = sobol::owen_scramble(index_, std::uint32_t(h));
-        return {sobol::to_float(sobol::owen_scramble(sobol::dim0(i), std::uint32_t(h >> 32))),
-                sobol::to_float(sobol::owen_scramble(sobol::dim1(i), std::uint32_t(h2)))};
+        const std::uint64_t h = dim_hash();
+        const std::uint32_t i = sobol::reverse_bits(sobol::laine_karras(rev_index_, std::uint32_t(h)));
+        std::uint32_t s2 = std::uint32_t(h >> 32) ^ 0xa511e9b3u;  // a third seed (Wellons' lowbias32)
+        s2 = (s2 ^ (s2 >> 16)) * 0x7feb352du;
+        s2 = (s2 ^ (s2 >> 15)) * 0x846ca68bu;
+        s2 ^= s2 >> 16;
+        return {sobol::to_float(sobol::reverse_bits(sobol::laine_karras(i, std::uint32_t(h >> 32)))),
+                sobol::to_float(sobol::owen_scramble(sobol::dim1(i), s2))};
     }
 
 private:
@@ -143,7 +154,7 @@ private:
     Sampler kind_ = Sampler::INDEPENDENT;
     Rng rng_;
     std::uint64_t pixel_seed_ = 0;
-    std::uint32_t index_ = 0, dim_ = 0;
+    std::uint32_t rev_index_ = 0, dim_ = 0;  // the sample's index, bits reversed
 };
 
 }  // namespace pgt
