@@ -65,6 +65,9 @@ TEST(SphericalRectangle, SolidAngleMatchesVanOosteromStrackeeAndQuadrature) {
     for (const Config &c : kConfigs) {
         const pgt::RectFrame r = frame_of(c);
         ASSERT_TRUE(r.valid) << c.name;
+        // The frame's rectangle is the light's (its far corner within 1e-6 of the size).
+        const glm::dvec3 far = glm::dvec3(c.corner) + glm::dvec3(c.edge1) + glm::dvec3(c.edge2);
+        EXPECT_LT(glm::length(r.corner + r.lx * r.ex + r.ly * r.ey - far), 1e-6 * (r.lx + r.ly)) << c.name;
         const pgt::SphRect q = pgt::sphrect_setup(r, c.o);
         ASSERT_EQ(q.state, pgt::SphRect::OK) << c.name;
         const glm::dvec3 o(c.o);
@@ -135,7 +138,7 @@ TEST(SphericalRectangle, DegenerateCasesFallBackWithoutNaN) {
     EXPECT_EQ(pgt::sphrect_setup(r, {0, 3.5f, 0}).state, pgt::SphRect::BEHIND);
     EXPECT_EQ(pgt::sphrect_setup(r, {2, 3, 0}).state, pgt::SphRect::BEHIND);
     // A hair in front of the plane beside the light: the spherical rectangle is a sliver, sampled by area.
-    EXPECT_EQ(pgt::sphrect_setup(r, {2, 3 - 1e-7f, 0}).state, pgt::SphRect::DEGENERATE);
+    EXPECT_EQ(pgt::sphrect_setup(r, {2, 2.999999f, 0}).state, pgt::SphRect::DEGENERATE);
     // Very far: area sampling.
     EXPECT_EQ(pgt::sphrect_setup(r, {0, -3e4f, 0}).state, pgt::SphRect::DEGENERATE);
     // A parallelogram that is not a rectangle, and a zero edge.
@@ -160,12 +163,15 @@ TEST(SphericalRectangle, DegenerateCasesFallBackWithoutNaN) {
 // ---------------------------------------------------------------- Sobol'
 
 TEST(Sobol, FirstDimensionsAreSobolsSequence) {
-    // Sobol's sequence, dimensions 1 and 2 (Joe & Kuo's tables; Bratley & Fox 1988, Alg. 659).
-    const double d0[8] = {0, 0.5, 0.25, 0.75, 0.125, 0.625, 0.375, 0.875};
-    const double d1[8] = {0, 0.5, 0.75, 0.25, 0.375, 0.875, 0.625, 0.125};
-    for (std::uint32_t i = 0; i < 8; ++i) {
-        EXPECT_EQ(pgt::sobol::dim0(i) * 0x1p-32, d0[i]) << i;
-        EXPECT_EQ(pgt::sobol::dim1(i) * 0x1p-32, d1[i]) << i;
+    // The first points of Sobol's sequence, dimensions 1 and 2, as Joe & Kuo's generator
+    // (sobol.cc, new-joe-kuo-6.21201) prints them: in Gray-code order, point n being the
+    // sequence's point of index n ⊕ (n >> 1).
+    const double d0[8] = {0, 0.5, 0.75, 0.25, 0.375, 0.875, 0.625, 0.125};
+    const double d1[8] = {0, 0.5, 0.25, 0.75, 0.375, 0.875, 0.125, 0.625};
+    for (std::uint32_t n = 0; n < 8; ++n) {
+        const std::uint32_t i = n ^ (n >> 1);
+        EXPECT_EQ(pgt::sobol::dim0(i) * 0x1p-32, d0[n]) << n;
+        EXPECT_EQ(pgt::sobol::dim1(i) * 0x1p-32, d1[n]) << n;
     }
 }
 

@@ -41,6 +41,11 @@ inline RectFrame rect_frame(glm::vec3 corner, glm::vec3 edge1, glm::vec3 edge2, 
     r.corner = glm::dvec3(corner);
     r.ex = e1 / r.lx, r.ey = e2 / r.ly, r.ez = glm::normalize(glm::dvec3(normal));
     r.valid = std::abs(glm::dot(r.ex, r.ey)) <= 1e-6 && std::abs(std::abs(glm::dot(glm::cross(r.ex, r.ey), r.ez)) - 1) <= 1e-6;
+    // Edges given in float are orthogonal only to float's precision: make the frame exactly
+    // orthonormal, so that the parametrisation's rectangle is the one its samples lie on (it
+    // differs from the light by < 1e-6 of its size).
+    r.ey = glm::normalize(r.ey - glm::dot(r.ey, r.ex) * r.ex);
+    r.ez = glm::dot(glm::cross(r.ex, r.ey), r.ez) > 0 ? glm::cross(r.ex, r.ey) : -glm::cross(r.ex, r.ey);
     return r;
 }
 
