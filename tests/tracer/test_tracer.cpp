@@ -268,11 +268,11 @@ TEST(Estimators, MisBrdfAndLightConvergeToTheSameImage) {
     }
 }
 
-// Solid-angle sampling of the light (sphrect.hpp) and the Sobol' sampler change the noise,
-// not the image: each against area sampling with independent numbers, per 8×8 block, for the
+// The small-scene intersector (against Embree), solid-angle sampling of the light
+// (sphrect.hpp) and the Sobol' sampler change the noise, not the image: each against area sampling with independent numbers, per 8×8 block, for the
 // MIS estimator (whose weights take the light's pdf from the same technique) and light
 // sampling alone, on the sharp dark stimulus.
-TEST(Estimators, SolidAngleAndSobolConvergeToTheSameImage) {
+TEST(Estimators, IntersectorsLightSamplingAndSobolConvergeToTheSameImage) {
     pgt::Scene sc = pgt::load_scene(kScenes + "/stimulus.scene");
     sc.set_material("paint", pgloss_physical{{0.03, 0.03, 0.03}, 0.099, 0.04, 0.04, PGLOSS_NORM_WARD});
     for (pgt::Mode mode : {pgt::Mode::MIS, pgt::Mode::LIGHT}) {
@@ -285,10 +285,12 @@ TEST(Estimators, SolidAngleAndSobolConvergeToTheSameImage) {
             bool solid_angle;
             pgt::Sampler sampler;
         };
-        for (const Variant &v : {Variant{"solid angle", true, pgt::Sampler::INDEPENDENT},
+        for (const Variant &v : {Variant{"Embree for every ray", false, pgt::Sampler::INDEPENDENT},
+                                 Variant{"solid angle", true, pgt::Sampler::INDEPENDENT},
                                  Variant{"sobol", false, pgt::Sampler::SOBOL},
                                  Variant{"solid angle + sobol", true, pgt::Sampler::SOBOL}}) {
             s.solid_angle_lights = v.solid_angle, s.sampler = v.sampler, s.seed = 11;
+            s.embree_always = std::string(v.name) == "Embree for every ray";
             const Rendered r = render(sc, s);
             const int B = 8;
             double max_z = 0, sum_a = 0, sum_b = 0, var_a = 0, var_b = 0;

@@ -102,6 +102,7 @@ CliOptions parse_cli(const std::vector<std::string> &args) {
         } else if (a == "--seed") o.seed = long(parse_integer(a, val(), 0, long(limits::seed)));
         else if (a == "--threads") o.threads = int(parse_integer(a, val(), 1, limits::threads));
         else if (a == "--quiet") o.quiet = true;
+        else if (a == "--embree") o.embree = true;
         else if (a == "-h" || a == "--help") {
             o.command = CliOptions::Command::HELP;
             return o;

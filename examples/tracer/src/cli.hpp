@@ -23,6 +23,7 @@ struct CliOptions {
     std::string mode;                                 // "": not given; else mis, brdf or light
     std::string sampler;                              // "": not given; else independent or sobol
     std::string light_sampling;                       // "": not given; else solid-angle or area
+    bool embree = false;                              // --embree: every ray through Embree
     bool quiet = false;
 };
 

@@ -197,6 +197,15 @@ struct Renderer::Impl {
         GeomRef ref;
     };
     std::vector<Tri> tris;
+    // A pair of triangles (a, b, c), (a, c, d) that is a parallelogram (the scene's boxes,
+    // quads and lights) is tested once, as a plane and two edge coordinates: u = (p − a)·du,
+    // v = (p − a)·dv with du, dv the dual basis of its edges b − a, d − a.
+    struct Para {
+        glm::vec3 v0, n, du, dv;  // n: unit normal
+        float nv0;                // n·v0
+        GeomRef ref;
+    };
+    std::vector<Para> paras;
     bool small_scene = false;
 
     explicit Impl(const Scene &s) : scene(s) {
@@ -239,8 +248,8 @@ struct Renderer::Impl {
             rects.push_back(rect_frame(l.corner, l.edge1, l.edge2, l.normal));
         }
         eps = 1e-4f * extent;
-        small_scene = analytic_spheres && tris.size() <= kSmallTriangles;
-        if (!small_scene) tris.clear();
+        small_scene = analytic_spheres && tris.size() + 2 * paras.size() <= kSmallTriangles;
+        if (!small_scene) tris.clear(), paras.clear();
         rtcCommitScene(rtc);
     }
     ~Impl() {
@@ -265,11 +274,23 @@ struct Renderer::Impl {
         return true;
     }
     void add_triangles(const std::vector<glm::vec3> &verts, const std::vector<glm::uvec3> &faces, GeomRef ref) {
-        if (tris.size() <= kSmallTriangles)
-            for (const glm::uvec3 &f : faces) {
-                const glm::vec3 a = verts[f.x], b = verts[f.y], c = verts[f.z];
-                tris.push_back({a, b - a, c - a, glm::normalize(glm::cross(b - a, c - a)), ref});
+        for (size_t k = 0; k < faces.size() && tris.size() + 2 * paras.size() <= kSmallTriangles; ++k) {
+            const glm::uvec3 &f = faces[k];
+            const glm::vec3 a = verts[f.x], b = verts[f.y], c = verts[f.z];
+            if (k + 1 < faces.size() && faces[k + 1].x == f.x && faces[k + 1].y == f.z) {
+                const glm::vec3 d = verts[faces[k + 1].z], e1 = b - a, e2 = d - a;
+                const glm::vec3 n = glm::cross(e1, e2);
+                const float tol = 1e-6f * (glm::length(e1) + glm::length(e2));
+                if (glm::length(a + e1 + e2 - c) <= tol && glm::length(n) > 0) {  // a parallelogram
+                    const glm::vec3 du = glm::cross(e2, n), dv = glm::cross(n, e1);
+                    const glm::vec3 un = glm::normalize(n);
+                    paras.push_back({a, un, du / glm::dot(e1, du), dv / glm::dot(e2, dv), glm::dot(un, a), ref});
+                    ++k;
+                    continue;
+                }
             }
+            tris.push_back({a, b - a, c - a, glm::normalize(glm::cross(b - a, c - a)), ref});
+        }
         RTCGeometry g = rtcNewGeometry(device, use_quads ? RTC_GEOMETRY_TYPE_QUAD : RTC_GEOMETRY_TYPE_TRIANGLE);
         auto *v = static_cast<float *>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                                                                 3 * sizeof(float), verts.size()));
@@ -335,14 +356,29 @@ struct Renderer::Impl {
     // Packets of 16 rays for the small-scene intersector (structure of arrays).
     struct Packet {
         alignas(64) float ox[16], oy[16], oz[16], dx[16], dy[16], dz[16], tfar[16];
-        alignas(64) int prim[16];  // closest: the triangle's index, or -2 - the sphere's; -1: none
+        alignas(64) int prim[16];  // the triangle's index (parallelograms follow the triangles), -2 - the sphere's; -1: none
     };
 
-    // The closest triangle or sphere along each ray of p with 0 < t < p.tfar (any, if
-    // any_hit): Möller & Trumbore 1997 for the triangles (inclusive edges: a ray through the
-    // shared edge of two triangles hits one of them), the spheres as sphere_hit.
+    // The closest parallelogram, triangle or sphere along each ray of p with 0 < t < p.tfar
+    // (any, if any_hit): Möller & Trumbore 1997 for the triangles, edges inclusive (a ray
+    // through an edge two primitives share hits one of them), the spheres as sphere_hit.
     template <bool any_hit>
     void small_intersect(Packet &p) const {
+        for (size_t k = 0; k < paras.size(); ++k) {
+            const Para &Q = paras[k];
+            const int id = int(tris.size() + k);
+            for (int j = 0; j < 16; ++j) {
+                const float dn = p.dx[j] * Q.n.x + p.dy[j] * Q.n.y + p.dz[j] * Q.n.z;
+                const float t = (Q.nv0 - (p.ox[j] * Q.n.x + p.oy[j] * Q.n.y + p.oz[j] * Q.n.z)) / dn;
+                const float px = p.ox[j] - Q.v0.x + t * p.dx[j], py = p.oy[j] - Q.v0.y + t * p.dy[j],
+                            pz = p.oz[j] - Q.v0.z + t * p.dz[j];
+                const float u = px * Q.du.x + py * Q.du.y + pz * Q.du.z;
+                const float v = px * Q.dv.x + py * Q.dv.y + pz * Q.dv.z;
+                const bool h = (u >= 0.0f) & (u <= 1.0f) & (v >= 0.0f) & (v <= 1.0f) & (t > 0.0f) & (t < p.tfar[j]);
+                p.tfar[j] = h ? (any_hit ? -std::numeric_limits<float>::infinity() : t) : p.tfar[j];
+                p.prim[j] = h ? id : p.prim[j];
+            }
+        }
         for (size_t k = 0; k < tris.size(); ++k) {
             const Tri &T = tris[k];
             const int id = int(k);
@@ -392,9 +428,12 @@ struct Renderer::Impl {
         h.hit = true;
         h.t = t;
         h.p = o + t * d;
-        if (prim >= 0) {
+        if (prim >= 0 && size_t(prim) < tris.size()) {
             h.ref = tris[size_t(prim)].ref;
             h.n = tris[size_t(prim)].n;
+        } else if (prim >= 0) {
+            h.ref = paras[size_t(prim) - tris.size()].ref;
+            h.n = paras[size_t(prim) - tris.size()].n;
         } else {
             h.ref = GeomRef{GeomKind::SPHERE, -2 - prim};
             h.n = glm::normalize(h.p - scene.spheres[size_t(-2 - prim)].center);
@@ -673,7 +712,8 @@ struct Renderer::Impl {
         while (!wf.active.empty()) {
             const size_t na = wf.active.size();
             wf.hits.resize(na);
-            for (size_t b = 0; small_scene && b < na; b += 16) {
+            const bool small = small_scene && !set.embree_always;
+            for (size_t b = 0; small && b < na; b += 16) {
                 const size_t cnt = std::min<size_t>(16, na - b);
                 Packet pk;
                 for (size_t j = 0; j < 16; ++j) {
@@ -689,7 +729,7 @@ struct Renderer::Impl {
                     wf.hits[b + j] = make_small_hit(ps.o, ps.d, pk.prim[j], pk.tfar[j]);
                 }
             }
-            for (size_t b = 0; !small_scene && b < na; b += 16) {
+            for (size_t b = 0; !small && b < na; b += 16) {
                 const size_t cnt = std::min<size_t>(16, na - b);
                 alignas(64) int valid[16];
                 alignas(64) RTCRayHit16 rh;
@@ -729,7 +769,7 @@ struct Renderer::Impl {
                 if (wf.recs[i].mat >= 0) wf.next.push_back(wf.active[i]);
             }
             const size_t ns = wf.shadows.size();
-            for (size_t b = 0; small_scene && b < ns; b += 16) {
+            for (size_t b = 0; small && b < ns; b += 16) {
                 const size_t cnt = std::min<size_t>(16, ns - b);
                 Packet pk;
                 for (size_t j = 0; j < 16; ++j) {
@@ -746,7 +786,7 @@ struct Renderer::Impl {
                         ps.L += ps.shadow_c;
                     }
             }
-            for (size_t b = 0; !small_scene && b < ns; b += 16) {
+            for (size_t b = 0; !small && b < ns; b += 16) {
                 const size_t cnt = std::min<size_t>(16, ns - b);
                 alignas(64) int valid[16];
                 alignas(64) RTCRay16 r;

@@ -122,6 +122,9 @@ struct RenderSettings {
     // default: on the stimulus scene it takes 6 % off the variance but adds 75 % to the time
     // (BENCHMARKS.md); it pays where the light is large and close.
     bool solid_angle_lights = false;
+    // Trace every ray with Embree, also in a scene small enough for the renderer's own
+    // 16-wide intersector (render.cpp; for tests and measurements: the images agree).
+    bool embree_always = false;
     Sampler sampler = Sampler::INDEPENDENT;
 };
 
