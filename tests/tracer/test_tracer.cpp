@@ -268,6 +268,55 @@ TEST(Estimators, MisBrdfAndLightConvergeToTheSameImage) {
     }
 }
 
+// The small-scene intersector (against Embree), solid-angle sampling of the light
+// (sphrect.hpp) and the Sobol' sampler change the noise, not the image: each against area sampling with independent numbers, per 8×8 block, for the
+// MIS estimator (whose weights take the light's pdf from the same technique) and light
+// sampling alone, on the sharp dark stimulus.
+TEST(Estimators, IntersectorsLightSamplingAndSobolConvergeToTheSameImage) {
+    pgt::Scene sc = pgt::load_scene(kScenes + "/stimulus.scene");
+    sc.set_material("paint", pgloss_physical{{0.03, 0.03, 0.03}, 0.099, 0.04, 0.04, PGLOSS_NORM_WARD});
+    for (pgt::Mode mode : {pgt::Mode::MIS, pgt::Mode::LIGHT}) {
+        pgt::RenderSettings s = sc.settings;
+        s.width = 64, s.height = 48, s.spp = 256, s.mode = mode;
+        s.solid_angle_lights = false, s.sampler = pgt::Sampler::INDEPENDENT;
+        const Rendered base = render(sc, s);
+        struct Variant {
+            const char *name;
+            bool solid_angle;
+            pgt::Sampler sampler;
+        };
+        for (const Variant &v : {Variant{"Embree for every ray", false, pgt::Sampler::INDEPENDENT},
+                                 Variant{"solid angle", true, pgt::Sampler::INDEPENDENT},
+                                 Variant{"sobol", false, pgt::Sampler::SOBOL},
+                                 Variant{"solid angle + sobol", true, pgt::Sampler::SOBOL}}) {
+            s.solid_angle_lights = v.solid_angle, s.sampler = v.sampler, s.seed = 11;
+            s.embree_always = std::string(v.name) == "Embree for every ray";
+            const Rendered r = render(sc, s);
+            const int B = 8;
+            double max_z = 0, sum_a = 0, sum_b = 0, var_a = 0, var_b = 0;
+            for (int by = 0; by < s.height / B; ++by)
+                for (int bx = 0; bx < s.width / B; ++bx) {
+                    double ma = 0, mb = 0, va = 0, vb = 0;
+                    for (int y = by * B; y < (by + 1) * B; ++y)
+                        for (int x = bx * B; x < (bx + 1) * B; ++x) {
+                            ma += lum(base.img.at(x, y)), mb += lum(r.img.at(x, y));
+                            va += lum(base.var.at(x, y)), vb += lum(r.var.at(x, y));
+                        }
+                    sum_a += ma, sum_b += mb, var_a += va, var_b += vb;
+                    const double n = B * B;
+                    max_z = std::max(max_z, std::fabs(ma - mb) / n / std::sqrt((va + vb) / (n * n) + 1e-30));
+                }
+            const double z_all = std::fabs(sum_a - sum_b) / std::sqrt(var_a + var_b);
+            std::printf("%s, area + independent vs %s: max block |z| %.2f, image means %.5f %.5f (z %.2f)\n",
+                        pgt::mode_name(mode), v.name, max_z, sum_a / (s.width * s.height), sum_b / (s.width * s.height),
+                        z_all);
+            SCOPED_TRACE(v.name);
+            EXPECT_LT(max_z, 5.0);
+            EXPECT_LT(z_all, 4.0);
+        }
+    }
+}
+
 // ---------------------------------------------------------------- determinism
 
 TEST(Determinism, SameImageWhateverTheThreadCount) {
@@ -278,6 +327,13 @@ TEST(Determinism, SameImageWhateverTheThreadCount) {
     ASSERT_EQ(one.img.rgb.size(), two.img.rgb.size());
     EXPECT_EQ(0, std::memcmp(one.img.rgb.data(), two.img.rgb.data(), one.img.rgb.size() * sizeof(float)));
     EXPECT_EQ(0, std::memcmp(one.img.rgb.data(), three.img.rgb.data(), one.img.rgb.size() * sizeof(float)));
+    for (bool sobol : {false, true}) {  // each technique, for the sampler's own state too
+        pgt::RenderSettings t = s;
+        t.solid_angle_lights = true;
+        if (sobol) t.sampler = pgt::Sampler::SOBOL;
+        Rendered a = render(sc, t, 1), b = render(sc, t, 3);
+        EXPECT_EQ(0, std::memcmp(a.img.rgb.data(), b.img.rgb.data(), a.img.rgb.size() * sizeof(float))) << sobol;
+    }
     s.seed += 1;
     Rendered other = render(sc, s, 2);
     EXPECT_NE(0, std::memcmp(one.img.rgb.data(), other.img.rgb.data(), one.img.rgb.size() * sizeof(float)));
@@ -398,12 +454,15 @@ TEST(PovRay, DiffuseSceneAgreesPerRegion) {
 // it only shadows itself, where cosθ <= 0) — computed here by a 96×96 midpoint rule over the
 // light and 3×3 points per pixel, independently of the tracer's sampling.
 
-TEST(DirectLight, SphereMatchesQuadrature) {
+class DirectLight : public ::testing::TestWithParam<bool> {};  // solid-angle light sampling?
+
+TEST_P(DirectLight, SphereMatchesQuadrature) {
     pgt::Scene sc = pgt::load_scene(kScenes + "/povray-diffuse.scene");
     const int w = sc.settings.width, h = sc.settings.height;
     pgt::RenderSettings s = sc.settings;
     s.max_depth = 1;
     s.spp = 256;
+    s.solid_angle_lights = GetParam();
     Rendered tr = render(sc, s);
     std::vector<int> reg = pgt::Renderer(sc).regions(w, h);
     const pgt::Sphere &sp = sc.spheres.at(0);
@@ -448,12 +507,15 @@ TEST(DirectLight, SphereMatchesQuadrature) {
             double z = std::fabs(v - q) / (std::sqrt(double(lum(tr.var.at(x, y)))) + 0.01 * q + 1e-4);
             max_rel = std::max(max_rel, z);
         }
-    std::printf("direct light on the sphere: %d pixels, tracer mean %.5f, quadrature %.5f (%+.2f %%), "
-                "max |diff| / (sigma + 1 %%) %.2f\n", n, sum_t / n, sum_q / n, 100 * (sum_t - sum_q) / sum_q,
+    std::printf("direct light on the sphere (%s): %d pixels, tracer mean %.5f, quadrature %.5f (%+.2f %%), "
+                "max |diff| / (sigma + 1 %%) %.2f\n", GetParam() ? "solid angle" : "area", n, sum_t / n, sum_q / n, 100 * (sum_t - sum_q) / sum_q,
                 max_rel);
     EXPECT_LT(std::fabs(sum_t - sum_q) / sum_q, 0.005);
     EXPECT_LT(max_rel, 5.0);
 }
+
+INSTANTIATE_TEST_SUITE_P(LightSampling, DirectLight, ::testing::Values(false, true),
+                         [](const ::testing::TestParamInfo<bool> &i) { return i.param ? "SolidAngle" : "Area"; });
 
 // ---------------------------------------------------------------- display pipeline
 

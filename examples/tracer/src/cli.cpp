@@ -91,9 +91,18 @@ CliOptions parse_cli(const std::vector<std::string> &args) {
             o.mode = val();
             if (o.mode != "mis" && o.mode != "brdf" && o.mode != "light")
                 throw CliError("--mode must be mis, brdf or light, not '" + o.mode + "'");
+        } else if (a == "--sampler") {
+            o.sampler = val();
+            if (o.sampler != "independent" && o.sampler != "sobol")
+                throw CliError("--sampler must be independent or sobol, not '" + o.sampler + "'");
+        } else if (a == "--light-sampling") {
+            o.light_sampling = val();
+            if (o.light_sampling != "solid-angle" && o.light_sampling != "area")
+                throw CliError("--light-sampling must be solid-angle or area, not '" + o.light_sampling + "'");
         } else if (a == "--seed") o.seed = long(parse_integer(a, val(), 0, long(limits::seed)));
         else if (a == "--threads") o.threads = int(parse_integer(a, val(), 1, limits::threads));
         else if (a == "--quiet") o.quiet = true;
+        else if (a == "--embree") o.embree = true;
         else if (a == "-h" || a == "--help") {
             o.command = CliOptions::Command::HELP;
             return o;

@@ -21,6 +21,9 @@ struct CliOptions {
     long seed = -1;                                   // -1: not given
     double time_s = 0;                                // 0: not given
     std::string mode;                                 // "": not given; else mis, brdf or light
+    std::string sampler;                              // "": not given; else independent or sobol
+    std::string light_sampling;                       // "": not given; else solid-angle or area
+    bool embree = false;                              // --embree: every ray through Embree
     bool quiet = false;
 };
 

@@ -35,6 +35,9 @@ void usage() {
         "  --size WxH       image size        --spp N        samples per pixel\n"
         "  --time S         stop after S seconds (figures: for the whole figure)\n"
         "  --mode mis|brdf|light   estimator  --seed N       --threads N (default: all)\n"
+        "  --sampler independent|sobol            random numbers (default independent)\n"
+        "  --light-sampling solid-angle|area      rectangular lights (default area)\n"
+        "  --embree         every ray through Embree (small scenes have their own intersector)\n"
         "  --quiet          no progress bar\n"
         "  --version        print the version      -h, --help  this text\n"
         "render: Ctrl-C stops early and writes what has been rendered (exit 130); twice ends at once.\n",
@@ -73,6 +76,9 @@ int main(int argc, char **argv) {
             }
             if (!o.mode.empty()) s.mode = pgt::parse_mode(o.mode);
             if (o.seed >= 0) s.seed = unsigned(o.seed);
+            if (!o.sampler.empty()) s.sampler = o.sampler == "sobol" ? pgt::Sampler::SOBOL : pgt::Sampler::INDEPENDENT;
+            if (!o.light_sampling.empty()) s.solid_angle_lights = o.light_sampling == "solid-angle";
+            s.embree_always = o.embree;
             const std::string &out = o.out;
             std::filesystem::path parent = std::filesystem::path(out).parent_path();
             if (!parent.empty()) std::filesystem::create_directories(parent);

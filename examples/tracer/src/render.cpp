@@ -3,6 +3,9 @@
 // render.cpp — the path tracer (see render.hpp).
 #include "render.hpp"
 
+#include "sampler.hpp"
+#include "sphrect.hpp"
+
 #include <embree3/rtcore.h>
 #include <pgloss/batch.h>
 
@@ -28,38 +31,6 @@ namespace pgt {
 namespace {
 
 constexpr float kPi = 3.14159265358979323846f;
-
-// PCG32 (O'Neill 2014), seeded per (seed, pixel, sample) through SplitMix64.
-std::uint64_t splitmix64(std::uint64_t x) {
-    x += 0x9e3779b97f4a7c15ull;
-    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-    return x ^ (x >> 31);
-}
-
-class Rng {
-public:
-    Rng() : state_(0), inc_(1) {}
-    Rng(unsigned seed, std::uint64_t pixel, std::uint64_t sample) {
-        std::uint64_t h = splitmix64(splitmix64(splitmix64(seed) ^ pixel) ^ sample);
-        inc_ = (splitmix64(h) << 1u) | 1u;
-        state_ = 0;
-        next();
-        state_ += h;
-        next();
-    }
-    std::uint32_t next() {
-        std::uint64_t old = state_;
-        state_ = old * 6364136223846793005ull + inc_;
-        auto xorshifted = static_cast<std::uint32_t>(((old >> 18u) ^ old) >> 27u);
-        auto rot = static_cast<std::uint32_t>(old >> 59u);
-        return (xorshifted >> rot) | (xorshifted << ((-rot) & 31u));
-    }
-    float uniform() { return float(next() >> 8) * (1.0f / 16777216.0f); }  // [0, 1)
-
-private:
-    std::uint64_t state_, inc_;
-};
 
 struct Frame {  // orthonormal basis around n (Duff et al. 2017)
     glm::vec3 t{0}, b{0}, n{0};
@@ -144,7 +115,7 @@ struct PathState {
     float prev_pdf = 0;
     Prev prev = Prev::CAMERA;
     int depth = 0;                   // index of the vertex the next hit will be
-    Rng rng;
+    PathSampler smp;                 // its random numbers (sampler.hpp)
     bool shadow = false;             // a next-event estimate waits for its shadow ray:
     glm::vec3 shadow_o{0}, shadow_d{0}, shadow_c{0};  // ray, and what it adds if unoccluded
     float shadow_tmax = 0;
@@ -166,6 +137,8 @@ struct ShadeRec {
     pgloss_vec3 wo{0, 0, 1}, wil{0, 0, 1};  // local directions: to the viewer, to the light
     float pdf_light = 0, tmax = 0;
     float u[3] = {0, 0, 0};          // the BRDF sample's random numbers
+    float ul[2] = {0, 0};            // the light sample's
+    int li = -1;                     // the light sampled; -1: no next-event estimate
     int mat = -1;                    // material index; -1: the path ends at this hit
     Prev strat = Prev::LIGHT;
     bool nee = false;                // a next-event estimate to weight
@@ -213,6 +186,27 @@ struct Renderer::Impl {
     bool analytic_spheres = false;
     bool use_quads = false;  // meshes and lights as Embree quads (pairs_into_quads)
     float eps = 1e-4f;           // ray offset, scaled to the scene
+    std::vector<RectFrame> rects;  // per light, for solid-angle sampling (sphrect.hpp)
+    // A scene of at most kSmallTriangles triangles and kAnalyticSpheres spheres (the stimulus:
+    // 14 and 1) is intersected here too, each packet of 16 rays against every primitive in
+    // lane loops the compiler vectorises: cheaper than any traversal of a BVH of 2 nodes
+    // (Embree took ~40 ns a ray for the stimulus box).
+    static constexpr size_t kSmallTriangles = 32;
+    struct Tri {
+        glm::vec3 v0, e1, e2, n;  // n: unit normal
+        GeomRef ref;
+    };
+    std::vector<Tri> tris;
+    // A pair of triangles (a, b, c), (a, c, d) that is a parallelogram (the scene's boxes,
+    // quads and lights) is tested once, as a plane and two edge coordinates: u = (p − a)·du,
+    // v = (p − a)·dv with du, dv the dual basis of its edges b − a, d − a.
+    struct Para {
+        glm::vec3 v0, n, du, dv;  // n: unit normal
+        float nv0;                // n·v0
+        GeomRef ref;
+    };
+    std::vector<Para> paras;
+    bool small_scene = false;
 
     explicit Impl(const Scene &s) : scene(s) {
         // A Scene built in code has not been through the parser's checks.
@@ -251,8 +245,11 @@ struct Renderer::Impl {
             const AreaLight &l = s.lights[i];
             std::vector<glm::vec3> v{l.corner, l.corner + l.edge1, l.corner + l.edge1 + l.edge2, l.corner + l.edge2};
             add_triangles(v, {{0, 1, 2}, {0, 2, 3}}, {GeomKind::LIGHT, int(i)});
+            rects.push_back(rect_frame(l.corner, l.edge1, l.edge2, l.normal));
         }
         eps = 1e-4f * extent;
+        small_scene = analytic_spheres && tris.size() + 2 * paras.size() <= kSmallTriangles;
+        if (!small_scene) tris.clear(), paras.clear();
         rtcCommitScene(rtc);
     }
     ~Impl() {
@@ -277,6 +274,23 @@ struct Renderer::Impl {
         return true;
     }
     void add_triangles(const std::vector<glm::vec3> &verts, const std::vector<glm::uvec3> &faces, GeomRef ref) {
+        for (size_t k = 0; k < faces.size() && tris.size() + 2 * paras.size() <= kSmallTriangles; ++k) {
+            const glm::uvec3 &f = faces[k];
+            const glm::vec3 a = verts[f.x], b = verts[f.y], c = verts[f.z];
+            if (k + 1 < faces.size() && faces[k + 1].x == f.x && faces[k + 1].y == f.z) {
+                const glm::vec3 d = verts[faces[k + 1].z], e1 = b - a, e2 = d - a;
+                const glm::vec3 n = glm::cross(e1, e2);
+                const float tol = 1e-6f * (glm::length(e1) + glm::length(e2));
+                if (glm::length(a + e1 + e2 - c) <= tol && glm::length(n) > 0) {  // a parallelogram
+                    const glm::vec3 du = glm::cross(e2, n), dv = glm::cross(n, e1);
+                    const glm::vec3 un = glm::normalize(n);
+                    paras.push_back({a, un, du / glm::dot(e1, du), dv / glm::dot(e2, dv), glm::dot(un, a), ref});
+                    ++k;
+                    continue;
+                }
+            }
+            tris.push_back({a, b - a, c - a, glm::normalize(glm::cross(b - a, c - a)), ref});
+        }
         RTCGeometry g = rtcNewGeometry(device, use_quads ? RTC_GEOMETRY_TYPE_QUAD : RTC_GEOMETRY_TYPE_TRIANGLE);
         auto *v = static_cast<float *>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                                                                 3 * sizeof(float), verts.size()));
@@ -339,6 +353,94 @@ struct Renderer::Impl {
         return tmax;
     }
 
+    // Packets of 16 rays for the small-scene intersector (structure of arrays).
+    struct Packet {
+        alignas(64) float ox[16], oy[16], oz[16], dx[16], dy[16], dz[16], tfar[16];
+        alignas(64) int prim[16];  // the triangle's index (parallelograms follow the triangles), -2 - the sphere's; -1: none
+    };
+
+    // The closest parallelogram, triangle or sphere along each ray of p with 0 < t < p.tfar
+    // (any, if any_hit): Möller & Trumbore 1997 for the triangles, edges inclusive (a ray
+    // through an edge two primitives share hits one of them), the spheres as sphere_hit.
+    template <bool any_hit>
+    void small_intersect(Packet &p) const {
+        for (size_t k = 0; k < paras.size(); ++k) {
+            const Para &Q = paras[k];
+            const int id = int(tris.size() + k);
+            for (int j = 0; j < 16; ++j) {
+                const float dn = p.dx[j] * Q.n.x + p.dy[j] * Q.n.y + p.dz[j] * Q.n.z;
+                const float t = (Q.nv0 - (p.ox[j] * Q.n.x + p.oy[j] * Q.n.y + p.oz[j] * Q.n.z)) / dn;
+                const float px = p.ox[j] - Q.v0.x + t * p.dx[j], py = p.oy[j] - Q.v0.y + t * p.dy[j],
+                            pz = p.oz[j] - Q.v0.z + t * p.dz[j];
+                const float u = px * Q.du.x + py * Q.du.y + pz * Q.du.z;
+                const float v = px * Q.dv.x + py * Q.dv.y + pz * Q.dv.z;
+                const bool h = (u >= 0.0f) & (u <= 1.0f) & (v >= 0.0f) & (v <= 1.0f) & (t > 0.0f) & (t < p.tfar[j]);
+                p.tfar[j] = h ? (any_hit ? -std::numeric_limits<float>::infinity() : t) : p.tfar[j];
+                p.prim[j] = h ? id : p.prim[j];
+            }
+        }
+        for (size_t k = 0; k < tris.size(); ++k) {
+            const Tri &T = tris[k];
+            const int id = int(k);
+            for (int j = 0; j < 16; ++j) {
+                const float px = p.dy[j] * T.e2.z - p.dz[j] * T.e2.y;
+                const float py = p.dz[j] * T.e2.x - p.dx[j] * T.e2.z;
+                const float pz = p.dx[j] * T.e2.y - p.dy[j] * T.e2.x;
+                const float det = T.e1.x * px + T.e1.y * py + T.e1.z * pz;
+                const float inv = 1.0f / det;  // det 0: ±inf or NaN below, and no hit
+                const float tx = p.ox[j] - T.v0.x, ty = p.oy[j] - T.v0.y, tz = p.oz[j] - T.v0.z;
+                const float u = (tx * px + ty * py + tz * pz) * inv;
+                const float qx = ty * T.e1.z - tz * T.e1.y, qy = tz * T.e1.x - tx * T.e1.z, qz = tx * T.e1.y - ty * T.e1.x;
+                const float v = (p.dx[j] * qx + p.dy[j] * qy + p.dz[j] * qz) * inv;
+                const float t = (T.e2.x * qx + T.e2.y * qy + T.e2.z * qz) * inv;
+                const bool h = (u >= 0.0f) & (v >= 0.0f) & (u + v <= 1.0f) & (t > 0.0f) & (t < p.tfar[j]);
+                p.tfar[j] = h ? (any_hit ? -std::numeric_limits<float>::infinity() : t) : p.tfar[j];
+                p.prim[j] = h ? id : p.prim[j];
+            }
+        }
+        for (size_t k = 0; k < scene.spheres.size(); ++k) {
+            const Sphere &sp = scene.spheres[k];
+            const float r2 = sp.radius * sp.radius;
+            const int id = -2 - int(k);
+            for (int j = 0; j < 16; ++j) {
+                const float fx = p.ox[j] - sp.center.x, fy = p.oy[j] - sp.center.y, fz = p.oz[j] - sp.center.z;
+                const float a = p.dx[j] * p.dx[j] + p.dy[j] * p.dy[j] + p.dz[j] * p.dz[j];
+                const float b = -(fx * p.dx[j] + fy * p.dy[j] + fz * p.dz[j]);
+                const float ba = b / a;
+                const float lx = fx + ba * p.dx[j], ly = fy + ba * p.dy[j], lz = fz + ba * p.dz[j];
+                const float disc = a * (r2 - (lx * lx + ly * ly + lz * lz));
+                const float q = b + std::copysign(std::sqrt(std::max(disc, 0.0f)), b);
+                const float c = fx * fx + fy * fy + fz * fz - r2;
+                const float t0 = c / q, t1 = q / a;
+                const float tn = std::min(t0, t1), tf = std::max(t0, t1);
+                const float t = tn > 0.0f ? tn : tf;
+                const bool h = (disc >= 0.0f) & (q != 0.0f) & (t > 0.0f) & (t < p.tfar[j]);
+                p.tfar[j] = h ? (any_hit ? -std::numeric_limits<float>::infinity() : t) : p.tfar[j];
+                p.prim[j] = h ? id : p.prim[j];
+            }
+        }
+    }
+
+    // The hit record of a ray whose closest primitive small_intersect found (prim, t).
+    Hit make_small_hit(glm::vec3 o, glm::vec3 d, int prim, float t) const {
+        Hit h;
+        if (prim == -1) return h;
+        h.hit = true;
+        h.t = t;
+        h.p = o + t * d;
+        if (prim >= 0 && size_t(prim) < tris.size()) {
+            h.ref = tris[size_t(prim)].ref;
+            h.n = tris[size_t(prim)].n;
+        } else if (prim >= 0) {
+            h.ref = paras[size_t(prim) - tris.size()].ref;
+            h.n = paras[size_t(prim) - tris.size()].n;
+        } else {
+            h.ref = GeomRef{GeomKind::SPHERE, -2 - prim};
+            h.n = glm::normalize(h.p - scene.spheres[size_t(-2 - prim)].center);
+        }
+        return h;
+    }
+
     // The hit record of a ray (o, d) whose closest hit is Embree's (geomID, t, Ng), or else the
     // sphere: the analytic sphere hit before t (sphere_hit), or -1.
     Hit make_hit(glm::vec3 o, glm::vec3 d, unsigned geom_id, float t, glm::vec3 ng, int sphere) const {
@@ -377,7 +479,7 @@ struct Renderer::Impl {
     int material_index_at(int mi, glm::vec3 p) const {
         const Material &m = scene.materials[size_t(mi)];
         if (!m.checker) return mi;
-        glm::vec3 q = glm::floor((p - m.check_offset) / m.check_size);
+        glm::vec3 q = glm::floor((p - m.check_offset) * (1.0f / m.check_size));
         long parity = (long(q.x) + long(q.y) + long(q.z)) & 1L;
         return parity ? m.check_b : m.check_a;
     }
@@ -388,6 +490,17 @@ struct Renderer::Impl {
         return l.isotropic ? l.radiance / cos_l : l.radiance;
     }
 
+    // The solid-angle pdf with which next-event estimation from o picks the point of light li
+    // that a ray from o reaches at distance t with cosine cos_l: the same choice of technique
+    // (spherical rectangle or area) as the sampling from o made.
+    float light_pdf(bool solid_angle, size_t li, glm::vec3 o, float t, float cos_l) const {
+        if (solid_angle) {
+            const SphRect q = sphrect_setup(rects[li], o);
+            if (q.state == SphRect::OK) return float(1.0 / q.S);
+        }
+        return t * t / (scene.lights[li].area * cos_l);
+    }
+
     size_t light_count() const { return scene.lights.size() + (scene.has_environment ? 1 : 0); }
 
 
@@ -395,7 +508,9 @@ struct Renderer::Impl {
     // Emission reached by the ray is added to ps.L; the light sample of the next-event
     // estimate and the BRDF sample's random numbers go into r, for the lobe calls. Returns
     // false when the path ends here (r.mat = -1).
-    bool shade_begin(PathState &ps, const Hit &hit, Mode mode, int max_depth, ShadeRec &r) const {
+    bool shade_begin(PathState &ps, const Hit &hit, const RenderSettings &set, ShadeRec &r) const {
+        const Mode mode = set.mode;
+        const int max_depth = set.max_depth;
         const glm::vec3 d = ps.d;
         const float nl = float(light_count());
         ps.shadow = false;
@@ -415,7 +530,7 @@ struct Renderer::Impl {
             if (cos_l > 0 && ps.prev != Prev::LIGHT) {
                 float w = 1;
                 if (ps.prev == Prev::MIS) {
-                    float pdf_light = hit.t * hit.t / (l.area * cos_l) / nl;
+                    float pdf_light = light_pdf(set.solid_angle_lights, size_t(hit.ref.index), ps.o, hit.t, cos_l) / nl;
                     w = power_heuristic(ps.prev_pdf, pdf_light);
                 }
                 ps.L += ps.beta * light_emission(l, cos_l) * w;
@@ -433,7 +548,7 @@ struct Renderer::Impl {
         r.frame = Frame(r.n);
         r.wo = r.frame.to_local(-d);
         r.p = hit.p + eps * r.n;
-        Rng &rng = ps.rng;
+        PathSampler &smp = ps.smp;
 
         // Strategy at this vertex: no MIS work where there is no specular lobe.
         r.strat = mode == Mode::BRDF ? Prev::BRDF
@@ -442,42 +557,63 @@ struct Renderer::Impl {
 
         r.nee = false;
         r.wil = r.wo;  // a valid direction for the batched call where there is no estimate
-        if (r.strat != Prev::BRDF && nl > 0) {  // next-event estimation
-            size_t li = std::min(size_t(rng.uniform() * nl), light_count() - 1);
-            float u1 = rng.uniform(), u2 = rng.uniform();
-            glm::vec3 wi, Le;
-            float pdf_light, tmax;
-            bool ok = true;
-            if (li < scene.lights.size()) {
-                const AreaLight &l = scene.lights[li];
-                glm::vec3 y = l.corner + u1 * l.edge1 + u2 * l.edge2;
-                glm::vec3 dv = y - r.p;
-                float dist2 = glm::dot(dv, dv), dist = std::sqrt(dist2);
-                wi = dv * (1.0f / dist);
-                float cos_l = -glm::dot(l.normal, wi);
-                ok = cos_l > 0;
-                pdf_light = ok ? dist2 / (l.area * cos_l) : 0;
-                Le = ok ? light_emission(l, cos_l) : glm::vec3(0);
-                tmax = dist * (1.0f - 1e-4f);
-            } else {  // environment: cosine-weighted about n
-                float rr = std::sqrt(u1), phi = 2 * kPi * u2;
-                pgloss_vec3 lw{rr * std::cos(phi), rr * std::sin(phi), std::sqrt(std::max(0.0f, 1 - u1))};
-                wi = r.frame.to_world(lw);
-                pdf_light = lw.z / kPi;
-                ok = pdf_light > 0;
-                Le = scene.environment;
-                tmax = std::numeric_limits<float>::infinity();
-            }
-            pgloss_vec3 wil = r.frame.to_local(wi);
-            if (ok && wil.z > 0) {
-                r.nee = true;
-                r.wil = wil, r.wi = wi, r.Le = Le, r.pdf_light = pdf_light / nl, r.tmax = tmax;
-            }
+        r.li = -1;
+        if (r.strat != Prev::BRDF && nl > 0) {  // next-event estimation: its numbers now, the rest in light_sample
+            // (a scene with one light draws no number to choose it)
+            r.li = light_count() == 1 ? 0 : int(std::min(size_t(smp.get1() * nl), light_count() - 1));
+            const glm::vec2 ul = smp.get2();
+            r.ul[0] = ul.x, r.ul[1] = ul.y;
         }
         // The BRDF sample's random numbers, drawn now: each path's stream is consumed in the
         // order of the scalar recursion (light sample, BRDF sample, Russian roulette).
-        r.u[0] = rng.uniform(), r.u[1] = rng.uniform(), r.u[2] = rng.uniform();
+        r.u[0] = smp.get1();
+        const glm::vec2 ud = smp.get2();
+        r.u[1] = ud.x, r.u[2] = ud.y;
         return true;
+    }
+
+    // Stage 1b: the light sample of a next-event estimate (r.li, r.ul from stage 1). A loop of
+    // its own over the step's hits: its chain of square root and divisions overlaps across
+    // paths there, instead of stalling the long stage 1 of one path.
+    void light_sample(ShadeRec &r, bool solid_angle) const {
+        const float nl = float(light_count());
+        const size_t li = size_t(r.li);
+        const float u1 = r.ul[0], u2 = r.ul[1];
+        glm::vec3 wi, Le;
+        float pdf_light, tmax;
+        bool ok = true;
+        if (li < scene.lights.size()) {
+            const AreaLight &l = scene.lights[li];
+            const SphRect q = solid_angle ? sphrect_setup(rects[li], r.p) : SphRect{};
+            glm::vec3 y;
+            if (q.state == SphRect::OK) {  // uniform in the light's solid angle: pdf 1/S
+                const glm::dvec2 st = sphrect_sample(rects[li], q, u1, u2);
+                y = glm::vec3(rects[li].corner + st.x * rects[li].ex + st.y * rects[li].ey);
+            } else {  // uniform in area
+                y = l.corner + u1 * l.edge1 + u2 * l.edge2;
+            }
+            glm::vec3 dv = y - r.p;
+            float dist2 = glm::dot(dv, dv), dist = std::sqrt(dist2);
+            wi = dv * (1.0f / dist);
+            float cos_l = -glm::dot(l.normal, wi);
+            ok = cos_l > 0 && dist2 > 0;
+            pdf_light = !ok ? 0 : q.state == SphRect::OK ? float(1.0 / q.S) : dist2 / (l.area * cos_l);
+            Le = ok ? light_emission(l, cos_l) : glm::vec3(0);
+            tmax = dist * (1.0f - 1e-4f);
+        } else {  // environment: cosine-weighted about n
+            float rr = std::sqrt(u1), phi = 2 * kPi * u2;
+            pgloss_vec3 lw{rr * std::cos(phi), rr * std::sin(phi), std::sqrt(std::max(0.0f, 1 - u1))};
+            wi = r.frame.to_world(lw);
+            pdf_light = lw.z / kPi;
+            ok = pdf_light > 0;
+            Le = scene.environment;
+            tmax = std::numeric_limits<float>::infinity();
+        }
+        pgloss_vec3 wil = r.frame.to_local(wi);
+        if (ok && wil.z > 0) {
+            r.nee = true;
+            r.wil = wil, r.wi = wi, r.Le = Le, r.pdf_light = pdf_light / nl, r.tmax = tmax;
+        }
     }
 
     // Stage 3: the next-event estimate from the lobe's f and pdf at r.wil (left in
@@ -503,7 +639,7 @@ struct Renderer::Impl {
         ps.d = glm::normalize(r.frame.to_world(s_wi));
         if (ps.depth >= 3) {  // Russian roulette
             float q = std::min(0.95f, max3(ps.beta));
-            if (!(ps.rng.uniform() < q)) return false;
+            if (!(ps.smp.get1() < q)) return false;
             ps.beta *= 1.0f / q;
         }
         ++ps.depth;
@@ -567,7 +703,7 @@ struct Renderer::Impl {
     // per-call cost and traverse the small BVH for 16 rays at once. Each path keeps its own
     // random stream and adds to its own L in the order of the scalar recursion, so the result
     // does not depend on how the paths are grouped into packets.
-    void trace_wavefront(PathState *paths, size_t n, Wavefront &wf, Mode mode, int max_depth,
+    void trace_wavefront(PathState *paths, size_t n, Wavefront &wf, const RenderSettings &set,
                          std::uint64_t &rays) const {
         RTCIntersectContext ctx;
         rtcInitIntersectContext(&ctx);
@@ -576,7 +712,24 @@ struct Renderer::Impl {
         while (!wf.active.empty()) {
             const size_t na = wf.active.size();
             wf.hits.resize(na);
-            for (size_t b = 0; b < na; b += 16) {
+            const bool small = small_scene && !set.embree_always;
+            for (size_t b = 0; small && b < na; b += 16) {
+                const size_t cnt = std::min<size_t>(16, na - b);
+                Packet pk;
+                for (size_t j = 0; j < 16; ++j) {
+                    const PathState &ps = paths[wf.active[b + std::min(j, cnt - 1)]];
+                    pk.ox[j] = ps.o.x, pk.oy[j] = ps.o.y, pk.oz[j] = ps.o.z;
+                    pk.dx[j] = ps.d.x, pk.dy[j] = ps.d.y, pk.dz[j] = ps.d.z;
+                    pk.tfar[j] = std::numeric_limits<float>::infinity();
+                    pk.prim[j] = -1;
+                }
+                small_intersect<false>(pk);
+                for (size_t j = 0; j < cnt; ++j) {
+                    const PathState &ps = paths[wf.active[b + j]];
+                    wf.hits[b + j] = make_small_hit(ps.o, ps.d, pk.prim[j], pk.tfar[j]);
+                }
+            }
+            for (size_t b = 0; !small && b < na; b += 16) {
                 const size_t cnt = std::min<size_t>(16, na - b);
                 alignas(64) int valid[16];
                 alignas(64) RTCRayHit16 rh;
@@ -605,7 +758,9 @@ struct Renderer::Impl {
             }
             rays += na;
             wf.recs.resize(na);
-            for (size_t i = 0; i < na; ++i) shade_begin(paths[wf.active[i]], wf.hits[i], mode, max_depth, wf.recs[i]);
+            for (size_t i = 0; i < na; ++i) shade_begin(paths[wf.active[i]], wf.hits[i], set, wf.recs[i]);
+            for (size_t i = 0; i < na; ++i)
+                if (wf.recs[i].mat >= 0 && wf.recs[i].li >= 0) light_sample(wf.recs[i], set.solid_angle_lights);
             shade_batched(paths, wf, na);
             wf.next.clear();
             wf.shadows.clear();
@@ -614,7 +769,24 @@ struct Renderer::Impl {
                 if (wf.recs[i].mat >= 0) wf.next.push_back(wf.active[i]);
             }
             const size_t ns = wf.shadows.size();
-            for (size_t b = 0; b < ns; b += 16) {
+            for (size_t b = 0; small && b < ns; b += 16) {
+                const size_t cnt = std::min<size_t>(16, ns - b);
+                Packet pk;
+                for (size_t j = 0; j < 16; ++j) {
+                    const PathState &ps = paths[wf.shadows[b + std::min(j, cnt - 1)]];
+                    pk.ox[j] = ps.shadow_o.x, pk.oy[j] = ps.shadow_o.y, pk.oz[j] = ps.shadow_o.z;
+                    pk.dx[j] = ps.shadow_d.x, pk.dy[j] = ps.shadow_d.y, pk.dz[j] = ps.shadow_d.z;
+                    pk.tfar[j] = ps.shadow_tmax;
+                    pk.prim[j] = -1;
+                }
+                small_intersect<true>(pk);
+                for (size_t j = 0; j < cnt; ++j)
+                    if (pk.prim[j] == -1) {
+                        PathState &ps = paths[wf.shadows[b + j]];
+                        ps.L += ps.shadow_c;
+                    }
+            }
+            for (size_t b = 0; !small && b < ns; b += 16) {
                 const size_t cnt = std::min<size_t>(16, ns - b);
                 alignas(64) int valid[16];
                 alignas(64) RTCRay16 r;
@@ -734,15 +906,15 @@ Image Renderer::render(const RenderSettings &s, const RenderOptions &opt, Render
                         for (int k = s0; k < s1; ++k) {
                             PathState &ps = paths[pi++];
                             ps = PathState{};
-                            ps.rng = Rng(s.seed, pix, std::uint64_t(k));
-                            float jx = ps.rng.uniform(), jy = ps.rng.uniform();
+                            ps.smp = PathSampler(s.sampler, s.seed, pix, std::uint64_t(k));
+                            const glm::vec2 j = ps.smp.get2();
+                            const float jx = j.x, jy = j.y;
                             ps.o = impl_->scene.camera.position;
                             ps.d = pinhole.dir(float(x) + jx, float(y) + jy);
                         }
                     }
                 for (size_t c0 = 0; c0 < paths.size(); c0 += kWavefront)
-                    impl_->trace_wavefront(&paths[c0], std::min(kWavefront, paths.size() - c0), wf, s.mode,
-                                           s.max_depth, local_rays);
+                    impl_->trace_wavefront(&paths[c0], std::min(kWavefront, paths.size() - c0), wf, s, local_rays);
                 pi = 0;
                 for (int y = y0; y < y1; ++y)
                     for (int x = x0; x < x1; ++x) {

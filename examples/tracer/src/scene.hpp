@@ -28,6 +28,8 @@
 // tracer works in float): a number outside it is an error that names the field, never an Inf
 // that reaches Embree or an image of dropped samples.
 #pragma once
+#include "sampler.hpp"
+
 #include <pgloss/pgloss.h>
 
 #include <glm/glm.hpp>
@@ -115,6 +117,15 @@ struct RenderSettings {
     unsigned seed = 1;
     Mode mode = Mode::MIS;
     double time_budget_s = 0;  // 0: no budget, stop at spp
+    // Next-event estimation on rectangular lights uniform in solid angle (Ureña et al. 2013,
+    // sphrect.hpp) instead of uniform in area (as Mitsuba's rectangle emitter). Off by
+    // default: on the stimulus scene it takes 6 % off the variance but adds 75 % to the time
+    // (BENCHMARKS.md); it pays where the light is large and close.
+    bool solid_angle_lights = false;
+    // Trace every ray with Embree, also in a scene small enough for the renderer's own
+    // 16-wide intersector (render.cpp; for tests and measurements: the images agree).
+    bool embree_always = false;
+    Sampler sampler = Sampler::INDEPENDENT;
 };
 
 struct Scene {
