@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
@@ -115,6 +116,22 @@ TEST(CbrtD, ExactCubesAreExact) {
         const double r = std::ldexp(1.0, e);
         ASSERT_EQ(pgloss__cbrt_d(r * r * r), r) << e;
     }
+}
+
+// L* = 116 ∛Y − 16 takes ∛Y as 2^(1/3) ∛(Y/2) (perceptual_d.h): its error against long double.
+TEST(CbrtD, LightnessAgainstLongDouble) {
+    std::mt19937_64 rng(5);
+    double worst = 0.0;
+    for (int k = 0; k < 4000000; ++k) {
+        const double Y = static_cast<double>(rng() >> 11) * 0x1p-53;
+        if (Y <= PGLOSS_CIE_EPSILON) continue;
+        double L = 0.0;
+        ASSERT_EQ(pgloss_lightness_from_luminance(Y, &L), PGLOSS_OK);
+        const long double ref = 116.0L * cbrtl(static_cast<long double>(Y)) - 16.0L;
+        worst = std::max(worst, static_cast<double>(std::fabs((static_cast<long double>(L) - ref) / ref)));
+    }
+    EXPECT_LE(worst, 8e-16);  // glibc's cbrt in the same formula: 1.2e-15
+    std::printf("lightness_from_luminance: max relative error %.3e\n", worst);
 }
 
 // ---- the vectorised loops of every ISA against the scalar functions, bit for bit ----------
