@@ -1559,4 +1559,81 @@ TEST(Vectors, validity_and_material_batches) {
                 });
 }
 
+// Scalar and batch agree bit for bit (perceptual_batch.h): the batches run the scalar
+// functions' per-element code (libpgloss/src/perceptual_d.h), vectorised on the best ISA of
+// this CPU; every case of the vector files goes through both, in one batch per file and
+// function, and every output and status must be identical, not merely within tolerance.
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+std::vector<const json *> cases_of(const json &doc, const char *fn) {
+    std::vector<const json *> out;
+    for (const json &c : doc["cases"])
+        if (c["function"] == fn) out.push_back(&c);
+    return out;
+}
+
+TEST(Vectors, batch_equals_scalar_bit_for_bit) {
+    int compared = 0;
+    if (const json *doc = doc_or_fail("gloss.json")) {
+        const auto cs = cases_of(*doc, "gloss_from_physical");
+        const size_t n = cs.size();
+        Col rd(n), rs(n), al(n), L(n), c(n), d(n);
+        std::vector<signed char> st(n);
+        for (size_t k = 0; k < n; ++k) {
+            const json &in = (*cs[k])["input"];
+            rd.p()[k] = num(in["rho_d"]), rs.p()[k] = num(in["rho_s"]), al.p()[k] = num(in["alpha"]);
+        }
+        pgloss_gloss_from_physical_batch(n, rd.p(), rs.p(), al.p(), L.p(), c.p(), d.p(), st.data());
+        for (size_t k = 0; k < n; ++k, ++compared) {
+            double l, cc, dd;
+            const pgloss_status want = pgloss_gloss_from_physical(rd.p()[k], rs.p()[k], al.p()[k], &l, &cc, &dd);
+            EXPECT_EQ(int(st[k]), int(want)) << case_id(*cs[k]);
+            EXPECT_TRUE(same_bits(L.p()[k], l) && same_bits(c.p()[k], cc) && same_bits(d.p()[k], dd))
+                << case_id(*cs[k]);
+        }
+    }
+    // physical_from_perceptual(_ex): both files, every known space and normalisation.
+    for (const char *file : {"perceptual_material.json", "color_space.json"}) {
+        const json *doc = doc_or_fail(file);
+        if (!doc) continue;
+        const bool ex = std::string(file) == "color_space.json";
+        for (const json *cp : cases_of(*doc, ex ? "physical_from_perceptual_ex" : "physical_from_perceptual")) {
+            const json &in = (*cp)["input"];
+            const int norm = in["normalization"].get<int>(), space = ex ? in["space"].get<int>() : 0;
+            if (!known_norm(norm) || !known_space(space)) continue;  // whole-call errors
+            const pgloss_perceptual v = perceptual_from(in["q"]);
+            double r, g, b, s, ax, ay;
+            signed char st = 99;
+            const pgloss_perceptual_array q{&v.L, &v.a, &v.b, &v.c, &v.d};
+            const pgloss_physical_out p{&r, &g, &b, &s, &ax, &ay};
+            pgloss_physical_from_perceptual_batch_ex(1, q, static_cast<pgloss_normalization>(norm),
+                                                     static_cast<pgloss_color_space>(space), p, &st);
+            pgloss_physical o;
+            const pgloss_status want = pgloss_physical_from_perceptual_ex(
+                &v, static_cast<pgloss_normalization>(norm), static_cast<pgloss_color_space>(space), &o);
+            EXPECT_EQ(int(st), int(want)) << case_id(*cp);
+            EXPECT_TRUE(same_bits(r, o.rho_d[0]) && same_bits(g, o.rho_d[1]) && same_bits(b, o.rho_d[2]) &&
+                        same_bits(s, o.rho_s) && same_bits(ax, o.alpha_x) && same_bits(ay, o.alpha_y))
+                << case_id(*cp);
+            ++compared;
+        }
+    }
+    // rgb_from_lab: the same per-element code as physical_from_perceptual's colour.
+    if (const json *doc = doc_or_fail("color.json")) {
+        for (const json *cp : cases_of(*doc, "rgb_from_lab")) {
+            const json &lab = (*cp)["input"]["lab"];
+            const double in[3] = {num(lab[0]), num(lab[1]), num(lab[2])};
+            double r, g, b, want_rgb[3];
+            signed char st = 99;
+            pgloss_rgb_from_lab_batch(1, pgloss_lab_array{&in[0], &in[1], &in[2]}, pgloss_rgb_out_d{&r, &g, &b}, &st);
+            const pgloss_status want = pgloss_rgb_from_lab(in, want_rgb);
+            EXPECT_EQ(int(st), int(want)) << case_id(*cp);
+            EXPECT_TRUE(same_bits(r, want_rgb[0]) && same_bits(g, want_rgb[1]) && same_bits(b, want_rgb[2]))
+                << case_id(*cp);
+            ++compared;
+        }
+    }
+    EXPECT_GT(compared, 200);
+}
+
 }  // namespace

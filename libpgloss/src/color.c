@@ -4,6 +4,7 @@
  * Fig. 13. The matrices are derived (in 40-digit arithmetic) from the primaries and the white
  * of each space (D65 is (0.3127, 0.3290)), so that neutral L*a*b* maps to R = G = B. */
 #include "internal.h"
+#include "perceptual_d.h"
 #include "pgloss/perceptual.h"
 
 /* RGB ↔ XYZ (D65) per working space, indexed by pgloss_color_space. Printed by
@@ -50,19 +51,9 @@ static const space_matrices SPACES[4] = {
     },
 };
 
-#define WHITE_X (0.3127 / 0.3290)
-#define WHITE_Z (0.3583 / 0.3290)
-#define DELTA (6.0 / 29.0)
-
-/* CIELAB's companding function and its inverse (CIE 15:2004), in the exact rational form. */
-static double lab_f(double t)
+const double *pgloss__from_xyz_matrix(pgloss_color_space space)
 {
-    return t > PGLOSS_CIE_EPSILON ? cbrt(t) : (PGLOSS_CIE_KAPPA * t + 16.0) / 116.0;
-}
-
-static double lab_finv(double t)
-{
-    return t > DELTA ? t * t * t : 3.0 * DELTA * DELTA * (t - 4.0 / 29.0);
+    return &SPACES[space].from_xyz[0][0];
 }
 
 static void mul3(const double M[3][3], const double v[3], double out[3])
@@ -80,27 +71,12 @@ pgloss_status pgloss_rgb_from_lab_ex(const double lab[3], pgloss_color_space spa
         return PGLOSS_ERR_NULL;
     if (!pgloss__valid_color_space(space))
         return PGLOSS_ERR_ARGUMENT;
-    if (!isfinite(lab[0]) || !isfinite(lab[1]) || !isfinite(lab[2]))
-        return PGLOSS_ERR_NONFINITE;
-    if (lab[0] < 0.0 || lab[0] > 100.0)
-        return PGLOSS_ERR_LIGHTNESS;
-    const double fy = (lab[0] + 16.0) / 116.0;
-    double xyz[3], out[3];
-    xyz[0] = WHITE_X * lab_finv(fy + lab[1] / 500.0);
-    pgloss_luminance_from_lightness(lab[0], &xyz[1]); /* exact on both branches */
-    xyz[2] = WHITE_Z * lab_finv(fy - lab[2] / 200.0);
-    mul3(SPACES[space].from_xyz, xyz, out);
-    if (!isfinite(out[0]) || !isfinite(out[1]) || !isfinite(out[2]))
-        return PGLOSS_ERR_NONFINITE;
-    rgb[0] = out[0]; rgb[1] = out[1]; rgb[2] = out[2];
-    for (int k = 0; k < 3; ++k)
-        if (out[k] < -PGLOSS_BOUNDARY_TOLERANCE)
-            return PGLOSS_ERR_GAMUT;
-    /* Within the tolerance below 0 a channel is on the gamut boundary up to rounding: it is
-     * returned as 0, so that what this accepts every other function accepts too. */
-    for (int k = 0; k < 3; ++k)
-        rgb[k] = out[k] < 0.0 ? 0.0 : out[k];
-    return PGLOSS_OK;
+    /* The batch's per-element code (perceptual_d.h): the same bits. A channel within the
+     * tolerance below 0 is on the gamut boundary up to rounding: it is returned as 0, so that
+     * what this accepts every other function accepts too. */
+    return (pgloss_status)pgloss__rgb_from_lab_k(lab[0], lab[1], lab[2],
+                                                 pgloss__from_xyz_matrix(space), &rgb[0],
+                                                 &rgb[1], &rgb[2]);
 }
 
 pgloss_status pgloss_rgb_from_lab(const double lab[3], double rgb[3])
@@ -123,7 +99,8 @@ pgloss_status pgloss_lab_from_rgb_ex(const double rgb[3], pgloss_color_space spa
         return PGLOSS_ERR_NEGATIVE;
     double xyz[3];
     mul3(SPACES[space].to_xyz, rgb, xyz);
-    const double fx = lab_f(xyz[0] / WHITE_X), fy = lab_f(xyz[1]), fz = lab_f(xyz[2] / WHITE_Z);
+    const double fx = pgloss__lab_f_d(xyz[0] / PGLOSS__WHITE_X), fy = pgloss__lab_f_d(xyz[1]),
+                 fz = pgloss__lab_f_d(xyz[2] / PGLOSS__WHITE_Z);
     const double out[3] = {116.0 * fy - 16.0, 500.0 * (fx - fy), 200.0 * (fy - fz)};
     if (!isfinite(out[0]) || !isfinite(out[1]) || !isfinite(out[2]))
         return PGLOSS_ERR_NONFINITE;

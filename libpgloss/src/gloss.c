@@ -3,6 +3,7 @@
 /* The gloss space of §3.3 and §4: eqs. 3–8, the distance of eq. 5, its envelope (Fig. 10),
  * isogloss contours (Fig. 11) and gloss matching across lightness (Fig. 12). */
 #include "internal.h"
+#include "perceptual_d.h"
 #include "pgloss/perceptual.h"
 
 pgloss_status pgloss_contrast_gloss(double rho_d, double rho_s, double *c)
@@ -14,13 +15,10 @@ pgloss_status pgloss_contrast_gloss(double rho_d, double rho_s, double *c)
         return PGLOSS_ERR_NONFINITE;
     if (rho_d < 0.0 || rho_s < 0.0)
         return PGLOSS_ERR_NEGATIVE;
-    /* Eq. 4: A - B with A³ - B³ = ρs; the difference of cube roots cancels for ρs ≪ ρd,
-     * the quotient form does not. */
-    const double a = cbrt(rho_s + 0.5 * rho_d), b = cbrt(0.5 * rho_d);
-    const double den = a * a + a * b + b * b;
+    const double den = pgloss__contrast_den_d(rho_d, rho_s, pgloss__half_cbrt_d(rho_d)); /* eq. 4 */
     if (!isfinite(den))
         return PGLOSS_ERR_NONFINITE; /* beyond double range: no meaningful c */
-    *c = den > 0.0 ? rho_s / den : 0.0;
+    *c = pgloss__contrast_d(rho_s, den);
     return PGLOSS_OK;
 }
 
@@ -33,18 +31,11 @@ pgloss_status pgloss_specular_from_contrast(double rho_d, double c, double *rho_
         return PGLOSS_ERR_NONFINITE;
     if (rho_d < 0.0 || c < 0.0)
         return PGLOSS_ERR_NEGATIVE;
-    /* Eq. 7 expanded: (c + B)³ - B³ = c (c² + 3cB + 3B²), free of cancellation. */
-    const double b = cbrt(0.5 * rho_d);
-    const double v = c * (c * c + 3.0 * c * b + 3.0 * b * b);
+    const double v = pgloss__specular_d(rho_d, c); /* eq. 7 */
     if (!isfinite(v))
         return PGLOSS_ERR_NONFINITE;
     *rho_s = v;
     return PGLOSS_OK;
-}
-
-static pgloss_status alpha_status(double alpha)
-{
-    return alpha > PGLOSS_ALPHA_TRUSTED_MAX ? PGLOSS_WARN_ALPHA_UNTRUSTED : PGLOSS_OK;
 }
 
 pgloss_status pgloss_gloss_from_physical(double rho_d, double rho_s, double alpha,
@@ -56,23 +47,8 @@ pgloss_status pgloss_gloss_from_physical(double rho_d, double rho_s, double alph
         if (d) *d = 0.0;
         return PGLOSS_ERR_NULL;
     }
-    *L = *c = *d = 0.0;
-    if (!isfinite(rho_d) || !isfinite(rho_s) || !isfinite(alpha))
-        return PGLOSS_ERR_NONFINITE;
-    if (rho_d < 0.0 || rho_s < 0.0)
-        return PGLOSS_ERR_NEGATIVE;
-    if (!(alpha > 0.0))
-        return PGLOSS_ERR_ALPHA;
-    double l, cc;
-    pgloss_lightness_from_luminance(rho_d, &l);
-    /* ρs + ρd/2 beyond DBL_MAX: NONFINITE (not a silent c = 0). */
-    const pgloss_status cs = pgloss_contrast_gloss(rho_d, rho_s, &cc);
-    if (cs != PGLOSS_OK)
-        return cs;
-    *L = l;
-    *c = cc;
-    *d = pgloss__doi_from_alpha(alpha); /* eq. 3 */
-    return alpha_status(alpha);
+    /* The batch's per-element code (perceptual_d.h): the same bits. */
+    return (pgloss_status)pgloss__gloss_from_physical_k(rho_d, rho_s, alpha, L, c, d);
 }
 
 pgloss_status pgloss_physical_from_gloss(double L, double c, double d,
@@ -93,8 +69,8 @@ pgloss_status pgloss_physical_from_gloss(double L, double c, double d,
         return PGLOSS_ERR_NEGATIVE;
     if (!(d < 1.0))
         return PGLOSS_ERR_ALPHA;
-    double y, s;
-    pgloss_luminance_from_lightness(L, &y);          /* eq. 6 */
+    double s;
+    const double y = pgloss__luminance_d(L);         /* eq. 6 */
     /* eq. 7; c ≳ 5e102 overflows ρs: NONFINITE, not a silent ρs = 0. */
     const pgloss_status ss = pgloss_specular_from_contrast(y, c, &s);
     if (ss != PGLOSS_OK)
@@ -102,7 +78,7 @@ pgloss_status pgloss_physical_from_gloss(double L, double c, double d,
     *rho_d = y;
     *rho_s = s;
     *alpha = 1.0 - d;                                /* eq. 8 */
-    return alpha_status(*alpha);
+    return (pgloss_status)pgloss__alpha_status_d(*alpha);
 }
 
 pgloss_status pgloss_gloss_distance(double c1, double d1, double c2, double d2, double *D)

@@ -36,14 +36,6 @@ static inline float pgloss__to_float(double v)
     return v < (double)FLT_MAX ? (float)v : FLT_MAX;
 }
 
-/* Eq. 3, d = 1 − α, rounded down where it would round to 1 (α ≤ 2^-54): d < 1 then holds for
- * every α > 0, the domain of eq. 8, and the result is still within an ulp of 1 − α. */
-static inline double pgloss__doi_from_alpha(double alpha)
-{
-    const double d = 1.0 - alpha;
-    return d < 1.0 ? d : 1.0 - 0x1p-53;
-}
-
 /* A known pgloss_color_space (an int from another language may hold anything). */
 static inline int pgloss__valid_color_space(pgloss_color_space space)
 {

@@ -4,6 +4,7 @@
  * scaled to CIELAB's [0, 100]. The exact rational constants make the two branches meet
  * continuously at Y = ε, L = κε = 8. */
 #include "internal.h"
+#include "perceptual_d.h"
 #include "pgloss/perceptual.h"
 
 pgloss_status pgloss_lightness_from_luminance(double Y, double *L)
@@ -15,7 +16,7 @@ pgloss_status pgloss_lightness_from_luminance(double Y, double *L)
         return PGLOSS_ERR_NONFINITE;
     if (Y < 0.0)
         return PGLOSS_ERR_NEGATIVE;
-    *L = (Y <= PGLOSS_CIE_EPSILON) ? PGLOSS_CIE_KAPPA * Y : 116.0 * cbrt(Y) - 16.0;
+    *L = pgloss__lightness_d(Y);
     return PGLOSS_OK;
 }
 
@@ -28,15 +29,10 @@ pgloss_status pgloss_luminance_from_lightness(double L, double *Y)
         return PGLOSS_ERR_NONFINITE;
     if (L < 0.0)
         return PGLOSS_ERR_LIGHTNESS;
-    if (L <= PGLOSS_CIE_KAPPA * PGLOSS_CIE_EPSILON) {
-        *Y = L / PGLOSS_CIE_KAPPA;
-    } else {
-        const double t = (L + 16.0) / 116.0;
-        const double y = t * t * t;
-        /* Finite L* above ~6.6e104 would give Y = +Inf: no finite input may produce Inf. */
-        if (!isfinite(y))
-            return PGLOSS_ERR_NONFINITE;
-        *Y = y;
-    }
+    const double y = pgloss__luminance_d(L);
+    /* Finite L* above ~6.6e104 would give Y = +Inf: no finite input may produce Inf. */
+    if (!isfinite(y))
+        return PGLOSS_ERR_NONFINITE;
+    *Y = y;
     return PGLOSS_OK;
 }

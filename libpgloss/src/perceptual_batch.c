@@ -1,8 +1,15 @@
 // SPDX-FileCopyrightText: 2026 The pgloss authors
 // SPDX-License-Identifier: Apache-2.0
 /* The batched perceptual and colour functions (pgloss/perceptual_batch.h): argument checks,
- * then one loop per function over the per-element code that the scalar functions run. */
+ * then one driver (run) over chunks of elements, each function giving the code of a chunk.
+ * gloss_from_physical and physical_from_perceptual run the vectorised loops of
+ * perceptual_batch_isa.c, on the best ISA of the running CPU (pgloss_isa_best); the others
+ * call the scalar function per element. Either way element j gets the scalar function's
+ * status and outputs, bit for bit (perceptual_d.h). */
 #include "internal.h"
+#include "perceptual_batch_isa.h"
+#include "perceptual_d.h"
+#include "pgloss/batch.h"
 #include "pgloss/perceptual_batch.h"
 
 /* The returned status: first error, else first warning, else OK (perceptual_batch.h). */
@@ -10,50 +17,86 @@ typedef struct summary {
     pgloss_status error, warning;
 } summary;
 
-static void note(summary *s, pgloss_status st)
+/* Folds a chunk's statuses into s. The common case (no error) is a min/max pass that
+ * vectorises; the first error or warning is searched for only when there is one. */
+static void note_chunk(summary *s, size_t m, const signed char *st)
 {
-    if (st < 0 && s->error == PGLOSS_OK)
-        s->error = st;
-    else if (st > 0 && s->warning == PGLOSS_OK)
-        s->warning = st;
+    int lo = 0, hi = 0;
+    for (size_t j = 0; j < m; ++j) {
+        lo = st[j] < lo ? st[j] : lo;
+        hi = st[j] > hi ? st[j] : hi;
+    }
+    if (lo < 0) {
+        for (size_t j = 0; j < m; ++j)
+            if (st[j] < 0) {
+                s->error = (pgloss_status)st[j];
+                break;
+            }
+    } else if (hi > 0 && s->warning == PGLOSS_OK) {
+        for (size_t j = 0; j < m; ++j)
+            if (st[j] > 0) {
+                s->warning = (pgloss_status)st[j];
+                break;
+            }
+    }
 }
 
-static pgloss_status result(const summary *s)
-{
-    return s->error != PGLOSS_OK ? s->error : s->warning;
-}
+#define CHUNK 4096
 
-static pgloss_status summarize(size_t n, const signed char *st)
+/* Writes the statuses of elements [base, base + m) to st (and the outputs). */
+typedef void (*chunk_fn)(const void *ctx, size_t base, size_t m, signed char *st);
+
+/* Runs f over [0, n) chunk by chunk, the statuses into status or, if NULL, a chunk buffer;
+ * returns the summary. Stops summarising, not computing, at the first error. */
+static pgloss_status run(size_t n, signed char *status, chunk_fn f, const void *ctx)
 {
     summary s = {PGLOSS_OK, PGLOSS_OK};
-    for (size_t j = 0; j < n && s.error == PGLOSS_OK; ++j)
-        note(&s, (pgloss_status)st[j]);
-    return result(&s);
+    signed char buf[CHUNK];
+    for (size_t base = 0; base < n; base += CHUNK) {
+        const size_t m = n - base < CHUNK ? n - base : CHUNK;
+        signed char *st = status ? status + base : buf;
+        f(ctx, base, m, st);
+        if (s.error == PGLOSS_OK)
+            note_chunk(&s, m, st);
+    }
+    return s.error != PGLOSS_OK ? s.error : s.warning;
 }
 
-#define CHUNK 512
+/* The ISA of the vectorised loops: the best the CPU runs among those built. */
+#define PICK_LOOP(name)                                                                            \
+    pick_isa() == PGLOSS_ISA_AVX512 ? PICK_AVX512(name)                                            \
+    : pick_isa() == PGLOSS_ISA_AVX2 ? PICK_AVX2(name) : name##_baseline
+#if defined(PGLOSS_HAVE_AVX512)
+#define PICK_AVX512(name) name##_avx512
+#else
+#define PICK_AVX512(name) name##_baseline
+#endif
+#if defined(PGLOSS_HAVE_AVX2)
+#define PICK_AVX2(name) name##_avx2
+#else
+#define PICK_AVX2(name) name##_baseline
+#endif
 
-/* Runs BODY(j, st) for j in [0, n) chunk by chunk, with statuses in a chunk buffer unless
- * the caller gave an array; then summarises. */
-#define RUN_BATCH(n, status, ...)                                                                 \
-    {                                                                                              \
-        summary s_ = {PGLOSS_OK, PGLOSS_OK};                                                       \
-        signed char buf_[CHUNK];                                                                   \
-        for (size_t base_ = 0; base_ < (n); base_ += CHUNK) {                                      \
-            const size_t m_ = (n) - base_ < CHUNK ? (n) - base_ : CHUNK;                           \
-            signed char *st = (status) ? (status) + base_ : buf_;                                  \
-            for (size_t i_ = 0; i_ < m_; ++i_) {                                                   \
-                const size_t j = base_ + i_;                                                       \
-                signed char *const stj = &st[i_];                                                  \
-                __VA_ARGS__                                                                        \
-            }                                                                                      \
-            if (s_.error == PGLOSS_OK) {                                                           \
-                const pgloss_status r_ = summarize(m_, st);                                        \
-                note(&s_, r_);                                                                     \
-            }                                                                                      \
-        }                                                                                          \
-        return result(&s_);                                                                        \
-    }
+static pgloss_isa pick_isa(void)
+{
+    return pgloss_isa_best();
+}
+
+/* ---- gloss space (eqs. 3–8) ------------------------------------------------------------- */
+
+/* Up to three inputs and three outputs of one element-wise function. */
+typedef struct cols {
+    const double *x0, *x1, *x2;
+    double *y0, *y1, *y2;
+    void (*gloss_loop)(size_t, const double *, const double *, const double *, double *,
+                       double *, double *, signed char *);
+} cols;
+
+static void gloss_from_physical_chunk(const void *ctx, size_t b, size_t m, signed char *st)
+{
+    const cols *k = ctx;
+    k->gloss_loop(m, k->x0 + b, k->x1 + b, k->x2 + b, k->y0 + b, k->y1 + b, k->y2 + b, st);
+}
 
 pgloss_status pgloss_gloss_from_physical_batch(size_t n, const double *rho_d, const double *rho_s,
                                                const double *alpha, double *L, double *c,
@@ -63,9 +106,16 @@ pgloss_status pgloss_gloss_from_physical_batch(size_t n, const double *rho_d, co
         return PGLOSS_OK;
     if (!rho_d || !rho_s || !alpha || !L || !c || !d)
         return PGLOSS_ERR_NULL;
-    RUN_BATCH(n, status, {
-        *stj = (signed char)pgloss_gloss_from_physical(rho_d[j], rho_s[j], alpha[j], &L[j], &c[j], &d[j]);
-    })
+    const cols k = {rho_d, rho_s, alpha, L, c, d, PICK_LOOP(pgloss__gloss_from_physical_loop)};
+    return run(n, status, gloss_from_physical_chunk, &k);
+}
+
+static void physical_from_gloss_chunk(const void *ctx, size_t b, size_t m, signed char *st)
+{
+    const cols *k = ctx;
+    for (size_t j = b; j < b + m; ++j)
+        st[j - b] = (signed char)pgloss_physical_from_gloss(k->x0[j], k->x1[j], k->x2[j],
+                                                            &k->y0[j], &k->y1[j], &k->y2[j]);
 }
 
 pgloss_status pgloss_physical_from_gloss_batch(size_t n, const double *L, const double *c,
@@ -76,10 +126,15 @@ pgloss_status pgloss_physical_from_gloss_batch(size_t n, const double *L, const 
         return PGLOSS_OK;
     if (!L || !c || !d || !rho_d || !rho_s || !alpha)
         return PGLOSS_ERR_NULL;
-    RUN_BATCH(n, status, {
-        const double l = L[j], cc = c[j], dd = d[j];
-        *stj = (signed char)pgloss_physical_from_gloss(l, cc, dd, &rho_d[j], &rho_s[j], &alpha[j]);
-    })
+    const cols k = {L, c, d, rho_d, rho_s, alpha, NULL};
+    return run(n, status, physical_from_gloss_chunk, &k);
+}
+
+static void envelope_chunk(const void *ctx, size_t b, size_t m, signed char *st)
+{
+    const cols *k = ctx;
+    for (size_t j = b; j < b + m; ++j)
+        st[j - b] = (signed char)pgloss_envelope_contrast(k->x0[j], &k->y0[j]);
 }
 
 pgloss_status pgloss_envelope_contrast_batch(size_t n, const double *L, double *c_max,
@@ -89,10 +144,16 @@ pgloss_status pgloss_envelope_contrast_batch(size_t n, const double *L, double *
         return PGLOSS_OK;
     if (!L || !c_max)
         return PGLOSS_ERR_NULL;
-    RUN_BATCH(n, status, {
-        const double l = L[j];
-        *stj = (signed char)pgloss_envelope_contrast(l, &c_max[j]);
-    })
+    const cols k = {L, NULL, NULL, c_max, NULL, NULL, NULL};
+    return run(n, status, envelope_chunk, &k);
+}
+
+static void match_chunk(const void *ctx, size_t b, size_t m, signed char *st)
+{
+    const cols *k = ctx;
+    for (size_t j = b; j < b + m; ++j)
+        st[j - b] = (signed char)pgloss_match_gloss(k->x0[j], k->x1[j], k->x2[j], &k->y0[j],
+                                                    &k->y1[j]);
 }
 
 pgloss_status pgloss_match_gloss_batch(size_t n, const double *rho_d, const double *rho_s,
@@ -103,11 +164,11 @@ pgloss_status pgloss_match_gloss_batch(size_t n, const double *rho_d, const doub
         return PGLOSS_OK;
     if (!rho_d || !rho_s || !L_target || !rho_d_out || !rho_s_out)
         return PGLOSS_ERR_NULL;
-    RUN_BATCH(n, status, {
-        const double a = rho_d[j], b = rho_s[j], l = L_target[j];
-        *stj = (signed char)pgloss_match_gloss(a, b, l, &rho_d_out[j], &rho_s_out[j]);
-    })
+    const cols k = {rho_d, rho_s, L_target, rho_d_out, rho_s_out, NULL, NULL};
+    return run(n, status, match_chunk, &k);
 }
+
+/* ---- parameter sets (Fig. 13) ------------------------------------------------------------ */
 
 static int physical_array_ok(const pgloss_physical_array *p)
 {
@@ -127,19 +188,6 @@ static pgloss_physical physical_at(const pgloss_physical_array *p, size_t j)
     return q;
 }
 
-pgloss_status pgloss_check_physical_batch(size_t n, const pgloss_physical_array *p,
-                                          signed char *status)
-{
-    if (n == 0)
-        return PGLOSS_OK;
-    if (!physical_array_ok(p))
-        return PGLOSS_ERR_NULL;
-    RUN_BATCH(n, status, {
-        const pgloss_physical q = physical_at(p, j);
-        *stj = (signed char)pgloss_check_physical(&q);
-    })
-}
-
 static int perceptual_array_ok(pgloss_perceptual_array q)
 {
     return q.L && q.a && q.b && q.c && q.d;
@@ -151,6 +199,48 @@ static pgloss_perceptual perceptual_at(pgloss_perceptual_array q, size_t j)
     return v;
 }
 
+/* The arrays and options of one call over parameter sets or colours. */
+typedef struct sets {
+    const pgloss_physical_array *p;
+    pgloss_perceptual_array q;
+    pgloss_color_space space;
+    pgloss_physical_out p_out;
+    pgloss_perceptual_out q_out;
+    const double *in[3]; /* colour: L*, a*, b* or r, g, b */
+    double *out[3];
+    void (*physical_loop)(size_t, pgloss_perceptual_array, const double *, pgloss_physical_out,
+                          signed char *);
+} sets;
+
+static void check_physical_chunk(const void *ctx, size_t b, size_t m, signed char *st)
+{
+    const sets *k = ctx;
+    for (size_t j = b; j < b + m; ++j) {
+        const pgloss_physical v = physical_at(k->p, j);
+        st[j - b] = (signed char)pgloss_check_physical(&v);
+    }
+}
+
+pgloss_status pgloss_check_physical_batch(size_t n, const pgloss_physical_array *p,
+                                          signed char *status)
+{
+    if (n == 0)
+        return PGLOSS_OK;
+    if (!physical_array_ok(p))
+        return PGLOSS_ERR_NULL;
+    const sets k = {.p = p};
+    return run(n, status, check_physical_chunk, &k);
+}
+
+static void check_perceptual_chunk(const void *ctx, size_t b, size_t m, signed char *st)
+{
+    const sets *k = ctx;
+    for (size_t j = b; j < b + m; ++j) {
+        const pgloss_perceptual v = perceptual_at(k->q, j);
+        st[j - b] = (signed char)pgloss_check_perceptual_ex(&v, k->space);
+    }
+}
+
 pgloss_status pgloss_check_perceptual_batch_ex(size_t n, pgloss_perceptual_array q,
                                                pgloss_color_space space, signed char *status)
 {
@@ -160,16 +250,29 @@ pgloss_status pgloss_check_perceptual_batch_ex(size_t n, pgloss_perceptual_array
         return PGLOSS_ERR_NULL;
     if (!pgloss__valid_color_space(space))
         return PGLOSS_ERR_ARGUMENT;
-    RUN_BATCH(n, status, {
-        const pgloss_perceptual v = perceptual_at(q, j);
-        *stj = (signed char)pgloss_check_perceptual_ex(&v, space);
-    })
+    const sets k = {.q = q, .space = space};
+    return run(n, status, check_perceptual_chunk, &k);
 }
 
 pgloss_status pgloss_check_perceptual_batch(size_t n, pgloss_perceptual_array q,
                                             signed char *status)
 {
     return pgloss_check_perceptual_batch_ex(n, q, PGLOSS_COLOR_SPACE_LINEAR_REC709, status);
+}
+
+static pgloss_perceptual_array perceptual_from(pgloss_perceptual_array q, size_t b)
+{
+    const pgloss_perceptual_array r = {q.L + b, q.a + b, q.b + b, q.c + b, q.d + b};
+    return r;
+}
+
+static void physical_from_perceptual_chunk(const void *ctx, size_t b, size_t m, signed char *st)
+{
+    const sets *k = ctx;
+    const pgloss_physical_out o = k->p_out;
+    const pgloss_physical_out ob = {o.rho_d_r + b, o.rho_d_g + b, o.rho_d_b + b, o.rho_s + b,
+                                    o.alpha_x + b, o.alpha_y ? o.alpha_y + b : NULL};
+    k->physical_loop(m, perceptual_from(k->q, b), pgloss__from_xyz_matrix(k->space), ob, st);
 }
 
 pgloss_status pgloss_physical_from_perceptual_batch_ex(size_t n, pgloss_perceptual_array q,
@@ -187,18 +290,9 @@ pgloss_status pgloss_physical_from_perceptual_batch_ex(size_t n, pgloss_perceptu
     if (normalization != PGLOSS_NORM_WARD && normalization != PGLOSS_NORM_WARD_DUR &&
         normalization != PGLOSS_NORM_BOUNDED)
         return PGLOSS_ERR_NORMALIZATION;
-    RUN_BATCH(n, status, {
-        const pgloss_perceptual v = perceptual_at(q, j);
-        pgloss_physical o;
-        *stj = (signed char)pgloss_physical_from_perceptual_ex(&v, normalization, space, &o);
-        p.rho_d_r[j] = o.rho_d[0];
-        p.rho_d_g[j] = o.rho_d[1];
-        p.rho_d_b[j] = o.rho_d[2];
-        p.rho_s[j] = o.rho_s;
-        p.alpha_x[j] = o.alpha_x;
-        if (p.alpha_y)
-            p.alpha_y[j] = o.alpha_y;
-    })
+    const sets k = {.q = q, .space = space, .p_out = p,
+                    .physical_loop = PICK_LOOP(pgloss__physical_from_perceptual_loop)};
+    return run(n, status, physical_from_perceptual_chunk, &k);
 }
 
 pgloss_status pgloss_physical_from_perceptual_batch(size_t n, pgloss_perceptual_array q,
@@ -207,6 +301,22 @@ pgloss_status pgloss_physical_from_perceptual_batch(size_t n, pgloss_perceptual_
 {
     return pgloss_physical_from_perceptual_batch_ex(n, q, normalization,
                                                     PGLOSS_COLOR_SPACE_LINEAR_REC709, p, status);
+}
+
+static void perceptual_from_physical_chunk(const void *ctx, size_t b, size_t m, signed char *st)
+{
+    const sets *k = ctx;
+    const pgloss_perceptual_out q = k->q_out;
+    for (size_t j = b; j < b + m; ++j) {
+        const pgloss_physical v = physical_at(k->p, j);
+        pgloss_perceptual o;
+        st[j - b] = (signed char)pgloss_perceptual_from_physical_ex(&v, k->space, &o);
+        q.L[j] = o.L;
+        q.a[j] = o.a;
+        q.b[j] = o.b;
+        q.c[j] = o.c;
+        q.d[j] = o.d;
+    }
 }
 
 pgloss_status pgloss_perceptual_from_physical_batch_ex(size_t n, const pgloss_physical_array *p,
@@ -220,16 +330,8 @@ pgloss_status pgloss_perceptual_from_physical_batch_ex(size_t n, const pgloss_ph
         return PGLOSS_ERR_NULL;
     if (!pgloss__valid_color_space(space))
         return PGLOSS_ERR_ARGUMENT;
-    RUN_BATCH(n, status, {
-        const pgloss_physical v = physical_at(p, j);
-        pgloss_perceptual o;
-        *stj = (signed char)pgloss_perceptual_from_physical_ex(&v, space, &o);
-        q.L[j] = o.L;
-        q.a[j] = o.a;
-        q.b[j] = o.b;
-        q.c[j] = o.c;
-        q.d[j] = o.d;
-    })
+    const sets k = {.p = p, .space = space, .q_out = q};
+    return run(n, status, perceptual_from_physical_chunk, &k);
 }
 
 pgloss_status pgloss_perceptual_from_physical_batch(size_t n, const pgloss_physical_array *p,
@@ -239,24 +341,56 @@ pgloss_status pgloss_perceptual_from_physical_batch(size_t n, const pgloss_physi
                                                     status);
 }
 
+/* ---- colour ------------------------------------------------------------------------------- */
+
+/* The two colour conversions: three arrays in, three out, a working space. */
+static pgloss_status colour_batch(size_t n, const double *in0, const double *in1,
+                                  const double *in2, double *out0, double *out1, double *out2,
+                                  pgloss_color_space space, signed char *status, chunk_fn f)
+{
+    if (n == 0)
+        return PGLOSS_OK;
+    if (!in0 || !in1 || !in2 || !out0 || !out1 || !out2)
+        return PGLOSS_ERR_NULL;
+    if (!pgloss__valid_color_space(space))
+        return PGLOSS_ERR_ARGUMENT;
+    const sets k = {.space = space, .in = {in0, in1, in2}, .out = {out0, out1, out2}};
+    return run(n, status, f, &k);
+}
+
+static void rgb_from_lab_chunk(const void *ctx, size_t b, size_t m, signed char *st)
+{
+    const sets *k = ctx;
+    const double *M = pgloss__from_xyz_matrix(k->space);
+    for (size_t j = b; j < b + m; ++j) {
+        double o[3];
+        st[j - b] = (signed char)pgloss__rgb_from_lab_k(k->in[0][j], k->in[1][j], k->in[2][j], M,
+                                                        &o[0], &o[1], &o[2]);
+        k->out[0][j] = o[0];
+        k->out[1][j] = o[1];
+        k->out[2][j] = o[2];
+    }
+}
+
+static void lab_from_rgb_chunk(const void *ctx, size_t b, size_t m, signed char *st)
+{
+    const sets *k = ctx;
+    for (size_t j = b; j < b + m; ++j) {
+        const double in[3] = {k->in[0][j], k->in[1][j], k->in[2][j]};
+        double o[3];
+        st[j - b] = (signed char)pgloss_lab_from_rgb_ex(in, k->space, o);
+        k->out[0][j] = o[0];
+        k->out[1][j] = o[1];
+        k->out[2][j] = o[2];
+    }
+}
+
 pgloss_status pgloss_rgb_from_lab_batch_ex(size_t n, pgloss_lab_array lab,
                                            pgloss_color_space space, pgloss_rgb_out_d rgb,
                                            signed char *status)
 {
-    if (n == 0)
-        return PGLOSS_OK;
-    if (!lab.L || !lab.a || !lab.b || !rgb.r || !rgb.g || !rgb.b)
-        return PGLOSS_ERR_NULL;
-    if (!pgloss__valid_color_space(space))
-        return PGLOSS_ERR_ARGUMENT;
-    RUN_BATCH(n, status, {
-        const double in[3] = {lab.L[j], lab.a[j], lab.b[j]};
-        double out[3];
-        *stj = (signed char)pgloss_rgb_from_lab_ex(in, space, out);
-        rgb.r[j] = out[0];
-        rgb.g[j] = out[1];
-        rgb.b[j] = out[2];
-    })
+    return colour_batch(n, lab.L, lab.a, lab.b, rgb.r, rgb.g, rgb.b, space, status,
+                        rgb_from_lab_chunk);
 }
 
 pgloss_status pgloss_rgb_from_lab_batch(size_t n, pgloss_lab_array lab, pgloss_rgb_out_d rgb,
@@ -269,20 +403,8 @@ pgloss_status pgloss_lab_from_rgb_batch_ex(size_t n, pgloss_rgb_array_d rgb,
                                            pgloss_color_space space, pgloss_lab_out lab,
                                            signed char *status)
 {
-    if (n == 0)
-        return PGLOSS_OK;
-    if (!lab.L || !lab.a || !lab.b || !rgb.r || !rgb.g || !rgb.b)
-        return PGLOSS_ERR_NULL;
-    if (!pgloss__valid_color_space(space))
-        return PGLOSS_ERR_ARGUMENT;
-    RUN_BATCH(n, status, {
-        const double in[3] = {rgb.r[j], rgb.g[j], rgb.b[j]};
-        double out[3];
-        *stj = (signed char)pgloss_lab_from_rgb_ex(in, space, out);
-        lab.L[j] = out[0];
-        lab.a[j] = out[1];
-        lab.b[j] = out[2];
-    })
+    return colour_batch(n, rgb.r, rgb.g, rgb.b, lab.L, lab.a, lab.b, space, status,
+                        lab_from_rgb_chunk);
 }
 
 pgloss_status pgloss_lab_from_rgb_batch(size_t n, pgloss_rgb_array_d rgb, pgloss_lab_out lab,

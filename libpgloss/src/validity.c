@@ -3,6 +3,7 @@
 /* Is a parameter set inside the paper's model, and if not, why? Plus the five-parameter
  * colour/gloss description of Fig. 13 in both directions. */
 #include "internal.h"
+#include "perceptual_d.h"
 #include "pgloss/perceptual.h"
 
 static int valid_normalization(pgloss_normalization n)
@@ -104,23 +105,20 @@ pgloss_status pgloss_physical_from_perceptual_ex(const pgloss_perceptual *q,
         return PGLOSS_ERR_NULL;
     if (!pgloss__valid_color_space(space))
         return PGLOSS_ERR_ARGUMENT;
-    if (!isfinite(q->a) || !isfinite(q->b))
-        return PGLOSS_ERR_NONFINITE;
-    double y, rho_s, alpha;
-    const pgloss_status st = pgloss_physical_from_gloss(q->L, q->c, q->d, &y, &rho_s, &alpha);
-    if (st < 0)
-        return st;
+    /* The batch's per-element code (perceptual_d.h): the same bits. Its status assumes a
+     * valid normalisation, which is checked after physical_from_gloss's checks (pre). */
+    double pre, rgb[3], rho_s, alpha;
+    const pgloss_status st = (pgloss_status)pgloss__physical_from_perceptual_k(
+        q->L, q->a, q->b, q->c, q->d, pgloss__from_xyz_matrix(space), &rgb[0], &rgb[1], &rgb[2],
+        &rho_s, &alpha, &pre);
+    if (pre < 0.0)
+        return (pgloss_status)pre;
     if (!valid_normalization(normalization))
         return PGLOSS_ERR_NORMALIZATION;
-    const double lab[3] = {q->L, q->a, q->b};
-    double rgb[3];
-    const pgloss_status cs = pgloss_rgb_from_lab_ex(lab, space, rgb);
-    if (cs != PGLOSS_OK && cs != PGLOSS_ERR_GAMUT)
-        return cs;
     p->rho_d[0] = rgb[0]; p->rho_d[1] = rgb[1]; p->rho_d[2] = rgb[2];
     p->rho_s = rho_s;           /* eq. 7 with the luminance of ρd (= Y of L*) */
     p->alpha_x = p->alpha_y = alpha;
-    return cs != PGLOSS_OK ? cs : st;
+    return st;
 }
 
 pgloss_status pgloss_physical_from_perceptual(const pgloss_perceptual *q,
@@ -158,7 +156,7 @@ pgloss_status pgloss_perceptual_from_physical_ex(const pgloss_physical *p, pglos
     const double alpha = sqrt(p->alpha_x) * sqrt(p->alpha_y);
     q->L = lab[0]; q->a = lab[1]; q->b = lab[2];
     q->c = c;
-    q->d = pgloss__doi_from_alpha(alpha); /* eq. 3 */
+    q->d = pgloss__doi_d(alpha); /* eq. 3 */
     /* The warning asks the same question as pgloss_check_physical: is the wider of the two
      * spreads beyond the trusted range? (Not the geometric mean used for d.) */
     return fmax(p->alpha_x, p->alpha_y) > PGLOSS_ALPHA_TRUSTED_MAX ? PGLOSS_WARN_ALPHA_UNTRUSTED

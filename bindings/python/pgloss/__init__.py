@@ -280,6 +280,16 @@ def _check(function: str, st: np.ndarray, shape: Tuple[int, ...], result: Any = 
             f"pgloss.{function}: {Status.WARN_ALPHA_UNTRUSTED.reason} ({what})"), stacklevel=stacklevel)
 
 
+def _finish(function: str, want_status: bool, result: Any, st: np.ndarray, shape: Tuple[int, ...],
+            stacklevel: int = 4) -> Any:
+    """The end of every call with ``errors=``: ``(result, statuses)`` for errors="status",
+    else ``result`` after raising the first error or warning about the warnings."""
+    if want_status:
+        return result, _status_out(st, shape)
+    _check(function, st.reshape(shape), shape, result, scalar=shape == (), stacklevel=stacklevel)
+    return result
+
+
 # ---------------------------------------------------------------------------------------------
 # Input preparation.
 
@@ -344,11 +354,7 @@ def _vectorised(function: str, names: Sequence[str], values: Sequence[Any], n_ou
     flat, shape, dtype = _broadcast(function, names, values)
     res = getattr(_core, function)(*flat)
     outs = tuple(_shape_out(function, r, shape, dtype) for r in res[:n_out])
-    result = outs[0] if n_out == 1 else outs
-    if want_status:
-        return result, _status_out(res[n_out], shape)
-    _check(function, res[n_out].reshape(shape), shape, result, scalar=shape == (), stacklevel=4)
-    return result
+    return _finish(function, want_status, outs[0] if n_out == 1 else outs, res[n_out], shape, stacklevel=5)
 
 
 def _lobes(function: str, lobes: Any) -> int:
@@ -1404,10 +1410,7 @@ def _triple(function: str, name: str, value: Any, n_out: int, space: Any, errors
         out = _shape_out(function, np.stack(res[:3], axis=-1), shape + (3,), dtype)
     else:
         out = _shape_out(function, res[0], shape, dtype)
-    if want_status:
-        return out, _status_out(res[n_out], shape)
-    _check(function, res[n_out].reshape(shape), shape, out, scalar=shape == (), stacklevel=4)
-    return out
+    return _finish(function, want_status, out, res[n_out], shape, stacklevel=5)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -1477,16 +1480,14 @@ def physical_from_perceptual(perceptual: Perceptual,
     res = _core.physical_from_perceptual(*perceptual._columns(), int(norm), sp)
     shape = perceptual.shape
     if shape == ():
-        v = [float(r[0]) for r in res[:6]]
-        out = Physical(v[0:3], v[3], alpha_x=v[4], alpha_y=v[5], normalization=norm)
+        v = [float(r[0]) for r in res[:5]]
+        out = Physical(v[0:3], v[3], alpha_x=v[4], alpha_y=v[4], normalization=norm)
     else:
-        block = res[7]  # the outputs' (6, n) block: rho_d r, g, b rows are channel-first already
-        out = Physical._adopt(block[0:3].reshape((3,) + shape), *(block[k].reshape(shape) for k in (3, 4, 5)),
+        block = res[6]  # the outputs' (5, n) block: rho_d r, g, b rows are channel-first already
+        alpha = block[4].reshape(shape)  # αx = αy (eq. 8): one array for both
+        out = Physical._adopt(block[0:3].reshape((3,) + shape), block[3].reshape(shape), alpha, alpha,
                               normalization=norm)
-    if want_status:
-        return out, _status_out(res[6], shape)
-    _check(fn, res[6], shape, out, scalar=shape == ())
-    return out
+    return _finish(fn, want_status, out, res[5], shape)
 
 
 def perceptual_from_physical(physical: Physical,
@@ -1513,7 +1514,4 @@ def perceptual_from_physical(physical: Physical,
         out = Perceptual(*(float(r[0]) for r in res[:5]))
     else:
         out = Perceptual._adopt([r.reshape(shape) for r in res[:5]])
-    if want_status:
-        return out, _status_out(res[5], shape)
-    _check(fn, res[5], shape, out, scalar=shape == ())
-    return out
+    return _finish(fn, want_status, out, res[5], shape)

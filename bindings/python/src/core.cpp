@@ -857,15 +857,22 @@ PYBIND11_MODULE(_core, mod) {
             },
             [space](const double *x, double *) { return pgloss_py_check_perceptual(x, space); });
     });
+    // Five outputs: rho_d r, g, b, rho_s and alpha (= alpha_x = alpha_y, isotropic: the core
+    // is given no alpha_y array, and Python uses the one for both), one n-double row fewer to
+    // allocate and write.
     mod.def("physical_from_perceptual", [](darr L, darr a, darr b, darr c, darr d, int norm, int space) {
-        return bmap<5, 6>(
+        return bmap<5, 5>(
             {L, a, b, c, d},
             [norm, space](size_t m, const double *const *x, double *const *y, signed char *st) {
-                return pgloss_py_physical_from_perceptual_batch(m, x, norm, space, y, st);
+                double *const out[6] = {y[0], y[1], y[2], y[3], y[4], nullptr};
+                return pgloss_py_physical_from_perceptual_batch(m, x, norm, space, out, st);
             },
             [norm, space](const double *x, double *y) {
                 int n = 0;
-                return pgloss_py_physical_from_perceptual(x, norm, space, y, &n);
+                double out[6];
+                const int s = pgloss_py_physical_from_perceptual(x, norm, space, out, &n);
+                std::copy(out, out + 5, y);
+                return s;
             });
     });
     mod.def("perceptual_from_physical", [](darr r, darr g, darr b, darr rs, darr ax, darr ay, int norm, int space) {

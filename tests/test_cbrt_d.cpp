@@ -1,0 +1,238 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
+// The inline cube root (libpgloss/src/cbrt_d.h) against long double cbrtl, an independent
+// reference (x87 80-bit: its own error is below 2^-11 of a double ulp); and the vectorised
+// perceptual loops of every ISA (perceptual_batch_isa.c) against the scalar functions, bit for
+// bit, on random and adversarial inputs that reach every status.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include "cbrt_d.h"
+#include "pgloss/batch.h"
+#include "pgloss/perceptual_batch.h"
+#include "pgloss/pgloss.h"
+
+// The per-ISA loops: internal symbols of the static library, weak so that a build without
+// the AVX2/AVX-512 objects (PGLOSS_ISA_DISPATCH=OFF, another architecture) still links.
+extern "C" {
+#define DECLARE_LOOPS(isa)                                                                          \
+    __attribute__((weak)) void pgloss__gloss_from_physical_loop_##isa(                              \
+        size_t, const double *, const double *, const double *, double *, double *, double *,     \
+        signed char *);                                                                             \
+    __attribute__((weak)) void pgloss__physical_from_perceptual_loop_##isa(                         \
+        size_t, pgloss_perceptual_array, const double *, pgloss_physical_out, signed char *);
+DECLARE_LOOPS(baseline)
+DECLARE_LOOPS(avx2)
+DECLARE_LOOPS(avx512)
+const double *pgloss__from_xyz_matrix(pgloss_color_space space);
+}
+
+namespace {
+
+// |got − ref| in ulps of the double nearest ref (subnormal ulps below DBL_MIN).
+double ulp_error(double got, long double ref) {
+    if (ref == 0.0L) return got == 0.0 ? 0.0 : INFINITY;
+    int e = 0;
+    std::frexp(static_cast<double>(ref), &e);
+    long double ulp = std::ldexp(1.0L, e - 53);
+    if (std::fabs(ref) < static_cast<long double>(DBL_MIN)) ulp = std::ldexp(1.0L, -1074);
+    return static_cast<double>(std::fabs(static_cast<long double>(got) - ref) / ulp);
+}
+
+double from_bits(uint64_t u) {
+    double x;
+    std::memcpy(&x, &u, sizeof x);
+    return x;
+}
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// The documented bound (cbrt_d.h): 0.5 ulp plus a few 2^-60 relative, i.e. correctly rounded
+// but for near-halfway cases.
+constexpr double kMaxUlp = 0.5 + 1e-4;
+
+TEST(CbrtD, RandomBitPatterns) {
+    std::mt19937_64 rng(2026);
+    double worst = 0.0, worst_x = 0.0;
+    for (int k = 0; k < 4000000; ++k) {
+        const double x = from_bits(rng());
+        if (!std::isfinite(x)) continue;
+        const double e = ulp_error(pgloss__cbrt_d(x), cbrtl(static_cast<long double>(x)));
+        if (e > worst) worst = e, worst_x = x;
+    }
+    EXPECT_LE(worst, kMaxUlp) << "at x = " << std::hexfloat << worst_x;
+    std::printf("cbrt_d: max error %.9f ulp over random bit patterns\n", worst);
+}
+
+TEST(CbrtD, UnitIntervalAndReflectances) {
+    std::mt19937_64 rng(7);
+    double worst = 0.0;
+    for (int k = 0; k < 4000000; ++k) {
+        const double x = static_cast<double>(rng() >> 11) * 0x1p-53;  // [0, 1): the model's domain
+        worst = std::max(worst, ulp_error(pgloss__cbrt_d(x), cbrtl(static_cast<long double>(x))));
+    }
+    EXPECT_LE(worst, kMaxUlp);
+    std::printf("cbrt_d: max error %.9f ulp on [0, 1)\n", worst);
+}
+
+TEST(CbrtD, SubnormalsZerosAndExtremes) {
+    std::mt19937_64 rng(11);
+    for (int k = 0; k < 200000; ++k) {
+        const double x = from_bits(rng() & 0x800fffffffffffffu);  // subnormals of both signs
+        EXPECT_LE(ulp_error(pgloss__cbrt_d(x), cbrtl(static_cast<long double>(x))), kMaxUlp) << x;
+    }
+    // every binade, both ends, both signs; the scaling thresholds 2^±900
+    for (int e = -1074; e <= 1023; ++e) {
+        for (double m : {1.0, 1.5, 2.0 - 0x1p-52}) {
+            const double x = std::ldexp(m, e);
+            if (!std::isfinite(x) || x == 0.0) continue;
+            for (double s : {x, -x})
+                EXPECT_LE(ulp_error(pgloss__cbrt_d(s), cbrtl(static_cast<long double>(s))), kMaxUlp)
+                    << std::hexfloat << s;
+        }
+    }
+    EXPECT_TRUE(same_bits(pgloss__cbrt_d(0.0), 0.0));
+    EXPECT_TRUE(same_bits(pgloss__cbrt_d(-0.0), -0.0));
+    EXPECT_EQ(pgloss__cbrt_d(INFINITY), INFINITY);
+    EXPECT_EQ(pgloss__cbrt_d(-INFINITY), -INFINITY);
+    EXPECT_TRUE(std::isnan(pgloss__cbrt_d(NAN)));
+    EXPECT_EQ(pgloss__cbrt_d(DBL_MAX), static_cast<double>(cbrtl(static_cast<long double>(DBL_MAX))));
+}
+
+TEST(CbrtD, ExactCubesAreExact) {
+    for (int64_t k = -200000; k <= 200000; ++k) {
+        const double c = static_cast<double>(k);
+        ASSERT_EQ(pgloss__cbrt_d(c * c * c), c) << k;  // k³ < 2^53: exact input
+    }
+    for (int e = -340; e <= 340; ++e) {  // powers of 8 (and 1/8)
+        const double r = std::ldexp(1.0, e);
+        ASSERT_EQ(pgloss__cbrt_d(r * r * r), r) << e;
+    }
+}
+
+// L* = 116 ∛Y − 16 takes ∛Y as 2^(1/3) ∛(Y/2) (perceptual_d.h): its error against long double.
+TEST(CbrtD, LightnessAgainstLongDouble) {
+    std::mt19937_64 rng(5);
+    double worst = 0.0;
+    for (int k = 0; k < 4000000; ++k) {
+        const double Y = static_cast<double>(rng() >> 11) * 0x1p-53;
+        if (Y <= PGLOSS_CIE_EPSILON) continue;
+        double L = 0.0;
+        ASSERT_EQ(pgloss_lightness_from_luminance(Y, &L), PGLOSS_OK);
+        const long double ref = 116.0L * cbrtl(static_cast<long double>(Y)) - 16.0L;
+        worst = std::max(worst, static_cast<double>(std::fabs((static_cast<long double>(L) - ref) / ref)));
+    }
+    EXPECT_LE(worst, 8e-16);  // glibc's cbrt in the same formula: 1.2e-15
+    std::printf("lightness_from_luminance: max relative error %.3e\n", worst);
+}
+
+// ---- the vectorised loops of every ISA against the scalar functions, bit for bit ----------
+
+struct Isa {
+    const char *name;
+    pgloss_isa isa;
+    decltype(&pgloss__gloss_from_physical_loop_baseline) gloss;
+    decltype(&pgloss__physical_from_perceptual_loop_baseline) physical;
+};
+
+std::vector<Isa> isas() {
+    // A call through the public batch links perceptual_batch.c, and with it the loops it
+    // dispatches to (a weak reference alone pulls no member out of a static library).
+    double x = 0.5, L, c, d;
+    signed char st;
+    EXPECT_EQ(pgloss_gloss_from_physical_batch(1, &x, &x, &x, &L, &c, &d, &st), PGLOSS_WARN_ALPHA_UNTRUSTED);
+    return {{"baseline", PGLOSS_ISA_BASELINE, pgloss__gloss_from_physical_loop_baseline,
+             pgloss__physical_from_perceptual_loop_baseline},
+            {"avx2", PGLOSS_ISA_AVX2, pgloss__gloss_from_physical_loop_avx2,
+             pgloss__physical_from_perceptual_loop_avx2},
+            {"avx512", PGLOSS_ISA_AVX512, pgloss__gloss_from_physical_loop_avx512,
+             pgloss__physical_from_perceptual_loop_avx512}};
+}
+
+// Values that reach every check: negatives, zeros, subnormals, NaN, ±Inf, huge, the ε and
+// trusted-α boundaries, out-of-range L*, out-of-gamut a*, b*.
+double pick(std::mt19937_64 &rng, double lo, double hi) {
+    static const double special[] = {0.0, -0.0, 1e-310, -1e-310, NAN, INFINITY, -INFINITY, 1e308,
+                                     -1e308, 216.0 / 24389.0, 8.0, 0.2, 0.8, 1.0, 100.0, -1.0,
+                                     100.0 + 1e-13, 1e200, 5e102, 0.19999999999999998};
+    const uint64_t r = rng();
+    if (r % 16 == 0) return special[(r >> 8) % (sizeof special / sizeof *special)];
+    return lo + (hi - lo) * (static_cast<double>(rng() >> 11) * 0x1p-53);
+}
+
+// Loops run at several lengths and offsets (vector bodies, epilogues, chunk edges).
+constexpr size_t kSizes[] = {1, 3, 7, 17, 255, 256, 257, 1000, 4099};
+
+TEST(PerceptualLoops, GlossFromPhysicalEqualsScalarOnEveryIsa) {
+    std::mt19937_64 rng(18);
+    int tested = 0;
+    for (const Isa &I : isas()) {
+        if (!I.gloss || !pgloss_isa_supported(I.isa)) {
+            std::printf("%s loops NOT tested: %s\n", I.name, I.gloss ? "the CPU lacks it" : "not built");
+            continue;
+        }
+        ++tested;
+        for (size_t n : kSizes) {
+            std::vector<double> rd(n), rs(n), al(n), L(n), c(n), d(n);
+            std::vector<signed char> st(n);
+            for (size_t j = 0; j < n; ++j)
+                rd[j] = pick(rng, 0.0, 1.0), rs[j] = pick(rng, 0.0, 0.2), al[j] = pick(rng, 0.0, 0.3);
+            I.gloss(n, rd.data(), rs.data(), al.data(), L.data(), c.data(), d.data(), st.data());
+            for (size_t j = 0; j < n; ++j) {
+                double l, cc, dd;
+                const pgloss_status want = pgloss_gloss_from_physical(rd[j], rs[j], al[j], &l, &cc, &dd);
+                ASSERT_EQ(int(st[j]), int(want)) << I.name << " n=" << n << " j=" << j;
+                ASSERT_TRUE(same_bits(L[j], l) && same_bits(c[j], cc) && same_bits(d[j], dd))
+                    << I.name << " j=" << j << " rho_d=" << rd[j] << " rho_s=" << rs[j] << " alpha=" << al[j];
+            }
+        }
+    }
+    EXPECT_GE(tested, 1);
+    std::printf("gloss_from_physical loops tested on %d ISA(s)\n", tested);
+}
+
+TEST(PerceptualLoops, PhysicalFromPerceptualEqualsScalarOnEveryIsa) {
+    std::mt19937_64 rng(19);
+    int tested = 0;
+    for (const Isa &I : isas()) {
+        if (!I.physical || !pgloss_isa_supported(I.isa)) continue;  // reported by the test above
+        ++tested;
+        for (int space = 0; space <= 3; ++space) {
+            const auto sp = static_cast<pgloss_color_space>(space);
+            for (size_t n : kSizes) {
+                std::vector<double> L(n), a(n), b(n), c(n), d(n), r(n), g(n), bl(n), s(n), ax(n), ay(n);
+                std::vector<signed char> st(n);
+                for (size_t j = 0; j < n; ++j) {
+                    L[j] = pick(rng, -5.0, 105.0), a[j] = pick(rng, -150.0, 150.0), b[j] = pick(rng, -150.0, 150.0);
+                    c[j] = pick(rng, -0.01, 0.2), d[j] = pick(rng, 0.7, 1.01);
+                }
+                const pgloss_perceptual_array q{L.data(), a.data(), b.data(), c.data(), d.data()};
+                const pgloss_physical_out p{r.data(), g.data(), bl.data(), s.data(), ax.data(), ay.data()};
+                I.physical(n, q, pgloss__from_xyz_matrix(sp), p, st.data());
+                for (size_t j = 0; j < n; ++j) {
+                    const pgloss_perceptual v{L[j], a[j], b[j], c[j], d[j]};
+                    pgloss_physical o;
+                    const pgloss_status want = pgloss_physical_from_perceptual_ex(&v, PGLOSS_NORM_WARD, sp, &o);
+                    ASSERT_EQ(int(st[j]), int(want)) << I.name << " space " << space << " j=" << j;
+                    ASSERT_TRUE(same_bits(r[j], o.rho_d[0]) && same_bits(g[j], o.rho_d[1]) &&
+                                same_bits(bl[j], o.rho_d[2]) && same_bits(s[j], o.rho_s) &&
+                                same_bits(ax[j], o.alpha_x) && same_bits(ay[j], o.alpha_y))
+                        << I.name << " space " << space << " j=" << j << " L=" << L[j] << " a=" << a[j]
+                        << " b=" << b[j] << " c=" << c[j] << " d=" << d[j];
+                }
+            }
+        }
+    }
+    EXPECT_GE(tested, 1);
+    std::printf("physical_from_perceptual loops tested on %d ISA(s)\n", tested);
+}
+
+}  // namespace
