@@ -80,22 +80,32 @@ typedef struct kernels {
     pgloss__sample_fn sample;
 } kernels;
 
+int pgloss__batch_options_resolve(const pgloss_batch_options *opt, pgloss_precision *prec,
+                                  pgloss_isa *isa)
+{
+    const pgloss_precision p = opt ? opt->precision : PGLOSS_PRECISION_FLOAT;
+    const pgloss_isa i = opt ? opt->isa : PGLOSS_ISA_AUTO;
+    if (p != PGLOSS_PRECISION_FLOAT && p != PGLOSS_PRECISION_FAST &&
+        p != PGLOSS_PRECISION_REFERENCE)
+        return 0;
+    if (!pgloss_isa_supported(i))
+        return 0;
+    *prec = p;
+    *isa = i == PGLOSS_ISA_AUTO ? pgloss_isa_best() : i;
+    return 1;
+}
+
 /* The loops for the options, or {NULL, NULL} for REFERENCE; 0 if the options are invalid. */
 static int select_kernels(const pgloss_batch_options *opt, kernels *out)
 {
-    const pgloss_precision prec = opt ? opt->precision : PGLOSS_PRECISION_FLOAT;
-    pgloss_isa isa = opt ? opt->isa : PGLOSS_ISA_AUTO;
+    pgloss_precision prec;
+    pgloss_isa isa;
     out->eval_pdf = NULL;
     out->sample = NULL;
-    if (prec != PGLOSS_PRECISION_FLOAT && prec != PGLOSS_PRECISION_FAST &&
-        prec != PGLOSS_PRECISION_REFERENCE)
-        return 0;
-    if (!pgloss_isa_supported(isa))
+    if (!pgloss__batch_options_resolve(opt, &prec, &isa))
         return 0;
     if (prec == PGLOSS_PRECISION_REFERENCE)
         return 1;
-    if (isa == PGLOSS_ISA_AUTO)
-        isa = pgloss_isa_best();
     const int fast = prec == PGLOSS_PRECISION_FAST;
 #define PGLOSS_PICK(name)                                                                          \
     do {                                                                                           \

@@ -10,6 +10,12 @@
 #include "pgloss/batch_materials.h"
 #include "pgloss/inline.h"
 
+/* The options of a batched call (NULL: FLOAT tier, AUTO): 0 if invalid (an unknown precision,
+ * or an ISA this build or CPU lacks), else 1 with *prec and *isa (AUTO resolved to the best
+ * ISA). The one decision for batch.c and batch_materials.c. */
+int pgloss__batch_options_resolve(const pgloss_batch_options *opt, pgloss_precision *prec,
+                                  pgloss_isa *isa);
+
 /* Per-call constants of the loops, derived from the material and the active lobes. */
 typedef struct pgloss__batch_consts {
     pgloss_inl_consts lobe;           /* what the inline functions take (pgloss/inline.h) */

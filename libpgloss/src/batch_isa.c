@@ -94,11 +94,14 @@ PGLOSS_INLINE_FN size_t derive_chunk(unsigned lobes, int norm, size_t m,
         const float r = rr[j], g = rg[j], b = rb[j], s = rs[j], ax = axs[j], ay = ays[j];
         const int good = pgloss__material_valid_f(r, g, b, s, ax, ay);
         pgloss_material mm;
-        /* (x > 0 ? x : 0): -0 becomes +0, as a material without that lobe gives (fuzz_brdf) */
-        mm.rho_d[0] = (good & (r > 0.0f)) ? r : 0.0f;
-        mm.rho_d[1] = (good & (g > 0.0f)) ? g : 0.0f;
-        mm.rho_d[2] = (good & (b > 0.0f)) ? b : 0.0f;
-        mm.rho_s = (good & (s > 0.0f)) ? s : 0.0f;
+        /* An invalid element's reflectances become +0 by masking their bits: a select
+         * (good ? r : 0) lets GCC 12 thread the later r > 0 into a select of booleans,
+         * which it cannot vectorise. */
+        const int32_t keep = -(int32_t)good;
+        mm.rho_d[0] = pgloss_inl_from_bits(pgloss_inl_bits(r) & keep);
+        mm.rho_d[1] = pgloss_inl_from_bits(pgloss_inl_bits(g) & keep);
+        mm.rho_d[2] = pgloss_inl_from_bits(pgloss_inl_bits(b) & keep);
+        mm.rho_s = pgloss_inl_from_bits(pgloss_inl_bits(s) & keep);
         mm.alpha_x = good ? ax : 1.0f;
         mm.alpha_y = good ? ay : 1.0f;
         mm.normalization = (pgloss_normalization)norm;

@@ -11,24 +11,33 @@
 
 /* ---- dispatch ---------------------------------------------------------------------------- */
 
-/* The options' ISA resolved (0 if the options are invalid); *reference for REFERENCE. */
-static int resolve(const pgloss_batch_options *opt, pgloss_isa *isa, int *reference)
-{
-    const pgloss_precision prec = opt ? opt->precision : PGLOSS_PRECISION_FLOAT;
-    pgloss_isa i = opt ? opt->isa : PGLOSS_ISA_AUTO;
-    if (prec != PGLOSS_PRECISION_FLOAT && prec != PGLOSS_PRECISION_FAST &&
-        prec != PGLOSS_PRECISION_REFERENCE)
-        return 0;
-    if (!pgloss_isa_supported(i))
-        return 0;
-    *isa = i == PGLOSS_ISA_AUTO ? pgloss_isa_best() : i;
-    *reference = prec == PGLOSS_PRECISION_REFERENCE;
-    return 1;
-}
-
 static int valid_norm(pgloss_normalization n)
 {
     return n == PGLOSS_NORM_WARD || n == PGLOSS_NORM_WARD_DUR || n == PGLOSS_NORM_BOUNDED;
+}
+
+/* The checks every entry point makes first, in the order of the error contract (brdf.h,
+ * batch.h): the options (ARGUMENT), nothing to do (OK), the pointers (NULL), the
+ * normalisation *norm (NORMALIZATION; read only once the pointers are known good). Returns 1
+ * to go on, with the ISA and whether the tier is REFERENCE, or 0 to return *st. */
+static int prepare(const pgloss_batch_options *options, size_t n, int pointers_ok,
+                   const pgloss_normalization *norm, pgloss_isa *isa, int *reference,
+                   pgloss_status *st)
+{
+    pgloss_precision prec;
+    if (!pgloss__batch_options_resolve(options, &prec, isa))
+        *st = PGLOSS_ERR_ARGUMENT;
+    else if (n == 0)
+        *st = PGLOSS_OK;
+    else if (!pointers_ok)
+        *st = PGLOSS_ERR_NULL;
+    else if (!valid_norm(*norm))
+        *st = PGLOSS_ERR_NORMALIZATION;
+    else {
+        *reference = prec == PGLOSS_PRECISION_REFERENCE;
+        return 1;
+    }
+    return 0;
 }
 
 #define PICK(var, name, isa)                                                                       \
@@ -108,6 +117,7 @@ static pgloss_status statuses(size_t n, elem_fn get, const void *ctx, signed cha
     pgloss_status first = PGLOSS_OK;
     for (size_t j = 0; j < n; ++j) {
         elem e;
+        memset(&e, 0, sizeof e); /* the fields get() leaves unset are never read */
         get(ctx, j, &e);
         const pgloss_status st = elem_status(&e);
         if (status)
@@ -206,16 +216,11 @@ pgloss_status pgloss_eval_pdf_batch_materials_ex(const pgloss_batch_options *opt
 {
     pgloss_isa isa;
     int reference;
-    if (!resolve(options, &isa, &reference))
-        return PGLOSS_ERR_ARGUMENT;
-    if (n == 0)
-        return PGLOSS_OK;
-    if (f.r && (!f.g || !f.b))
-        return PGLOSS_ERR_NULL;
-    if (!material_array_ok(m) || !vec_ok(wo) || !vec_ok(wi) || (!f.r && !pdf))
-        return PGLOSS_ERR_NULL;
-    if (!valid_norm(m->normalization))
-        return PGLOSS_ERR_NORMALIZATION;
+    pgloss_status st;
+    const int pointers_ok = !(f.r && (!f.g || !f.b)) && material_array_ok(m) && vec_ok(wo) &&
+                            vec_ok(wi) && (f.r || pdf);
+    if (!prepare(options, n, pointers_ok, m ? &m->normalization : NULL, &isa, &reference, &st))
+        return st;
     pgloss_material_array ma = *m;
     if (!ma.alpha_y)
         ma.alpha_y = ma.alpha_x;
@@ -263,15 +268,11 @@ pgloss_status pgloss_sample_batch_materials_ex(const pgloss_batch_options *optio
 {
     pgloss_isa isa;
     int reference;
-    if (!resolve(options, &isa, &reference))
-        return PGLOSS_ERR_ARGUMENT;
-    if (n == 0)
-        return PGLOSS_OK;
-    if (!material_array_ok(m) || !vec_ok(wo) || !u0 || !u1 || !u2 || !wi.x || !wi.y || !wi.z ||
-        !pdf || !weight.r || !weight.g || !weight.b)
-        return PGLOSS_ERR_NULL;
-    if (!valid_norm(m->normalization))
-        return PGLOSS_ERR_NORMALIZATION;
+    pgloss_status st;
+    const int pointers_ok = material_array_ok(m) && vec_ok(wo) && u0 && u1 && u2 && wi.x &&
+                            wi.y && wi.z && pdf && weight.r && weight.g && weight.b;
+    if (!prepare(options, n, pointers_ok, m ? &m->normalization : NULL, &isa, &reference, &st))
+        return st;
     pgloss_material_array ma = *m;
     if (!ma.alpha_y)
         ma.alpha_y = ma.alpha_x;
@@ -307,10 +308,28 @@ pgloss_status pgloss_sample_batch_materials_ex(const pgloss_batch_options *optio
 
 /* ---- double -------------------------------------------------------------------------------- */
 
-static pgloss__consts_d consts_of_material(const pgloss_material *m, unsigned lobes)
+/* One material (m: its constants in double, *k) or one per element (pa: the arrays, alpha_y
+ * defaulted, *a), and the normalisation. */
+static void setup_d(const pgloss_material *m, const pgloss_physical_array *pa, unsigned lobes,
+                    pgloss__consts_d *k, pgloss_physical_array *a, int *norm)
 {
-    return pgloss__consts_d_of(m->rho_d[0], m->rho_d[1], m->rho_d[2], m->rho_s, m->alpha_x,
-                               m->alpha_y, (int)m->normalization, lobes & PGLOSS_LOBE_ALL);
+    if (m) {
+        *k = pgloss__consts_d_of(m->rho_d[0], m->rho_d[1], m->rho_d[2], m->rho_s, m->alpha_x,
+                                 m->alpha_y, (int)m->normalization, lobes & PGLOSS_LOBE_ALL);
+        *norm = (int)m->normalization;
+    } else {
+        *a = *pa;
+        if (!a->alpha_y)
+            a->alpha_y = a->alpha_x;
+        *norm = (int)a->normalization;
+    }
+}
+
+/* The normalisation of a double call's material(s), NULL while a pointer is missing. */
+static const pgloss_normalization *norm_of_d(const pgloss_material *m,
+                                             const pgloss_physical_array *pa)
+{
+    return m ? &m->normalization : (pa ? &pa->normalization : NULL);
 }
 
 static pgloss_status eval_pdf_d(const pgloss_batch_options *options, const pgloss_material *m,
@@ -319,31 +338,18 @@ static pgloss_status eval_pdf_d(const pgloss_batch_options *options, const pglos
                                 pgloss_rgb_out_d f, double *pdf, signed char *status)
 {
     pgloss_isa isa;
-    int reference;
-    if (!resolve(options, &isa, &reference))
-        return PGLOSS_ERR_ARGUMENT;
-    if (n == 0)
-        return PGLOSS_OK;
-    if (f.r && (!f.g || !f.b))
-        return PGLOSS_ERR_NULL;
-    if ((!m && !physical_array_ok(pa)) || !vec_ok_d(wo) || !vec_ok_d(wi) || (!f.r && !pdf))
-        return PGLOSS_ERR_NULL;
-    if (!valid_norm(m ? m->normalization : pa->normalization))
-        return PGLOSS_ERR_NORMALIZATION;
+    int reference; /* the double loops serve every tier */
+    pgloss_status st;
+    const int pointers_ok = !(f.r && (!f.g || !f.b)) && (m || physical_array_ok(pa)) &&
+                            vec_ok_d(wo) && vec_ok_d(wi) && (f.r || pdf);
+    if (!prepare(options, n, pointers_ok, norm_of_d(m, pa), &isa, &reference, &st))
+        return st;
     if (!f.r)
         f.g = f.b = NULL;
     pgloss_physical_array a;
     pgloss__consts_d k;
     int norm;
-    if (m) {
-        k = consts_of_material(m, lobes);
-        norm = (int)m->normalization;
-    } else {
-        a = *pa;
-        if (!a.alpha_y)
-            a.alpha_y = a.alpha_x;
-        norm = (int)a.normalization;
-    }
+    setup_d(m, pa, lobes, &k, &a, &norm);
     size_t (*fn)(const pgloss__consts_d *, const pgloss_physical_array *, unsigned, int, size_t,
                  pgloss_vec3_array_d, pgloss_vec3_array_d, pgloss_rgb_out_d, double *);
     PICK(fn, pgloss__eval_pdf_batch_d, isa);
@@ -363,28 +369,16 @@ static pgloss_status sample_d(const pgloss_batch_options *options, const pgloss_
                               pgloss_rgb_out_d weight, unsigned char *lobe, signed char *status)
 {
     pgloss_isa isa;
-    int reference;
-    if (!resolve(options, &isa, &reference))
-        return PGLOSS_ERR_ARGUMENT;
-    if (n == 0)
-        return PGLOSS_OK;
-    if ((!m && !physical_array_ok(pa)) || !vec_ok_d(wo) || !u0 || !u1 || !u2 || !wi.x ||
-        !wi.y || !wi.z || !pdf || !weight.r || !weight.g || !weight.b)
-        return PGLOSS_ERR_NULL;
-    if (!valid_norm(m ? m->normalization : pa->normalization))
-        return PGLOSS_ERR_NORMALIZATION;
+    int reference; /* the double loops serve every tier */
+    pgloss_status st;
+    const int pointers_ok = (m || physical_array_ok(pa)) && vec_ok_d(wo) && u0 && u1 && u2 &&
+                            wi.x && wi.y && wi.z && pdf && weight.r && weight.g && weight.b;
+    if (!prepare(options, n, pointers_ok, norm_of_d(m, pa), &isa, &reference, &st))
+        return st;
     pgloss_physical_array a;
     pgloss__consts_d k;
     int norm;
-    if (m) {
-        k = consts_of_material(m, lobes);
-        norm = (int)m->normalization;
-    } else {
-        a = *pa;
-        if (!a.alpha_y)
-            a.alpha_y = a.alpha_x;
-        norm = (int)a.normalization;
-    }
+    setup_d(m, pa, lobes, &k, &a, &norm);
     void (*fn)(const pgloss__consts_d *, const pgloss_physical_array *, unsigned, int, size_t,
                pgloss_vec3_array_d, const double *, const double *, const double *,
                pgloss_vec3_out_d, double *, pgloss_rgb_out_d, unsigned char *);
@@ -402,13 +396,6 @@ pgloss_status pgloss_eval_pdf_batch_d_ex(const pgloss_batch_options *options,
                                          pgloss_vec3_array_d wo, pgloss_vec3_array_d wi,
                                          pgloss_rgb_out_d f, double *pdf, signed char *status)
 {
-    if (!m) {
-        pgloss_isa isa;
-        int reference;
-        if (!resolve(options, &isa, &reference))
-            return PGLOSS_ERR_ARGUMENT;
-        return n ? PGLOSS_ERR_NULL : PGLOSS_OK;
-    }
     return eval_pdf_d(options, m, NULL, lobes, n, wo, wi, f, pdf, status);
 }
 
@@ -419,13 +406,6 @@ pgloss_status pgloss_sample_batch_d_ex(const pgloss_batch_options *options,
                                        double *pdf, pgloss_rgb_out_d weight, unsigned char *lobe,
                                        signed char *status)
 {
-    if (!m) {
-        pgloss_isa isa;
-        int reference;
-        if (!resolve(options, &isa, &reference))
-            return PGLOSS_ERR_ARGUMENT;
-        return n ? PGLOSS_ERR_NULL : PGLOSS_OK;
-    }
     return sample_d(options, m, NULL, lobes, n, wo, u0, u1, u2, wi, pdf, weight, lobe, status);
 }
 
@@ -435,13 +415,6 @@ pgloss_status pgloss_eval_pdf_batch_materials_d_ex(const pgloss_batch_options *o
                                                    pgloss_vec3_array_d wi, pgloss_rgb_out_d f,
                                                    double *pdf, signed char *status)
 {
-    if (!m) {
-        pgloss_isa isa;
-        int reference;
-        if (!resolve(options, &isa, &reference))
-            return PGLOSS_ERR_ARGUMENT;
-        return n ? PGLOSS_ERR_NULL : PGLOSS_OK;
-    }
     return eval_pdf_d(options, NULL, m, lobes, n, wo, wi, f, pdf, status);
 }
 
@@ -453,13 +426,6 @@ pgloss_status pgloss_sample_batch_materials_d_ex(const pgloss_batch_options *opt
                                                  double *pdf, pgloss_rgb_out_d weight,
                                                  unsigned char *lobe, signed char *status)
 {
-    if (!m) {
-        pgloss_isa isa;
-        int reference;
-        if (!resolve(options, &isa, &reference))
-            return PGLOSS_ERR_ARGUMENT;
-        return n ? PGLOSS_ERR_NULL : PGLOSS_OK;
-    }
     return sample_d(options, NULL, m, lobes, n, wo, u0, u1, u2, wi, pdf, weight, lobe, status);
 }
 

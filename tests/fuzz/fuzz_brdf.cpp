@@ -160,9 +160,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, size_t size) {
                 const pgloss_status es = pgloss_eval_pdf_batch_materials_ex(
                     &opt, &ma, lobes, n, wo, wi, pgloss_rgb_out{er.data(), eg.data(), eb.data()}, ep.data(), est.data());
                 FZ_CHECK(es == se && est[0] == se);
-                // Equal values, bit for bit but for the sign of zero: a -0 reflectance gives +0 per
-                // element and may give -0 through material_init (both >= 0, as brdf.h promises).
-                for (size_t k = 0; k < n; ++k) FZ_CHECK(er[k] == fr[k] && eg[k] == fg[k] && eb[k] == fb[k] && ep[k] == pd[k]);
+                // Bit for bit, the sign of zero included (pgloss_inl_material_derive makes a -0
+                // reflectance +0 on both paths).
+                FZ_CHECK(std::memcmp(er.data(), fr.data(), n * sizeof(float)) == 0 &&
+                         std::memcmp(eg.data(), fg.data(), n * sizeof(float)) == 0 &&
+                         std::memcmp(eb.data(), fb.data(), n * sizeof(float)) == 0 &&
+                         std::memcmp(ep.data(), pd.data(), n * sizeof(float)) == 0);
                 std::vector<double> dox(ox.begin(), ox.end()), doy(oy.begin(), oy.end()), doz(oz.begin(), oz.end()),
                     dix(ix.begin(), ix.end()), diy(iy.begin(), iy.end()), diz(iz.begin(), iz.end()), dr(n, -1), dg(n, -1),
                     db(n, -1), dp(n, -1);

@@ -225,11 +225,18 @@ PGLOSS_INLINE_FN pgloss_inl_consts pgloss_inl_consts_of(const pgloss_material *m
  * bits. The constants are formed in double and rounded once (at most FLT_MAX). */
 PGLOSS_INLINE_FN float pgloss_inl_to_float(double v)
 {
-    return v < (double)FLT_MAX ? (float)v : FLT_MAX;
+    return (float)(v < (double)FLT_MAX ? v : (double)FLT_MAX);
 }
 
 PGLOSS_INLINE_FN void pgloss_inl_material_derive(pgloss_material *m)
 {
+    /* −0 reflectances become +0 (−0 + 0 = +0; x + 0 = x otherwise), so that a material's
+     * outputs are never −0, whichever path formed it; an addition, not a comparison, keeps
+     * the per-element loops vectorisable */
+    m->rho_d[0] = m->rho_d[0] + 0.0f;
+    m->rho_d[1] = m->rho_d[1] + 0.0f;
+    m->rho_d[2] = m->rho_d[2] + 0.0f;
+    m->rho_s = m->rho_s + 0.0f;
     /* tiny positive α would make 1/α² overflow float (brdf.h) */
     m->alpha_x = pgloss_inl_max(m->alpha_x, PGLOSS_ALPHA_MIN);
     m->alpha_y = pgloss_inl_max(m->alpha_y, PGLOSS_ALPHA_MIN);
@@ -241,7 +248,10 @@ PGLOSS_INLINE_FN void pgloss_inl_material_derive(pgloss_material *m)
     const double pdf_k = 1.0 / (4.0 * pi * axy);
     const double k = m->normalization == PGLOSS_NORM_BOUNDED ? 4.0 * pdf_k : pdf_k;
     m->spec_scale = pgloss_inl_to_float((double)m->rho_s * k);
-    m->pdf_scale = pgloss_inl_to_float(pdf_k);
+    /* pdf_k <= 1/(4π 1e-8) and wd <= FLT_MAX (1 + 2^-49) (the weights sum to 1) round to
+     * float without overflow: plain conversions, no clamp whose two arms GCC would thread
+     * the tests below through (which keeps the per-element loops from vectorising) */
+    m->pdf_scale = (float)pdf_k;
     const int has_diffuse = (m->rho_d[0] > 0.0f) | (m->rho_d[1] > 0.0f) | (m->rho_d[2] > 0.0f);
     const int has_specular = m->rho_s > 0.0f;
     m->lobes = (has_diffuse ? (unsigned)PGLOSS_LOBE_DIFFUSE : 0u) |
@@ -250,7 +260,7 @@ PGLOSS_INLINE_FN void pgloss_inl_material_derive(pgloss_material *m)
      * to 0 still gets its largest channel, so that it is always sampled. */
     const double wd = PGLOSS_LUMA_R * m->rho_d[0] + PGLOSS_LUMA_G * m->rho_d[1] +
                       PGLOSS_LUMA_B * m->rho_d[2];
-    const float wdf = pgloss_inl_to_float(wd);
+    const float wdf = (float)wd;
     const float dmax = pgloss_inl_max(m->rho_d[0], pgloss_inl_max(m->rho_d[1], m->rho_d[2]));
     m->weight_diffuse = (has_diffuse & !(wdf > 0.0f)) ? dmax : wdf;
     m->weight_specular = m->rho_s;
