@@ -472,7 +472,35 @@ def _array_repr(a: np.ndarray) -> str:
     return np.array2string(np.asarray(a), separator=", ", threshold=8, edgeitems=2, precision=6)
 
 
-class Physical:
+class _PaintShape:
+    """The shape of one paint or an array of paints (a texture), shared by Physical and
+    Perceptual; ``_shape`` is None for one paint."""
+
+    __slots__ = ()
+    _shape: Optional[Tuple[int, ...]]
+
+    @property
+    def shape(self) -> Tuple[int, ...]:
+        """``()`` for one paint, else the broadcast shape of the fields."""
+        return () if self._shape is None else self._shape
+
+    @property
+    def ndim(self) -> int:
+        """``len(shape)``."""
+        return len(self.shape)
+
+    @property
+    def size(self) -> int:
+        """Number of paints (1 for a scalar)."""
+        return int(np.prod(self.shape, dtype=np.int64))
+
+    @property
+    def is_array(self) -> bool:
+        """True for an array of paints (even of shape ``(1,)``)."""
+        return self._shape is not None
+
+
+class Physical(_PaintShape):
     """Physical parameters of the BRDF (``pgloss_physical``, paper eq. 2): one paint, or an
     array of paints (a texture).
 
@@ -614,27 +642,6 @@ class Physical:
         except ValueError:
             raise ValueError(f"pgloss.{fn}: the paints differ in shape") from None
         return cls(rd, f[0], alpha_x=f[1], alpha_y=f[2], normalization=items[0]._normalization)
-
-    # Shape ----------------------------------------------------------------------------------
-    @property
-    def shape(self) -> Tuple[int, ...]:
-        """``()`` for one paint, else the broadcast shape of the fields."""
-        return () if self._shape is None else self._shape
-
-    @property
-    def ndim(self) -> int:
-        """``len(shape)``."""
-        return len(self.shape)
-
-    @property
-    def size(self) -> int:
-        """Number of paints (1 for a scalar)."""
-        return int(np.prod(self.shape, dtype=np.int64))
-
-    @property
-    def is_array(self) -> bool:
-        """True for an array of paints (even of shape ``(1,)``)."""
-        return self._shape is not None
 
     # Fields ---------------------------------------------------------------------------------
     @property
@@ -802,7 +809,7 @@ def _make_physical(rho_d, rho_s, alpha_x, alpha_y, normalization) -> Physical:
 _PERCEPTUAL_FIELDS = ("L", "a", "b", "c", "d")
 
 
-class Perceptual:
+class Perceptual(_PaintShape):
     """The paper's five-parameter colour/gloss description (Fig. 13, ``pgloss_perceptual``):
     one paint, or an array of paints (a texture).
 
@@ -875,26 +882,6 @@ class Perceptual:
         except ValueError:
             raise ValueError("pgloss.Perceptual.stack: the paints differ in shape") from None
         return cls(*cols)
-
-    @property
-    def shape(self) -> Tuple[int, ...]:
-        """``()`` for one paint, else the broadcast shape of the fields."""
-        return () if self._shape is None else self._shape
-
-    @property
-    def ndim(self) -> int:
-        """``len(shape)``."""
-        return len(self.shape)
-
-    @property
-    def size(self) -> int:
-        """Number of paints (1 for a scalar)."""
-        return int(np.prod(self.shape, dtype=np.int64))
-
-    @property
-    def is_array(self) -> bool:
-        """True for an array of paints."""
-        return self._shape is not None
 
     @property
     def L(self) -> Any:
