@@ -23,23 +23,12 @@
 #include <time.h>
 
 #include "pgloss/pgloss.h"
+#include "bench_clock.h"
 
 #define PI_L 3.141592653589793238462643383279502884L
 
 /* ---- timing -------------------------------------------------------------------------- */
 
-static double now_s(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
-static int cmp_double(const void *a, const void *b)
-{
-    const double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
 
 static int g_reps = 9;         /* repetitions; the median is reported */
 static double g_min_time = 0.02; /* seconds per repetition at least */
