@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <initializer_list>
 #include <random>
 #include <vector>
 
@@ -107,6 +108,21 @@ TEST(CbrtD, SubnormalsZerosAndExtremes) {
     EXPECT_EQ(pgloss__cbrt_d(DBL_MAX), static_cast<double>(cbrtl(static_cast<long double>(DBL_MAX))));
 }
 
+// The batches' in-range cube root (no scaling, no special cases) against the general one, bit
+// for bit, over the whole range it is used on and its bounds.
+TEST(CbrtD, InRangeOnlyEqualsGeneral) {
+    std::mt19937_64 rng(900);
+    for (int k = 0; k < 2000000; ++k) {
+        const double x = std::ldexp(1.0 + static_cast<double>(rng() >> 12) * 0x1p-52, int(rng() % 1800) - 900);
+        if (!pgloss__cbrt_in_range_d(x)) continue;  // 2^900 (1 + f), f > 0
+        ASSERT_TRUE(same_bits(pgloss__cbrt_in_range_only_d(x), pgloss__cbrt_d(x))) << x;
+    }
+    for (double x : std::initializer_list<double>{0.0, -0.0, 0x1p-900, 0x1p900, 1.0, 0.5, 8.0})
+        EXPECT_TRUE(pgloss__cbrt_in_range_d(x) && same_bits(pgloss__cbrt_in_range_only_d(x), pgloss__cbrt_d(x))) << x;
+    for (double x : std::initializer_list<double>{-1.0, 0x1p-901, 0x1.0000000000001p900, 1e-310, INFINITY, NAN})
+        EXPECT_FALSE(pgloss__cbrt_in_range_d(x)) << x;
+}
+
 TEST(CbrtD, ExactCubesAreExact) {
     for (int64_t k = -200000; k <= 200000; ++k) {
         const double c = static_cast<double>(k);
@@ -197,6 +213,52 @@ TEST(PerceptualLoops, GlossFromPhysicalEqualsScalarOnEveryIsa) {
     }
     EXPECT_GE(tested, 1);
     std::printf("gloss_from_physical loops tested on %d ISA(s)\n", tested);
+}
+
+// The loops take a faster kernel for a chunk whose every paint passes the checks and needs no
+// scaling in the cube roots (ρd, ρs in {0} ∪ [2^-899, 2^899], α finite > 0): such chunks, and
+// chunks where one element at a time breaks the rule, against the scalar function bit for bit.
+double pick_plain(std::mt19937_64 &rng) {
+    const uint64_t r = rng();
+    switch (r % 8) {
+    case 0: return 0.0;
+    case 1: return (r >> 8) % 2 ? 0x1p-899 : 0x1p899;
+    case 2: return std::ldexp(1.0 + static_cast<double>(rng() >> 12) * 0x1p-52, int((r >> 8) % 1798) - 899);
+    default: return static_cast<double>(rng() >> 11) * 0x1p-53;
+    }
+}
+
+TEST(PerceptualLoops, GlossFromPhysicalPlainChunksEqualScalarOnEveryIsa) {
+    std::mt19937_64 rng(2000);
+    const double breakers[] = {-0.0 - 1e-300, 0x1p-900, 0x1p900, NAN, INFINITY, 1e-310};
+    int tested = 0;
+    for (const Isa &I : isas()) {
+        if (!I.gloss || !pgloss_isa_supported(I.isa)) continue;  // reported above
+        ++tested;
+        const size_t n = 1024;
+        for (int round = 0; round < 40; ++round) {
+            std::vector<double> rd(n), rs(n), al(n), L(n), c(n), d(n);
+            std::vector<signed char> st(n);
+            for (size_t j = 0; j < n; ++j) {
+                rd[j] = pick_plain(rng), rs[j] = pick_plain(rng);
+                al[j] = round % 2 ? 0.3 * static_cast<double>(rng() >> 11) * 0x1p-53 + 1e-300 : pick_plain(rng) + 1e-300;
+            }
+            if (round >= 20) {  // one element out of the plain range, at some position
+                const size_t j = rng() % n;
+                double *col[] = {rd.data(), rs.data(), al.data()};
+                col[rng() % 3][j] = breakers[rng() % (sizeof breakers / sizeof *breakers)];
+            }
+            I.gloss(n, rd.data(), rs.data(), al.data(), L.data(), c.data(), d.data(), st.data());
+            for (size_t j = 0; j < n; ++j) {
+                double l, cc, dd;
+                const pgloss_status want = pgloss_gloss_from_physical(rd[j], rs[j], al[j], &l, &cc, &dd);
+                ASSERT_EQ(int(st[j]), int(want)) << I.name << " round=" << round << " j=" << j;
+                ASSERT_TRUE(same_bits(L[j], l) && same_bits(c[j], cc) && same_bits(d[j], dd))
+                    << I.name << " j=" << j << " rho_d=" << rd[j] << " rho_s=" << rs[j] << " alpha=" << al[j];
+            }
+        }
+    }
+    EXPECT_GE(tested, 1);
 }
 
 TEST(PerceptualLoops, PhysicalFromPerceptualEqualsScalarOnEveryIsa) {

@@ -10,7 +10,8 @@
  * themselves. Error: within 0.5 ulp plus a few 2^-60 relative (a correctly rounded result but
  * for near-halfway cases); measured against long double cbrtl in tests/test_cbrt_d.cpp, the
  * derivation in docs/kernels.md. It needs no FMA: -ffp-contract=off builds give the same bits
- * on every ISA. */
+ * on every ISA (where FMA is there, it computes step 4's exact residual in one operation, to
+ * the same bits). */
 #ifndef PGLOSS_CBRT_D_H
 #define PGLOSS_CBRT_D_H
 
@@ -39,16 +40,10 @@ PGLOSS__CBRT_FN double pgloss__from_bits_d(uint64_t u)
     return x;
 }
 
-/* ∛x for every double x. (Selects on double comparisons throughout: that is what the
- * vectoriser turns into blends next to double arithmetic.) */
-PGLOSS__CBRT_FN double pgloss__cbrt_d(double x)
+/* Steps 2–5 below for v = 0 or 2^-900 <= v <= 2^900: ∛v for v > 0 (any value for v = 0,
+ * which the callers select away). */
+PGLOSS__CBRT_FN double pgloss__cbrt_core_d(double v)
 {
-    const double ax = fabs(x);
-    /* 1. Into [2^-900, 2^900] by an exact power of 2^3k (subnormals included), so that no
-     *    product below overflows or underflows; undone exactly at the end. */
-    const double in = ax < 0x1p-900 ? 0x1p300 : (ax > 0x1p900 ? 0x1p-300 : 1.0);
-    const double out = ax < 0x1p-900 ? 0x1p-100 : (ax > 0x1p900 ? 0x1p100 : 1.0);
-    const double v = ax * in;
     /* 2. z ≈ v^(-1/3) to 3.5 % from the high word h of v (the exponent divided by 3, as
      *    Blinn's and fdlibm's first guesses): high word K − h/3, K = 1430187896 fitted for the
      *    smallest error over a period of 3 binades. h < 2^31 is exact as a double (its bits
@@ -68,15 +63,47 @@ PGLOSS__CBRT_FN double pgloss__cbrt_d(double x)
     const double e = 1.0 - y * z; /* 1 − v z³, |e| < 1e-9 */
     const double t = pgloss__from_bits_d((pgloss__bits_d(y) + 0x20000000u) & 0xffffffffc0000000u);
     const double s = t * t;
+#if defined(__FMA__)
+    /* the same R: v − s t rounded once, by the fused multiply-add (fewer operations; the
+     * scalar functions, built without FMA, take the split and agree bit for bit) */
+    const double R = fma(-s, t, v);
+#else
     const double s_hi = pgloss__from_bits_d(pgloss__bits_d(s) & 0xffffffffc0000000u);
     const double s_lo = s - s_hi;
     const double R = (v - s_hi * t) - s_lo * t;
+#endif
     /* 5. ∛v = t (1 − u)^(-1/3) with u = R/v (|u| < 2^-21), 1/v = z³/(1 − e) = z³ (1 + e) to
      *    e² < 1e-18: t (1 + u/3 + 2u²/9 + O(u³)), the O(u³) term below 2^-66. */
     const double u = (R * ((z * z) * z)) * (1.0 + e);
-    const double r = (t + t * (u * ((1.0 / 3.0) + u * (2.0 / 9.0)))) * out;
+    return t + t * (u * ((1.0 / 3.0) + u * (2.0 / 9.0)));
+}
+
+/* ∛x for every double x. (Selects on double comparisons throughout: that is what the
+ * vectoriser turns into blends next to double arithmetic.) */
+PGLOSS__CBRT_FN double pgloss__cbrt_d(double x)
+{
+    const double ax = fabs(x);
+    /* 1. Into [2^-900, 2^900] by an exact power of 2^3k (subnormals included), so that no
+     *    product in steps 2–5 overflows or underflows; undone exactly at the end. */
+    const double in = ax < 0x1p-900 ? 0x1p300 : (ax > 0x1p900 ? 0x1p-300 : 1.0);
+    const double out = ax < 0x1p-900 ? 0x1p-100 : (ax > 0x1p900 ? 0x1p100 : 1.0);
+    const double r = pgloss__cbrt_core_d(ax * in) * out;
     /* ±0 and NaN, ±Inf: themselves (x + x quiets a NaN). */
     return ax <= DBL_MAX ? (ax > 0.0 ? copysign(r, x) : x) : x + x;
+}
+
+/* x is 0 or within [2^-900, 2^900], where pgloss__cbrt_d scales by 1 (one comparison per
+ * bound, what vectorises). */
+PGLOSS__CBRT_FN int pgloss__cbrt_in_range_d(double x)
+{
+    return (x == 0.0) | ((x >= 0x1p-900) & (x <= 0x1p900));
+}
+
+/* pgloss__cbrt_d(x), bit for bit, for x known to pass pgloss__cbrt_in_range_d: no scaling
+ * and no special cases (the batches check a chunk's inputs once and then take this). */
+PGLOSS__CBRT_FN double pgloss__cbrt_in_range_only_d(double x)
+{
+    return x > 0.0 ? pgloss__cbrt_core_d(x) : x;
 }
 
 #endif

@@ -15,7 +15,7 @@ pgloss_status pgloss_contrast_gloss(double rho_d, double rho_s, double *c)
         return PGLOSS_ERR_NONFINITE;
     if (rho_d < 0.0 || rho_s < 0.0)
         return PGLOSS_ERR_NEGATIVE;
-    const double den = pgloss__contrast_den_d(rho_d, rho_s, pgloss__half_cbrt_d(rho_d)); /* eq. 4 */
+    const double den = pgloss__contrast_den_d(rho_d, rho_s, pgloss__half_cbrt_d(rho_d, 0), 0); /* eq. 4 */
     if (!isfinite(den))
         return PGLOSS_ERR_NONFINITE; /* beyond double range: no meaningful c */
     *c = pgloss__contrast_d(rho_s, den);
@@ -48,7 +48,7 @@ pgloss_status pgloss_gloss_from_physical(double rho_d, double rho_s, double alph
         return PGLOSS_ERR_NULL;
     }
     /* The batch's per-element code (perceptual_d.h): the same bits. */
-    return (pgloss_status)pgloss__gloss_from_physical_k(rho_d, rho_s, alpha, L, c, d);
+    return (pgloss_status)pgloss__gloss_from_physical_k(rho_d, rho_s, alpha, L, c, d, 0);
 }
 
 pgloss_status pgloss_physical_from_gloss(double L, double c, double d,

@@ -23,10 +23,17 @@ PGLOSS__P_FN int pgloss__finite_d(double x)
     return fabs(x) <= DBL_MAX;
 }
 
-/* B = ∛(ρd/2), the cube root of eqs. 4 and 7. */
-PGLOSS__P_FN double pgloss__half_cbrt_d(double rho_d)
+/* ∛x by the general cube root or, where `in_range` (a compile-time constant) says the caller
+ * checked pgloss__cbrt_in_range_d, by its unscaled core: the same bits either way. */
+PGLOSS__P_FN double pgloss__cbrt_sel_d(double x, const int in_range)
 {
-    return pgloss__cbrt_d(0.5 * rho_d);
+    return in_range ? pgloss__cbrt_in_range_only_d(x) : pgloss__cbrt_d(x);
+}
+
+/* B = ∛(ρd/2), the cube root of eqs. 4 and 7. */
+PGLOSS__P_FN double pgloss__half_cbrt_d(double rho_d, const int in_range)
+{
+    return pgloss__cbrt_sel_d(0.5 * rho_d, in_range);
 }
 
 /* CIE 1976 L* of Y ≥ 0 (§4, inverse of eq. 6), the exact rational ε, κ, from b = ∛(Y/2):
@@ -40,7 +47,7 @@ PGLOSS__P_FN double pgloss__lightness_b_d(double Y, double b)
 
 PGLOSS__P_FN double pgloss__lightness_d(double Y)
 {
-    return pgloss__lightness_b_d(Y, pgloss__half_cbrt_d(Y));
+    return pgloss__lightness_b_d(Y, pgloss__half_cbrt_d(Y, 0));
 }
 
 /* Eq. 6, Y = f⁻¹(L*) for L* ≥ 0 (+Inf for L* beyond ~6.6e104: the caller checks). */
@@ -52,9 +59,10 @@ PGLOSS__P_FN double pgloss__luminance_d(double L)
 
 /* Eq. 4's denominator A² + AB + B², A = ∛(ρs + ρd/2), b = B = ∛(ρd/2): c = ρs / den. A − B
  * with A³ − B³ = ρs cancels for ρs ≪ ρd, the quotient form does not. */
-PGLOSS__P_FN double pgloss__contrast_den_d(double rho_d, double rho_s, double b)
+PGLOSS__P_FN double pgloss__contrast_den_d(double rho_d, double rho_s, double b,
+                                           const int in_range)
 {
-    const double a = pgloss__cbrt_d(rho_s + 0.5 * rho_d);
+    const double a = pgloss__cbrt_sel_d(rho_s + 0.5 * rho_d, in_range);
     return a * a + a * b + b * b;
 }
 
@@ -67,7 +75,7 @@ PGLOSS__P_FN double pgloss__contrast_d(double rho_s, double den)
 /* Eq. 7 expanded, (c + B)³ − B³ = c (c² + 3cB + 3B²) with B = ∛(ρd/2): free of cancellation. */
 PGLOSS__P_FN double pgloss__specular_d(double rho_d, double c)
 {
-    const double b = pgloss__half_cbrt_d(rho_d);
+    const double b = pgloss__half_cbrt_d(rho_d, 0);
     return c * (c * c + 3.0 * c * b + 3.0 * b * b);
 }
 
@@ -85,24 +93,39 @@ PGLOSS__P_FN double pgloss__alpha_status_d(double alpha)
     return alpha > PGLOSS_ALPHA_TRUSTED_MAX ? (double)PGLOSS_WARN_ALPHA_UNTRUSTED : 0.0;
 }
 
+/* Every check of pgloss_gloss_from_physical passes, and its cube roots need no scaling:
+ * ρd, ρs in {0} ∪ [2^-899, 2^899] (so ρd/2 and ρs + ρd/2 pass pgloss__cbrt_in_range_d, and
+ * eq. 4's denominator is finite), α finite and > 0. As a double, 1 or 0 (what vectorises). */
+PGLOSS__P_FN double pgloss__gloss_plain_d(double rho_d, double rho_s, double alpha)
+{
+    const int in_d = (rho_d == 0.0) | ((rho_d >= 0x1p-899) & (rho_d <= 0x1p899));
+    const int in_s = (rho_s == 0.0) | ((rho_s >= 0x1p-899) & (rho_s <= 0x1p899));
+    return in_d & in_s & (alpha > 0.0) & (alpha <= DBL_MAX) ? 1.0 : 0.0;
+}
+
 /* pgloss_gloss_from_physical on one element (eqs. 3, 4 and L* of ρd): NONFINITE, NEGATIVE,
- * ALPHA, NONFINITE (ρs + ρd/2 beyond DBL_MAX), then the warning; outputs 0 on error. */
+ * ALPHA, NONFINITE (ρs + ρd/2 beyond DBL_MAX), then the warning; outputs 0 on error. With
+ * `plain` (a compile-time constant) for an element pgloss__gloss_plain_d accepts: no checks
+ * to make, the same bits. */
 PGLOSS__P_FN double pgloss__gloss_from_physical_k(double rho_d, double rho_s, double alpha,
-                                                  double *L, double *c, double *d)
+                                                  double *L, double *c, double *d,
+                                                  const int plain)
 {
     /* every value first, then the selects: no work under a condition (what vectorises) */
-    const double b = pgloss__half_cbrt_d(rho_d);
-    const double den = pgloss__contrast_den_d(rho_d, rho_s, b);
+    const double b = pgloss__half_cbrt_d(rho_d, plain);
+    const double den = pgloss__contrast_den_d(rho_d, rho_s, b, plain);
     const double l = pgloss__lightness_b_d(rho_d, b), cc = pgloss__contrast_d(rho_s, den);
     const double dd = pgloss__doi_d(alpha); /* eq. 3 */
     double st = pgloss__alpha_status_d(alpha);
-    st = pgloss__finite_d(den) ? st : (double)PGLOSS_ERR_NONFINITE;
-    st = alpha > 0.0 ? st : (double)PGLOSS_ERR_ALPHA;
-    st = rho_s < 0.0 ? (double)PGLOSS_ERR_NEGATIVE : st;
-    st = rho_d < 0.0 ? (double)PGLOSS_ERR_NEGATIVE : st;
-    st = pgloss__finite_d(alpha) ? st : (double)PGLOSS_ERR_NONFINITE;
-    st = pgloss__finite_d(rho_s) ? st : (double)PGLOSS_ERR_NONFINITE;
-    st = pgloss__finite_d(rho_d) ? st : (double)PGLOSS_ERR_NONFINITE;
+    if (!plain) {
+        st = pgloss__finite_d(den) ? st : (double)PGLOSS_ERR_NONFINITE;
+        st = alpha > 0.0 ? st : (double)PGLOSS_ERR_ALPHA;
+        st = rho_s < 0.0 ? (double)PGLOSS_ERR_NEGATIVE : st;
+        st = rho_d < 0.0 ? (double)PGLOSS_ERR_NEGATIVE : st;
+        st = pgloss__finite_d(alpha) ? st : (double)PGLOSS_ERR_NONFINITE;
+        st = pgloss__finite_d(rho_s) ? st : (double)PGLOSS_ERR_NONFINITE;
+        st = pgloss__finite_d(rho_d) ? st : (double)PGLOSS_ERR_NONFINITE;
+    }
     *L = st >= 0.0 ? l : 0.0;
     *c = st >= 0.0 ? cc : 0.0;
     *d = st >= 0.0 ? dd : 0.0;
