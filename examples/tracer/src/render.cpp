@@ -357,6 +357,14 @@ struct Renderer::Impl {
     struct Packet {
         alignas(64) float ox[16], oy[16], oz[16], dx[16], dy[16], dz[16], tfar[16];
         alignas(64) int prim[16];  // the triangle's index (parallelograms follow the triangles), -2 - the sphere's; -1: none
+
+        // Lane j: the ray o + t d, 0 < t < tmax, nothing hit yet.
+        void set(size_t j, const glm::vec3 &o, const glm::vec3 &d, float tmax) {
+            ox[j] = o.x, oy[j] = o.y, oz[j] = o.z;
+            dx[j] = d.x, dy[j] = d.y, dz[j] = d.z;
+            tfar[j] = tmax;
+            prim[j] = -1;
+        }
     };
 
     // The closest parallelogram, triangle or sphere along each ray of p with 0 < t < p.tfar
@@ -718,10 +726,7 @@ struct Renderer::Impl {
                 Packet pk;
                 for (size_t j = 0; j < 16; ++j) {
                     const PathState &ps = paths[wf.active[b + std::min(j, cnt - 1)]];
-                    pk.ox[j] = ps.o.x, pk.oy[j] = ps.o.y, pk.oz[j] = ps.o.z;
-                    pk.dx[j] = ps.d.x, pk.dy[j] = ps.d.y, pk.dz[j] = ps.d.z;
-                    pk.tfar[j] = std::numeric_limits<float>::infinity();
-                    pk.prim[j] = -1;
+                    pk.set(j, ps.o, ps.d, std::numeric_limits<float>::infinity());
                 }
                 small_intersect<false>(pk);
                 for (size_t j = 0; j < cnt; ++j) {
@@ -774,10 +779,7 @@ struct Renderer::Impl {
                 Packet pk;
                 for (size_t j = 0; j < 16; ++j) {
                     const PathState &ps = paths[wf.shadows[b + std::min(j, cnt - 1)]];
-                    pk.ox[j] = ps.shadow_o.x, pk.oy[j] = ps.shadow_o.y, pk.oz[j] = ps.shadow_o.z;
-                    pk.dx[j] = ps.shadow_d.x, pk.dy[j] = ps.shadow_d.y, pk.dz[j] = ps.shadow_d.z;
-                    pk.tfar[j] = ps.shadow_tmax;
-                    pk.prim[j] = -1;
+                    pk.set(j, ps.shadow_o, ps.shadow_d, ps.shadow_tmax);
                 }
                 small_intersect<true>(pk);
                 for (size_t j = 0; j < cnt; ++j)
