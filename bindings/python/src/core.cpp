@@ -432,13 +432,20 @@ py::array_t<float> material_columns(const std::array<darr, 6> &cols) {
             throw std::invalid_argument("pgloss._core: material columns must be flat arrays of equal length");
         src[k] = cols[k].data();
     }
+    const auto count = static_cast<size_t>(n);
     py::array_t<float> block(std::vector<py::ssize_t>{6, n});
     float *dst = block.mutable_data();
+    SignalCheck sig;
     {
         py::gil_scoped_release nogil;
-        for (size_t k = 0; k < 6; ++k)
-            for (py::ssize_t j = 0; j < n; ++j) dst[k * static_cast<size_t>(n) + static_cast<size_t>(j)] = to_float(src[k][j]);
+        for (size_t base = 0; base < count; base += kSignalStride) {
+            if (base && sig.stop(base)) break;
+            const size_t end = std::min(count, base + kSignalStride);
+            for (size_t k = 0; k < 6; ++k)
+                for (size_t j = base; j < end; ++j) dst[k * count + j] = to_float(src[k][j]);
+        }
     }
+    sig.raise_if_interrupted();
     return block;
 }
 
