@@ -522,8 +522,11 @@ class Physical(_PaintShape):
 
     The fields broadcast against each other (``rho_d`` without its channel axis): the result
     is a scalar paint when every field is a number (and ``rho_d`` a number or 3 numbers),
-    else an array of paints of the broadcast :attr:`shape`. Array fields are copied: the
-    object is immutable.
+    else an array of paints of the broadcast :attr:`shape`. Array fields are copied and
+    read-only: the object is immutable. As one paint compiles its :class:`Material` once, an
+    array of paints rounds its parameters to float once, on its first :func:`eval`,
+    :func:`pdf`, :func:`eval_pdf` or :func:`sample` call, and keeps them (half the memory of
+    its float64 fields): later calls read them as they are.
 
     A ``Physical`` is a record, like the C struct: it holds any numbers. Whether they make a
     material is decided by the core where they are used — :meth:`material` (and so
@@ -1149,8 +1152,8 @@ def eval(material: Union[Physical, Material, Sequence[Physical]], wo: ArrayLike,
     ----------
     material : Physical, sequence of Physical, or Material
         One paint (a ``Physical`` is compiled once and cached), or an array of paints (an
-        array ``Physical``, or a list of them): one material per element, broadcast against
-        the directions' leading shapes.
+        array ``Physical``, rounded to float once and kept, or a list of them): one material
+        per element, broadcast against the directions' leading shapes.
     wo, wi : array_like, shape (..., 3)
         Directions towards the viewer and towards the light, in the shading frame
         (normal = +z), any length; the leading shapes broadcast against each other and
