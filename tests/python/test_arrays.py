@@ -311,6 +311,94 @@ def test_sequence_of_physical_is_an_array_material() -> None:
         pgloss.eval([ps[0], ps[1].replace(normalization=Normalization.BOUNDED)], wo, wi)
 
 
+def test_array_physical_keeps_a_float_block_that_never_goes_stale() -> None:
+    # An array Physical rounds its parameters to float on its first BRDF call and keeps them
+    # (as one paint keeps its Material). The block must always be the fields' values: the
+    # caller's arrays are copied, the fields are read-only, replace() makes a new object.
+    rng = np.random.default_rng(11)
+    n = 300  # more than one chunk of the binding's loops
+    rd, rs = rng.uniform(0.05, 0.6, (n, 3)), rng.uniform(0.0, 0.1, n)
+    ax, ay = rng.uniform(0.03, 0.2, n), rng.uniform(0.03, 0.2, n)
+    tex = Physical(rd, rs, alpha_x=ax, alpha_y=ay)
+    wo = np.array([0.1, 0.2, 1.0], np.float32)
+    wi = (rng.normal(size=(n, 3)) * [1, 1, 0] + [0, 0, 1]).astype(np.float32)
+
+    def one_by_one(p: Physical, dtype: Any) -> np.ndarray:
+        return np.concatenate([pgloss.eval(p[k].material(), wo.astype(dtype), wi[k:k + 1].astype(dtype))
+                               for k in range(n)])
+
+    f0 = pgloss.eval(tex, wo, wi)
+    np.testing.assert_array_equal(f0, one_by_one(tex, np.float32))
+    for a in (rd, rs, ax, ay):  # the caller's arrays: copied at construction
+        a[...] = 0.5
+    np.testing.assert_array_equal(pgloss.eval(tex, wo, wi), f0)
+    np.testing.assert_allclose(pgloss.eval(tex, wo.astype(np.float64), wi.astype(np.float64)), f0, rtol=1e-5)
+    for field in (tex.rho_d, tex.rho_s, tex.alpha_x, tex.alpha_y):  # the fields: read-only
+        with pytest.raises(ValueError):
+            field[0] = 0.9
+    assert np.all(tex.rho_s != 0.5) and np.all(tex.rho_d != 0.5)
+    other = tex.replace(rho_s=tex.rho_s[::-1].copy())  # a new object, a new block
+    np.testing.assert_array_equal(pgloss.eval(other, wo, wi), one_by_one(other, np.float32))
+    np.testing.assert_array_equal(pgloss.eval(tex, wo, wi), f0)
+    # A conversion's result (an array Physical over the conversion's own outputs) and an
+    # indexed part of a texture evaluate as their elements do.
+    conv = Perceptual(np.linspace(20.0, 80.0, n), 0.0, 0.0, 0.04, 0.93).to_physical()
+    np.testing.assert_array_equal(pgloss.eval(conv, wo, wi), one_by_one(conv, np.float32))
+    part = tex[::3]
+    np.testing.assert_array_equal(pgloss.eval(part, wo, wi[::3]), f0[::3])
+
+
+def test_per_element_material_values_beyond_float_range() -> None:
+    # The per-element batches see the parameters as the C API does: rounded to float, a value
+    # beyond float range is +-inf (NONFINITE), never FLT_MAX by rounding; the same status as one
+    # material_init per element.
+    big = float(np.finfo(np.float32).max)
+    rs = np.array([0.05, big, 3.4028235e38, 1e300, 1e-50])
+    tex = Physical(0.2, rs, 0.1)
+    for k in range(rs.size):
+        try:
+            tex[k].material()
+            want = Status.OK
+        except PglossError as e:
+            want = e.status
+        for dtype in (np.float32, np.float64):
+            try:
+                pgloss.eval(tex, np.array([0.0, 0.0, 1.0], dtype), np.array([0.0, 0.3, 1.0], dtype))
+                got = np.zeros(rs.size, np.int8)
+            except PglossError as e:
+                got = e.status_array
+            assert got[k] == want, (k, dtype, got)
+    assert [Status(int(x)) for x in got] == [Status.OK, Status.OK, Status.ERR_NONFINITE, Status.ERR_NONFINITE,
+                                             Status.OK]
+
+
+def test_status_array_when_the_first_failure_is_late() -> None:
+    # The status array is allocated at the first failing chunk of the binding's loops: every
+    # element before it is OK, every failing element after it is reported.
+    n = 1000
+    rs = np.full(n, 0.05)
+    rs[700], rs[950] = -1.0, np.nan
+    tex = Physical(0.2, rs, 0.1)
+    wo = np.array([0.0, 0.2, 1.0])
+    for dtype in (np.float32, np.float64):
+        for call in (lambda: pgloss.eval(tex, wo.astype(dtype), wo.astype(dtype) * [-1, -1, 1]),
+                     lambda: pgloss.sample(tex, wo.astype(dtype), np.full(3, 0.4, dtype))):
+            with pytest.raises(PglossError) as info:
+                call()
+            e = info.value
+            assert e.status == Status.ERR_NEGATIVE and e.index == (700,)
+            want = np.zeros(n, np.int8)
+            want[700], want[950] = Status.ERR_NEGATIVE, Status.ERR_NONFINITE
+            np.testing.assert_array_equal(e.status_array, want)
+    # broadcast against the directions: the material's block is broadcast, statuses too
+    tex2 = Physical(0.2, np.array([[0.05], [-1.0]]), 0.1)  # shape (2, 1)
+    wi = np.tile(np.array([0.1, 0.0, 1.0]), (3, 1))  # (3, 3): batch shape (2, 3)
+    with pytest.raises(PglossError) as info:
+        pgloss.pdf(tex2, wo, wi)
+    assert info.value.index == (1, 0) and info.value.status_array.tolist() == [[0, 0, 0], [-3, -3, -3]]
+    assert np.all(info.value.result[0] > 0) and np.all(info.value.result[1] == 0)
+
+
 # ------------------------------------------------------------------------------------------------
 # Broadcasting.
 

@@ -14,10 +14,15 @@ Rows (median of --repeat runs after a warm-up, time.perf_counter around the publ
 * ``gloss_from_physical`` on N² paints against numpy's bare eq. 4 (c = ∛(ρs + ρd/2) − ∛(ρd/2),
   c alone). Target: ≤ numpy.
 * ``eval`` on N²/16 direction pairs: one material for all (the uniform batch) and one material per
-  pair (an array ``Physical``), float32. Target: per-element ≤ 2× uniform.
+  pair (an array ``Physical``), float32. Target: per-element ≤ 2× uniform. Both sides are
+  compiled once and kept (one paint's ``Material``; an array's float block): the first call on
+  a new texture, which rounds it to float, is a row of its own.
 * float64 against float32, uniform and per-element materials. Target: float64 ≤ 2× float32.
 
-    python bindings/python/bench/bench_textures.py [--size 4096] [--repeat 5] [--csv FILE]
+The eval and sample rows are paired: the two sides run alternately, call by call, and each
+side's median is reported, so that a loaded host slows both alike.
+
+    python bindings/python/bench/bench_textures.py [--size 4096] [--repeat 5] [--only perceptual|brdf] [--csv FILE]
 """
 
 from __future__ import annotations
@@ -51,6 +56,22 @@ _XYZ_TO_RGB = np.array([[3.2404542, -1.5371385, -0.4985314],
                         [-0.9692660, 1.8760108, 0.0415560],
                         [0.0556434, -0.2040259, 1.0572252]])
 _EPS_CBRT = 6.0 / 29.0
+
+
+def paired(fa: Callable[[], object], fb: Callable[[], object], repeat: int) -> Tuple[float, float]:
+    """Medians of ``fa`` and ``fb`` run alternately ``repeat`` times each, after a warm-up call each."""
+    fa()
+    fb()
+    ta, tb = [], []
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        fa()
+        t1 = time.perf_counter()
+        fb()
+        t2 = time.perf_counter()
+        ta.append(t1 - t0)
+        tb.append(t2 - t1)
+    return statistics.median(ta), statistics.median(tb)
 
 
 def numpy_physical_from_perceptual(L, a, b, c, d):
@@ -87,6 +108,7 @@ def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--size", type=int, default=4096, help="texture side N (N² texels; default 4096)")
     ap.add_argument("--repeat", type=int, default=5)
+    ap.add_argument("--only", choices=("perceptual", "brdf"), help="only the conversion rows, or only eval/sample")
     ap.add_argument("--csv", help="also write the rows as CSV")
     args = ap.parse_args(argv)
     N, rep = args.size, args.repeat
@@ -97,49 +119,73 @@ def main(argv=None) -> int:
     def row(what: str, ours: str, t_ours: float, ref: str, t_ref: float, target: str) -> None:
         rows.append((what, ours, t_ours, ref, t_ref, target))
 
-    # A texture of paints inside the gamut and envelope mostly; a few out on purpose.
-    L = rng.uniform(20.0, 80.0, (N, N))
-    a = rng.uniform(-20.0, 20.0, (N, N))
-    b = rng.uniform(-20.0, 20.0, (N, N))
-    c = rng.uniform(0.0, 0.08, (N, N))
-    d = rng.uniform(0.85, 0.99, (N, N))
-    a[::97, ::89] = 180.0  # out of gamut
-    tex = pgloss.Perceptual(L, a, b, c, d)
+    if args.only != "brdf":
+        # A texture of paints inside the gamut and envelope mostly; a few out on purpose.
+        L = rng.uniform(20.0, 80.0, (N, N))
+        a = rng.uniform(-20.0, 20.0, (N, N))
+        b = rng.uniform(-20.0, 20.0, (N, N))
+        c = rng.uniform(0.0, 0.08, (N, N))
+        d = rng.uniform(0.85, 0.99, (N, N))
+        a[::97, ::89] = 180.0  # out of gamut
+        tex = pgloss.Perceptual(L, a, b, c, d)
 
-    t_np = timed(lambda: numpy_physical_from_perceptual(L, a, b, c, d), rep)
-    t_pg = timed(lambda: tex.to_physical(errors="status"), rep)
-    t_pg_check = timed(lambda: (tex.to_physical(errors="status"), tex.check()), rep)
-    row(f"physical_from_perceptual, {N}² texels", "to_physical(errors=\"status\") (validity per texel)", t_pg,
-        "numpy eqs. 6–7 + Lab→RGB, no checks", t_np, "≤ 1")
-    row(f"physical_from_perceptual + check, {N}² texels", "to_physical + check() (full model check)", t_pg_check,
-        "numpy eqs. 6–7 + Lab→RGB, no checks", t_np, "")
+        t_np = timed(lambda: numpy_physical_from_perceptual(L, a, b, c, d), rep)
+        t_pg = timed(lambda: tex.to_physical(errors="status"), rep)
+        t_pg_check = timed(lambda: (tex.to_physical(errors="status"), tex.check()), rep)
+        row(f"physical_from_perceptual, {N}² texels", "to_physical(errors=\"status\") (validity per texel)", t_pg,
+            "numpy eqs. 6–7 + Lab→RGB, no checks", t_np, "≤ 1")
+        row(f"physical_from_perceptual + check, {N}² texels", "to_physical + check() (full model check)", t_pg_check,
+            "numpy eqs. 6–7 + Lab→RGB, no checks", t_np, "")
 
-    rd = rng.uniform(0.0, 0.9, n)
-    rs = rng.uniform(0.0, 0.1, n)
-    al = rng.uniform(0.02, 0.2, n)
-    t_np = timed(lambda: numpy_contrast_gloss(rd, rs), rep)
-    t_pg = timed(lambda: pgloss.gloss_from_physical(rd, rs, al, errors="status"), rep)
-    row(f"gloss_from_physical, {n:,} paints", "gloss_from_physical (L, c, d + statuses)", t_pg,
-        "numpy eq. 4 (c only)", t_np, "≤ 1")
+        rd = rng.uniform(0.0, 0.9, n)
+        rs = rng.uniform(0.0, 0.1, n)
+        al = rng.uniform(0.02, 0.2, n)
+        t_np = timed(lambda: numpy_contrast_gloss(rd, rs), rep)
+        t_pg = timed(lambda: pgloss.gloss_from_physical(rd, rs, al, errors="status"), rep)
+        row(f"gloss_from_physical, {n:,} paints", "gloss_from_physical (L, c, d + statuses)", t_pg,
+            "numpy eq. 4 (c only)", t_np, "≤ 1")
 
-    m = max(n // 16, 1 << 16)
-    wo64, wi64 = directions(rng, m), directions(rng, m)
-    wo32, wi32 = wo64.astype(np.float32), wi64.astype(np.float32)
-    uniform = pgloss.Physical((0.5, 0.3, 0.1), 0.05, 0.1)
-    per = pgloss.Physical(rng.uniform(0.0, 0.8, (m, 3)), rng.uniform(0.0, 0.1, m),
-                          alpha_x=rng.uniform(0.03, 0.2, m), alpha_y=rng.uniform(0.03, 0.2, m))
-    f32 = np.empty((m, 3), np.float32)
-    f64 = np.empty((m, 3), np.float64)
-    t_u32 = timed(lambda: pgloss.eval(uniform, wo32, wi32, out=f32), rep)
-    t_p32 = timed(lambda: pgloss.eval(per, wo32, wi32, out=f32), rep)
-    t_u64 = timed(lambda: pgloss.eval(uniform, wo64, wi64, out=f64), rep)
-    t_p64 = timed(lambda: pgloss.eval(per, wo64, wi64, out=f64), rep)
-    row(f"eval, {m:,} pairs, float32", "one material per pair", t_p32, "one material for all", t_u32, "≤ 2")
-    row(f"eval, {m:,} pairs, one material", "float64 (vectorised double)", t_u64, "float32", t_u32, "≤ 2")
-    row(f"eval, {m:,} pairs, per-pair materials", "float64 (vectorised double)", t_p64, "float32", t_p32, "≤ 2")
-    t_s32 = timed(lambda: pgloss.sample(uniform, wo32, rng.random((m, 3), dtype=np.float32)), rep)
-    t_s64 = timed(lambda: pgloss.sample(uniform, wo64, rng.random((m, 3))), rep)
-    row(f"sample, {m:,} draws, one material", "float64 (vectorised double)", t_s64, "float32", t_s32, "≤ 2")
+    if args.only != "perceptual":
+        rng = np.random.default_rng([18, 1])  # its own stream: the same data with or without --only
+        m = max(n // 16, 1 << 16)
+        wo64, wi64 = directions(rng, m), directions(rng, m)
+        wo32, wi32 = wo64.astype(np.float32), wi64.astype(np.float32)
+        uniform = pgloss.Physical((0.5, 0.3, 0.1), 0.05, 0.1)
+        fields = (rng.uniform(0.0, 0.8, (m, 3)), rng.uniform(0.0, 0.1, m), rng.uniform(0.03, 0.2, m),
+                  rng.uniform(0.03, 0.2, m))
+
+        def texture() -> pgloss.Physical:
+            return pgloss.Physical(fields[0], fields[1], alpha_x=fields[2], alpha_y=fields[3])
+
+        per = texture()
+        f32 = np.empty((m, 3), np.float32)
+        f32b = np.empty((m, 3), np.float32)
+        f64 = np.empty((m, 3), np.float64)
+        def ev(mat: pgloss.Physical, wo: np.ndarray, wi: np.ndarray, out: np.ndarray) -> Callable[[], object]:
+            return lambda: pgloss.eval(mat, wo, wi, out=out)
+
+        t_p32, t_u32 = paired(ev(per, wo32, wi32, f32), ev(uniform, wo32, wi32, f32b), rep)
+        t_u64, t_u32b = paired(ev(uniform, wo64, wi64, f64), ev(uniform, wo32, wi32, f32), rep)
+        t_p64, t_p32b = paired(ev(per, wo64, wi64, f64), ev(per, wo32, wi32, f32), rep)
+        # The first call on a new texture (it rounds the texture to float, then evaluates), against
+        # the uniform batch; the texture's construction (a copy of its fields) is not timed.
+        t_first, t_u32c = [], []
+        for _ in range(rep):
+            fresh = texture()
+            t0 = time.perf_counter()
+            pgloss.eval(fresh, wo32, wi32, out=f32)
+            t1 = time.perf_counter()
+            pgloss.eval(uniform, wo32, wi32, out=f32b)
+            t_first.append(t1 - t0)
+            t_u32c.append(time.perf_counter() - t1)
+        row(f"eval, {m:,} pairs, float32", "one material per pair", t_p32, "one material for all", t_u32, "≤ 2")
+        row(f"eval, {m:,} pairs, float32", "one material per pair, first call on a new texture",
+            statistics.median(t_first), "one material for all", statistics.median(t_u32c), "")
+        row(f"eval, {m:,} pairs, one material", "float64 (vectorised double)", t_u64, "float32", t_u32b, "≤ 2")
+        row(f"eval, {m:,} pairs, per-pair materials", "float64 (vectorised double)", t_p64, "float32", t_p32b, "≤ 2")
+        u32, u64 = rng.random((m, 3), dtype=np.float32), rng.random((m, 3))
+        t_s64, t_s32 = paired(lambda: pgloss.sample(uniform, wo64, u64), lambda: pgloss.sample(uniform, wo32, u32), rep)
+        row(f"sample, {m:,} draws, one material", "float64 (vectorised double)", t_s64, "float32", t_s32, "≤ 2")
 
     try:
         load = os.getloadavg()

@@ -522,8 +522,11 @@ class Physical(_PaintShape):
 
     The fields broadcast against each other (``rho_d`` without its channel axis): the result
     is a scalar paint when every field is a number (and ``rho_d`` a number or 3 numbers),
-    else an array of paints of the broadcast :attr:`shape`. Array fields are copied: the
-    object is immutable.
+    else an array of paints of the broadcast :attr:`shape`. Array fields are copied and
+    read-only: the object is immutable. As one paint compiles its :class:`Material` once, an
+    array of paints rounds its parameters to float once, on its first :func:`eval`,
+    :func:`pdf`, :func:`eval_pdf` or :func:`sample` call, and keeps them (half the memory of
+    its float64 fields): later calls read them as they are.
 
     A ``Physical`` is a record, like the C struct: it holds any numbers. Whether they make a
     material is decided by the core where they are used — :meth:`material` (and so
@@ -547,7 +550,7 @@ class Physical(_PaintShape):
     ((3,), True)
     """
 
-    __slots__ = ("_rho_d", "_rho_s", "_alpha_x", "_alpha_y", "_normalization", "_material", "_shape")
+    __slots__ = ("_rho_d", "_rho_s", "_alpha_x", "_alpha_y", "_normalization", "_material", "_block", "_shape")
 
     def __init__(self, rho_d: Union[float, Sequence[float], ArrayLike], rho_s: Union[float, ArrayLike],
                  alpha: Optional[Union[float, ArrayLike]] = None, *,
@@ -583,6 +586,7 @@ class Physical(_PaintShape):
         rs = _field(fn, "rho_s", rho_s)
         self._normalization = _normalization(fn, normalization)
         self._material: Optional[Material] = None
+        self._block: Optional[np.ndarray] = None
         rd_shape = rd.shape[1:] if isinstance(rd, np.ndarray) else ()
         shapes = [rd_shape, np.shape(rs), np.shape(ax), np.shape(ay)]
         if not any(shapes):
@@ -613,6 +617,7 @@ class Physical(_PaintShape):
             x.flags.writeable = False
         self._normalization = normalization
         self._material = None
+        self._block = None
         self._set_arrays(tuple(rs.shape), rd3, rs, ax, ay)
         return self
 
@@ -702,6 +707,28 @@ class Physical(_PaintShape):
         else:
             cols = [_flat(self._rho_d[k], shape) for k in range(3)]
         return cols + [_flat(v, shape) for v in (self._rho_s, self._alpha_x, self._alpha_y)]
+
+    def _material_block(self, shape: Tuple[int, ...]) -> np.ndarray:
+        """An array of paints as the core's per-element batches read it (``pgloss_material_array``):
+        a C-contiguous float32 ``(6, n)`` block — ρd r, g, b, ρs, αx, αy, each rounded to float
+        (beyond float range ±inf, which the core reports as NONFINITE) — broadcast to the
+        batch's ``shape`` (n = its size).
+
+        The rounded block of the paints' own shape is built on the first BRDF call and kept, as
+        one paint's :class:`Material` is: the fields are read-only copies (see :class:`Physical`),
+        so it cannot go stale, and a texture evaluated many times is rounded once. It costs half
+        the memory of the float64 fields. A batch of another shape (the paints broadcast against
+        the directions) gets a broadcast copy of it."""
+        block = self._block
+        if block is None:
+            block = _core.material_columns(*self._columns()).reshape((6,) + self.shape)
+            block.flags.writeable = False
+            self._block = block
+        n = int(np.prod(shape, dtype=np.int64))
+        if shape != self.shape:
+            lead = (1,) * (len(shape) - self.ndim)
+            block = np.ascontiguousarray(np.broadcast_to(block.reshape((6,) + lead + self.shape), (6,) + shape))
+        return block.reshape(6, n)
 
     # Conversions ------------------------------------------------------------------------------
     def material(self) -> Material:
@@ -1098,8 +1125,8 @@ def _brdf(function: str, material: Any, wo: Any, wi: Any, lobes: Any, want_f: bo
         statuses = None
     else:
         call = _core.eval_materials_f64 if f64 else _core.eval_materials_f32
-        f, p, statuses, st, idx = call(*arr._columns(shape), int(arr.normalization), mask, o, i, want_f, want_pdf,
-                                       flat_f, flat_p)
+        f, p, statuses, st, idx = call(arr._material_block(shape), int(arr.normalization), mask, o, i, want_f,
+                                       want_pdf, flat_f, flat_p)
     f = (f_out if f_out is not None else f.reshape(shape + (3,))) if want_f else None
     if want_pdf:
         p = p_out if p_out is not None else (float(p[0]) if shape == () else p.reshape(shape))
@@ -1125,8 +1152,8 @@ def eval(material: Union[Physical, Material, Sequence[Physical]], wo: ArrayLike,
     ----------
     material : Physical, sequence of Physical, or Material
         One paint (a ``Physical`` is compiled once and cached), or an array of paints (an
-        array ``Physical``, or a list of them): one material per element, broadcast against
-        the directions' leading shapes.
+        array ``Physical``, rounded to float once and kept, or a list of them): one material
+        per element, broadcast against the directions' leading shapes.
     wo, wi : array_like, shape (..., 3)
         Directions towards the viewer and towards the light, in the shading frame
         (normal = +z), any length; the leading shapes broadcast against each other and
@@ -1254,7 +1281,8 @@ def sample(material: Union[Physical, Material, Sequence[Physical]], wo: ArrayLik
         statuses = None
     else:
         call = _core.sample_materials_f64 if f64 else _core.sample_materials_f32
-        wi, p, w, lobe, statuses, st, idx = call(*arr._columns(shape), int(arr.normalization), mask, o, uu, *flat)
+        wi, p, w, lobe, statuses, st, idx = call(arr._material_block(shape), int(arr.normalization), mask, o, uu,
+                                                 *flat)
     if shape == () and out is None:
         rec = SampleRecord(wi.reshape(3), float(p[0]), w.reshape(3), Lobe(int(lobe[0])))
     else:

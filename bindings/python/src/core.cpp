@@ -404,57 +404,102 @@ py::tuple eval_uniform(const Material &M, unsigned lobes, const py::array_t<T, p
     return py::make_tuple(f, pdf, err.status, err.index);
 }
 
-// One material per element: the six double columns (rho_d r, g, b, rho_s, alpha_x, alpha_y)
-// of the broadcast shape, n each; float: rounded to float chunk by chunk (beyond float range
-// they become ±Inf, which the core reports as NONFINITE, as pgloss_material_init does).
+// One material per element: the (6, n) float32 block of the materials' parameters (rho_d r, g,
+// b, rho_s, alpha_x, alpha_y), already rounded to float as the core's pgloss_material_array
+// holds them (material_columns below; pgloss/__init__.py keeps it on the Physical). The float
+// batch reads it in place; the double batch widens it chunk by chunk (exactly).
 struct Columns {
-    std::array<const double *, 6> p{};
+    const float *p = nullptr;
     size_t n = 0;
 };
 
-Columns columns_of(const std::array<darr, 6> &cols, size_t n) {
-    Columns c;
-    c.n = n;
-    for (size_t k = 0; k < 6; ++k) {
-        if (cols[k].ndim() != 1 || static_cast<size_t>(cols[k].size()) != n)
-            throw std::invalid_argument("pgloss._core: material columns must be flat arrays of the batch's length");
-        c.p[k] = cols[k].data();
-    }
-    return c;
+Columns columns_of(const farr &block, size_t n) {
+    if (block.ndim() != 2 || block.shape(0) != 6 || static_cast<size_t>(block.shape(1)) != n)
+        throw std::invalid_argument("pgloss._core: the material block must be a (6, n) float32 array, n the batch's length");
+    return Columns{block.data(), n};
 }
 
-// One chunk of the material columns in the batch's precision. The parameters are rounded to
-// float in both: a material is a pgloss_material (float parameters, as every C caller's and
-// the scalar double reference's), whatever the directions' precision; the double path widens
-// them again exactly. Beyond float range they become ±Inf, which the core reports as
-// NONFINITE, as pgloss_material_init does.
+// The material's six double columns rounded to float once, as the C API receives them (beyond
+// float range they become ±Inf, which the core reports as NONFINITE, as pgloss_material_init
+// does): the (6, n) float32 block that eval_materials and sample_any read. A material is a
+// pgloss_material (float parameters, as every C caller's and the scalar double reference's),
+// whatever the directions' precision.
+py::array_t<float> material_columns(const std::array<darr, 6> &cols) {
+    const py::ssize_t n = cols[0].size();
+    std::array<const double *, 6> src{};
+    for (size_t k = 0; k < 6; ++k) {
+        if (cols[k].ndim() != 1 || cols[k].size() != n)
+            throw std::invalid_argument("pgloss._core: material columns must be flat arrays of equal length");
+        src[k] = cols[k].data();
+    }
+    const auto count = static_cast<size_t>(n);
+    py::array_t<float> block(std::vector<py::ssize_t>{6, n});
+    float *dst = block.mutable_data();
+    SignalCheck sig;
+    {
+        py::gil_scoped_release nogil;
+        for (size_t base = 0; base < count; base += kSignalStride) {
+            if (base && sig.stop(base)) break;
+            const size_t end = std::min(count, base + kSignalStride);
+            for (size_t k = 0; k < 6; ++k)
+                for (size_t j = base; j < end; ++j) dst[k * count + j] = to_float(src[k][j]);
+        }
+    }
+    sig.raise_if_interrupted();
+    return block;
+}
+
+// One chunk of the material columns in the batch's precision: the block itself (float), or
+// the chunk widened into buf (double).
 template <class T>
 std::array<const T *, 6> material_chunk(const Columns &C, size_t base, size_t m, T *buf) {
     std::array<const T *, 6> mc{};
     for (size_t k = 0; k < 6; ++k) {
-        T *dst = buf + k * kChunk;
-        const double *src = C.p[k] + base;
-        for (size_t j = 0; j < m; ++j) dst[j] = static_cast<T>(to_float(src[j]));
-        mc[k] = dst;
+        const float *src = C.p + k * C.n + base;
+        if constexpr (std::is_same_v<T, float>) {
+            (void)m;
+            (void)buf;
+            mc[k] = src;
+        } else {
+            T *dst = buf + k * kChunk;
+            for (size_t j = 0; j < m; ++j) dst[j] = static_cast<T>(src[j]);
+            mc[k] = dst;
+        }
     }
     return mc;
 }
 
+// The per-element status array, allocated at the first chunk with an error (the chunks before
+// it had none: their zeros are right). Writing statuses halves the loops' speed, and a
+// texture without errors needs none; pgloss/__init__.py gets None then.
+struct LazyStatus {
+    std::vector<signed char> v;
+    signed char *at(size_t n, size_t base) {  // GIL released: no Python objects
+        if (v.empty()) v.assign(n, 0);
+        return v.data() + base;
+    }
+    py::object array() const {  // GIL held
+        if (v.empty()) return py::none();
+        py::array_t<std::int8_t> a(static_cast<py::ssize_t>(v.size()));
+        std::copy(v.begin(), v.end(), reinterpret_cast<signed char *>(a.mutable_data()));
+        return std::move(a);
+    }
+};
+
 template <class T>
-py::tuple eval_materials(const std::array<darr, 6> &cols, int normalization, unsigned lobes,
+py::tuple eval_materials(const farr &block, int normalization, unsigned lobes,
                          const py::array_t<T, py::array::c_style> &wo, const py::array_t<T, py::array::c_style> &wi,
                          bool want_f, bool want_pdf, const py::object &f_out, const py::object &p_out) {
     const size_t n = rows_of(wo, "wo");
     if (rows_of(wi, "wi") != n) throw std::invalid_argument("pgloss._core: wo and wi differ in length");
-    const Columns C = columns_of(cols, n);
+    const Columns C = columns_of(block, n);
     const auto N = static_cast<py::ssize_t>(n);
     auto f = output<T>(want_f ? f_out : py::none(), want_f ? 3 * N : 0,
                        std::vector<py::ssize_t>{want_f ? N : 0, 3}, "f");
     auto pdf = output<T>(want_pdf ? p_out : py::none(), want_pdf ? N : 0, {want_pdf ? N : 0}, "pdf");
-    py::array_t<std::int8_t> status(N);
     const T *o = wo.data(), *i = wi.data();
     T *fp = want_f ? f.mutable_data() : nullptr, *pp = want_pdf ? pdf.mutable_data() : nullptr;
-    auto *sp = reinterpret_cast<signed char *>(status.mutable_data());
+    LazyStatus status;
     FirstError err;
     SignalCheck sig;
     {
@@ -462,7 +507,7 @@ py::tuple eval_materials(const std::array<darr, 6> &cols, int normalization, uns
         std::vector<T> buf(10 * kChunk);
         T *ox = buf.data(), *oy = ox + kChunk, *oz = oy + kChunk, *ix = oz + kChunk, *iy = ix + kChunk,
           *iz = iy + kChunk, *fr = iz + kChunk, *fg = fr + kChunk, *fb = fg + kChunk, *pd = fb + kChunk;
-        std::vector<T> mbuf(6 * kChunk);
+        std::vector<T> mbuf(std::is_same_v<T, float> ? 0 : 6 * kChunk);
         for (size_t base = 0; base < n; base += kChunk) {
             if (sig.stop(base)) break;
             const size_t m = n - base < kChunk ? n - base : kChunk;
@@ -482,28 +527,31 @@ py::tuple eval_materials(const std::array<darr, 6> &cols, int normalization, uns
                         want_f ? pgloss_rgb_out_d{fr, fg, fb} : pgloss_rgb_out_d{nullptr, nullptr, nullptr},
                         want_pdf ? pd : nullptr, status_out);
             };
-            // Without the status array first (writing it halves the loop's speed); a chunk
-            // with an error runs again with it, for the statuses (the outputs are the same).
+            // Without the status array first; a chunk with an error runs again with it, for
+            // the statuses (the outputs are the same).
             int st = call(nullptr);
-            std::fill(sp + base, sp + base + m, st < 0 ? kUnwritten : 0);
-            if (st < 0) st = call(sp + base);
-            if (st < 0 && m > 0 && sp[base] == kUnwritten) {
-                // A whole-call error (nothing written): every element gets it.
-                std::fill(sp + base, sp + base + m, static_cast<signed char>(st));
-                std::fill(fr, fr + 3 * kChunk + kChunk, T(0));
+            if (st < 0) {
+                signed char *sp = status.at(n, base);
+                std::fill(sp, sp + m, kUnwritten);
+                st = call(sp);
+                if (st < 0 && m > 0 && sp[0] == kUnwritten) {
+                    // A whole-call error (nothing written): every element gets it.
+                    std::fill(sp, sp + m, static_cast<signed char>(st));
+                    std::fill(fr, fr + 3 * kChunk + kChunk, T(0));
+                }
+                if (st < 0 && err.status == PGLOSS_OK)
+                    for (size_t j = 0; j < m; ++j)
+                        if (sp[j] < 0) {
+                            err.note(sp[j], static_cast<py::ssize_t>(base + j));
+                            break;
+                        }
             }
             if (want_f) interleave_any(m, fr, fg, fb, fp + 3 * base);
             if (want_pdf) std::copy(pd, pd + m, pp + base);
-            if (st < 0 && err.status == PGLOSS_OK)
-                for (size_t j = 0; j < m; ++j)
-                    if (sp[base + j] < 0) {
-                        err.note(sp[base + j], static_cast<py::ssize_t>(base + j));
-                        break;
-                    }
         }
     }
     sig.raise_if_interrupted();
-    return py::make_tuple(f, pdf, status, err.status, err.index);
+    return py::make_tuple(f, pdf, status.array(), err.status, err.index);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -521,11 +569,10 @@ py::tuple sample_any(const Material *M, const Columns *C, int normalization, uns
     auto weight = output<T>(weight_out, 3 * N, {N, 3}, "weight");
     auto pdf = output<T>(pdf_out, N, {N}, "pdf");
     auto lobe = output<std::uint8_t>(lobe_out, N, {N}, "lobe");
-    py::array_t<std::int8_t> status(C ? N : 0);
+    LazyStatus status;  // per-element materials: the statuses, once a chunk has an error
     const T *o = wo.data(), *uu = u.data();
     T *wp = wi.mutable_data(), *gp = weight.mutable_data(), *pp = pdf.mutable_data();
     std::uint8_t *lp = lobe.mutable_data();
-    auto *sp = reinterpret_cast<signed char *>(status.mutable_data());
     FirstError err;
     SignalCheck sig;
     {
@@ -534,7 +581,7 @@ py::tuple sample_any(const Material *M, const Columns *C, int normalization, uns
         T *ox = buf.data(), *oy = ox + kChunk, *oz = oy + kChunk, *u0 = oz + kChunk, *u1 = u0 + kChunk,
           *u2 = u1 + kChunk, *wx = u2 + kChunk, *wy = wx + kChunk, *wz = wy + kChunk, *pd = wz + kChunk,
           *gr = pd + kChunk, *gg = gr + kChunk, *gb = gg + kChunk;
-        std::vector<T> mbuf(C ? 6 * kChunk : 0);
+        std::vector<T> mbuf(C && !std::is_same_v<T, float> ? 6 * kChunk : 0);
         std::vector<signed char> chunk_status(C ? 0 : kChunk);
         for (size_t base = 0; base < n; base += kChunk) {
             if (sig.stop(base)) break;
@@ -542,7 +589,6 @@ py::tuple sample_any(const Material *M, const Columns *C, int normalization, uns
             deinterleave_any(m, o + 3 * base, ox, oy, oz);
             deinterleave_any(m, uu + 3 * base, u0, u1, u2);
             const T *uc[3] = {u0, u1, u2};
-            signed char *cs = C ? sp + base : chunk_status.data();
             std::array<const T *, 6> mc{};
             if (C) mc = material_chunk<T>(*C, base, m, mbuf.data());
             // As eval_materials: without the status array first, again with it on an error.
@@ -579,8 +625,12 @@ py::tuple sample_any(const Material *M, const Columns *C, int normalization, uns
                 }
             };
             int st = call(nullptr);
-            std::fill(cs, cs + m, st < 0 ? kUnwritten : 0);
-            if (st < 0) st = call(cs);
+            signed char *cs = nullptr;  // this chunk's statuses, on an error only
+            if (st < 0) {
+                cs = C ? status.at(n, base) : chunk_status.data();
+                std::fill(cs, cs + m, kUnwritten);
+                st = call(cs);
+            }
             if (st < 0 && m > 0 && cs[0] == kUnwritten) {
                 std::fill(cs, cs + m, static_cast<signed char>(st));  // a whole-call error: nothing was written
                 std::fill(wx, wx + m, T(0));
@@ -603,7 +653,7 @@ py::tuple sample_any(const Material *M, const Columns *C, int normalization, uns
         }
     }
     sig.raise_if_interrupted();
-    if (C) return py::make_tuple(wi, pdf, weight, lobe, status, err.status, err.index);
+    if (C) return py::make_tuple(wi, pdf, weight, lobe, status.array(), err.status, err.index);
     return py::make_tuple(wi, pdf, weight, lobe, err.status, err.index);
 }
 
@@ -711,17 +761,11 @@ PYBIND11_MODULE(_core, mod) {
             py::arg("want_f"), py::arg("want_pdf"), py::arg("f_out") = py::none(), py::arg("pdf_out") = py::none());
     mod.def("eval_f64", &eval_uniform<double>, py::arg("m"), py::arg("lobes"), py::arg("wo"), py::arg("wi"),
             py::arg("want_f"), py::arg("want_pdf"), py::arg("f_out") = py::none(), py::arg("pdf_out") = py::none());
-    mod.def("eval_materials_f32",
-            [](darr r, darr g, darr b, darr rs, darr ax, darr ay, int norm, unsigned lobes, const farr &wo,
-               const farr &wi, bool want_f, bool want_pdf, py::object f_out, py::object p_out) {
-                return eval_materials<float>({r, g, b, rs, ax, ay}, norm, lobes, wo, wi, want_f, want_pdf, f_out, p_out);
-            });
-    mod.def("eval_materials_f64",
-            [](darr r, darr g, darr b, darr rs, darr ax, darr ay, int norm, unsigned lobes, const f64arr &wo,
-               const f64arr &wi, bool want_f, bool want_pdf, py::object f_out, py::object p_out) {
-                return eval_materials<double>({r, g, b, rs, ax, ay}, norm, lobes, wo, wi, want_f, want_pdf, f_out,
-                                              p_out);
-            });
+    mod.def("material_columns", [](darr r, darr g, darr b, darr rs, darr ax, darr ay) {
+        return material_columns({r, g, b, rs, ax, ay});
+    });
+    mod.def("eval_materials_f32", &eval_materials<float>);
+    mod.def("eval_materials_f64", &eval_materials<double>);
     mod.def(
         "sample_f32",
         [](const Material &M, unsigned lobes, const farr &wo, const farr &u, py::object a, py::object b, py::object c,
@@ -734,17 +778,15 @@ PYBIND11_MODULE(_core, mod) {
            py::object c, py::object d) { return sample_any<double>(&M, nullptr, 0, lobes, wo, u, a, b, c, d); },
         py::arg("m"), py::arg("lobes"), py::arg("wo"), py::arg("u"), py::arg("wi_out") = py::none(),
         py::arg("pdf_out") = py::none(), py::arg("weight_out") = py::none(), py::arg("lobe_out") = py::none());
-    mod.def("sample_materials_f32", [](darr r, darr g, darr b, darr rs, darr ax, darr ay, int norm, unsigned lobes,
-                                       const farr &wo, const farr &u, py::object a, py::object bb, py::object c,
-                                       py::object d) {
-        const Columns C = columns_of({r, g, b, rs, ax, ay}, rows_of(wo, "wo"));
-        return sample_any<float>(nullptr, &C, norm, lobes, wo, u, a, bb, c, d);
+    mod.def("sample_materials_f32", [](const farr &block, int norm, unsigned lobes, const farr &wo, const farr &u,
+                                       py::object a, py::object b, py::object c, py::object d) {
+        const Columns C = columns_of(block, rows_of(wo, "wo"));
+        return sample_any<float>(nullptr, &C, norm, lobes, wo, u, a, b, c, d);
     });
-    mod.def("sample_materials_f64", [](darr r, darr g, darr b, darr rs, darr ax, darr ay, int norm, unsigned lobes,
-                                       const f64arr &wo, const f64arr &u, py::object a, py::object bb, py::object c,
-                                       py::object d) {
-        const Columns C = columns_of({r, g, b, rs, ax, ay}, rows_of(wo, "wo"));
-        return sample_any<double>(nullptr, &C, norm, lobes, wo, u, a, bb, c, d);
+    mod.def("sample_materials_f64", [](const farr &block, int norm, unsigned lobes, const f64arr &wo,
+                                       const f64arr &u, py::object a, py::object b, py::object c, py::object d) {
+        const Columns C = columns_of(block, rows_of(wo, "wo"));
+        return sample_any<double>(nullptr, &C, norm, lobes, wo, u, a, b, c, d);
     });
     // One pgloss_eval_pdf call (the scalar reference: float directions, double inside, float
     // results), as the C tool calls it: python -m pgloss eval / demo print exactly its numbers.
