@@ -49,10 +49,11 @@ PGLOSS__D_FN double unit_d(double *x, double *y, double *z)
  * lie within 2^-20 of 1 (any unit vector rounded to double or to float does) takes
  * 1/|v| = 1 − ε/2 + 3ε²/8 − 5ε³/16, ε = |v|² − 1 (exact; truncation below 0.28 ε⁴ < 2^-81,
  * so within a few ulp like unit_d): no root and no division, which bound the loop otherwise;
- * then every direction is valid and the function returns 1 without writing `valid`.
- * Elsewhere the chunk goes through unit_d (valid[j] > 0 exactly for a valid direction) and
- * the function returns 0. The test is the largest |ε| as int64 bits (a double >= 0 orders as
- * its bits; NaN and Inf are above every finite value), one vpmaxsq per vector on AVX-512. */
+ * then every direction is valid (valid[j] = 1) and the function returns 1, so that the
+ * caller may skip `valid`. Elsewhere the chunk goes through unit_d (valid[j] > 0 exactly for
+ * a valid direction) and it returns 0. The test is the largest |ε| as int64 bits (a double
+ * >= 0 orders as its bits; NaN and Inf are above every finite value), one vpmaxsq per vector
+ * on AVX-512. */
 PGLOSS__D_FN int unit_chunk_d(size_t m, const double *restrict xs, const double *restrict ys,
                               const double *restrict zs, double *restrict nx,
                               double *restrict ny, double *restrict nz, double *restrict valid)
@@ -65,6 +66,7 @@ PGLOSS__D_FN int unit_chunk_d(size_t m, const double *restrict xs, const double 
         nx[j] = x * inv;
         ny[j] = y * inv;
         nz[j] = z * inv;
+        valid[j] = 1.0;
         const double ae = fabs(e);
         int64_t b;
         memcpy(&b, &ae, sizeof b);
@@ -151,7 +153,7 @@ PGLOSS__D_FN mat_ptrs mat_ptrs_of(const pgloss_physical_array *pa)
     return m;
 }
 
-/* A chunk runs in passes over stack arrays: the unit directions (unit_chunk_d), then the lobe.
+/* A chunk runs in passes over stack arrays: the unit directions (unit_chunk_d), the lobe.
  * With one material for the call the lobe's loop writes the outputs (clamped, 0 where invalid)
  * straight to the caller's arrays: it reads only the stack arrays, so the compiler needs no
  * alias check, and an output that is also an input was read in the unit pass before. With
@@ -244,12 +246,12 @@ PGLOSS__D_FN size_t eval_d_loop(const pgloss__consts_d *k, const pgloss_physical
     size_t bad = 0;
     for (size_t base = 0; base < n; base += CHUNK_D) {
         const size_t m = n - base < CHUNK_D ? n - base : CHUNK_D;
-        const int near_o = unit_chunk_d(m, oxs + base, oys + base, ozs + base, in[0], in[1],
-                                        in[2], in[6]);
-        const int near_i = unit_chunk_d(m, ixs + base, iys + base, izs + base, in[3], in[4],
-                                        in[5], in[7]);
+        const int near_o = unit_chunk_d(m, oxs + base, oys + base, ozs + base, in[0],
+                                             in[1], in[2], in[6]);
+        const int near_i = unit_chunk_d(m, ixs + base, iys + base, izs + base, in[3],
+                                             in[4], in[5], in[7]);
         if (near_o & near_i) {
-            /* every direction near-unit, hence valid: `in[6]`, `in[7]` unwritten and unread */
+            /* every direction near-unit, hence valid: `in[6]`, `in[7]` not read */
             if (!per_element) {
                 bad += eval_d_chunk(&kc, &mp, 0, 1, active, norm, want_f, want_p, m, base,
                                     in[0], in[1], in[2], in[3], in[4], in[5], NULL, NULL,
@@ -261,12 +263,6 @@ PGLOSS__D_FN size_t eval_d_loop(const pgloss__consts_d *k, const pgloss_physical
                          in[2], in[3], in[4], in[5], NULL, NULL, out[0], out[1], out[2], out[3],
                          out[4]);
         } else {
-            if (near_o) /* its directions all valid, the other's not: unit_d's convention */
-                for (size_t j = 0; j < m; ++j)
-                    in[6][j] = 1.0;
-            if (near_i)
-                for (size_t j = 0; j < m; ++j)
-                    in[7][j] = 1.0;
             if (!per_element) {
                 bad += eval_d_chunk(&kc, &mp, 0, 0, active, norm, want_f, want_p, m, base,
                                     in[0], in[1], in[2], in[3], in[4], in[5], in[6], in[7],
