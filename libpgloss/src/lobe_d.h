@@ -82,8 +82,9 @@ PGLOSS__D_FN double pgloss__min_pos_d(double x, double hi)
  * Above t = 700 the result is e^-(t − 1021 ln2) · 2^-1021, so that it goes on into the
  * subnormals (relative error there ~1e-13 from rounding the shift, then the subnormal's
  * rounding): the double batches return such values, and e is multiplied by up to ~1e35.
- * Above t = 1416 the result is 0. A NaN t (only where the caller discards the result)
- * gives a finite value. */
+ * Above t = 1416 the result is 0. The lobe's t is never NaN for finite inputs (>= 0, at
+ * worst +Inf); a NaN t gives a finite value, but for a NaN with the sign bit on AVX-512
+ * (PGLOSS__D_MINP), which propagates. */
 PGLOSS__D_FN double pgloss__exp_neg_d(double t)
 {
     const int low = t > 700.0;
