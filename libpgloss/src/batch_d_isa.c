@@ -45,17 +45,20 @@ PGLOSS__D_FN double unit_d(double *x, double *y, double *z)
     return l2 > 0.0 ? l2 : 0.0;
 }
 
-/* The directions of a chunk, made unit, into stack arrays; valid[j] > 0 exactly for a valid
- * one. A chunk whose squared lengths all lie within 2^-20 of 1 (any unit vector rounded to
- * double or to float does) takes 1/|v| = 1 − ε/2 + 3ε²/8 − 5ε³/16, ε = |v|² − 1 (exact;
- * truncation below 0.28 ε⁴ < 2^-81, so within a few ulp like unit_d): no root and no division,
- * which bound the loop otherwise. Elsewhere an element that is not near-unit goes through
- * unit_d. */
-PGLOSS__D_FN void unit_chunk_d(size_t m, const double *restrict xs, const double *restrict ys,
-                               const double *restrict zs, double *restrict nx,
-                               double *restrict ny, double *restrict nz, double *restrict valid)
+/* The directions of a chunk, made unit, into stack arrays. A chunk whose squared lengths all
+ * lie within 2^-20 of 1 (any unit vector rounded to double or to float does) takes
+ * 1/|v| = 1 − ε/2 + 3ε²/8 − 5ε³/16, ε = |v|² − 1 (exact; truncation below 0.28 ε⁴ < 2^-81,
+ * so within a few ulp like unit_d): no root and no division, which bound the loop otherwise;
+ * then every direction is valid (valid[j] = 1) and the function returns 1, so that the
+ * caller may skip `valid`. Elsewhere the chunk goes through unit_d (valid[j] > 0 exactly for
+ * a valid direction) and it returns 0. The test is the largest |ε| as int64 bits (a double
+ * >= 0 orders as its bits; NaN and Inf are above every finite value), one vpmaxsq per vector
+ * on AVX-512. */
+PGLOSS__D_FN int unit_chunk_d(size_t m, const double *restrict xs, const double *restrict ys,
+                              const double *restrict zs, double *restrict nx,
+                              double *restrict ny, double *restrict nz, double *restrict valid)
 {
-    size_t far = 0;
+    int64_t far = 0;
     for (size_t j = 0; j < m; ++j) {
         const double x = xs[j], y = ys[j], z = zs[j];
         const double e = (x * x + y * y + z * z) - 1.0;
@@ -64,10 +67,16 @@ PGLOSS__D_FN void unit_chunk_d(size_t m, const double *restrict xs, const double
         ny[j] = y * inv;
         nz[j] = z * inv;
         valid[j] = 1.0;
-        far += !(fabs(e) <= 0x1p-20); /* NaN and Inf included */
+        const double ae = fabs(e);
+        int64_t b;
+        memcpy(&b, &ae, sizeof b);
+        far = b > far ? b : far;
     }
-    if (far == 0)
-        return;
+    const double lim = 0x1p-20;
+    int64_t lim_bits;
+    memcpy(&lim_bits, &lim, sizeof lim_bits);
+    if (far <= lim_bits)
+        return 1;
     /* some direction is not near-unit: the chunk again through unit_d, which gives the near-unit
      * ones the same bits as above (so an element's result does not depend on its chunk) */
     for (size_t j = 0; j < m; ++j) {
@@ -77,11 +86,12 @@ PGLOSS__D_FN void unit_chunk_d(size_t m, const double *restrict xs, const double
         ny[j] = y;
         nz[j] = z;
     }
+    return 0;
 }
 
 PGLOSS__D_FN double clamp_max(double v)
 {
-    return v < (double)FLT_MAX ? v : (double)FLT_MAX;
+    return PGLOSS__D_MINP(v, (double)FLT_MAX);
 }
 
 /* pgloss_material_init's checks on a double parameter set (|v| > FLT_MAX counts as
@@ -143,45 +153,64 @@ PGLOSS__D_FN mat_ptrs mat_ptrs_of(const pgloss_physical_array *pa)
     return m;
 }
 
-/* A chunk runs in three passes over stack arrays: the unit directions (unit_chunk_d), the
- * lobe, and the outputs written out (clamped, 0 where invalid). With its inputs and outputs
- * local, the lobe's loop holds no possible alias for the compiler to check at run time (its
- * versioned loops took the scalar path otherwise); and no pass is a plain copy, which GCC
- * would make a `rep movsq` (slow on AMD cores: 40 % of the loop's time, perf). */
+/* A chunk runs in passes over stack arrays: the unit directions (unit_chunk_d), the lobe.
+ * With one material for the call the lobe's loop writes the outputs (clamped, 0 where invalid)
+ * straight to the caller's arrays: it reads only the stack arrays, so the compiler needs no
+ * alias check, and an output that is also an input was read in the unit pass before. With
+ * one material per element the loop also reads the material arrays, which an output may
+ * share; there it writes stack arrays and a third pass writes them out. No pass is a plain
+ * copy, which GCC would make a `rep movsq` (slow on AMD cores: 40 % of the loop's time, perf). */
 #define CHUNK_D 256
 
-PGLOSS__D_FN void eval_d_chunk(const pgloss__consts_d *kc, const mat_ptrs *mp,
-                               const int per_element, const unsigned active, const int norm,
-                               const int want_f, const int want_p, size_t m, size_t base,
-                               const double *restrict oxs, const double *restrict oys,
-                               const double *restrict ozs, const double *restrict ixs,
-                               const double *restrict iys, const double *restrict izs,
-                               const double *restrict vos, const double *restrict vis,
-                               double *restrict fr, double *restrict fg, double *restrict fb,
-                               double *restrict pdf, double *restrict oks)
+PGLOSS__D_FN size_t eval_d_chunk(const pgloss__consts_d *kc, const mat_ptrs *mp,
+                                 const int per_element, const int all_valid,
+                                 const unsigned active, const int norm,
+                                 const int want_f, const int want_p, size_t m, size_t base,
+                                 const double *restrict oxs, const double *restrict oys,
+                                 const double *restrict ozs, const double *restrict ixs,
+                                 const double *restrict iys, const double *restrict izs,
+                                 const double *restrict vos, const double *restrict vis,
+                                 double *restrict fr, double *restrict fg, double *restrict fb,
+                                 double *restrict pdf, double *restrict oks)
 {
+    size_t bad = 0;
     for (size_t j = 0; j < m; ++j) {
         double mat_ok;
         const pgloss__consts_d kj =
             consts_at_d(kc, mp, per_element, active, norm, base + j, &mat_ok);
-        const double vo = vos[j], vi = vis[j];
+        /* all_valid (a constant of the instance): every direction of the chunk near-unit */
+        const double vo = all_valid ? 1.0 : vos[j], vi = all_valid ? 1.0 : vis[j];
         const double v = vo < vi ? vo : vi;
-        oks[j] = v < mat_ok ? v : mat_ok; /* > 0 for a valid element */
         double f[3], p;
         pgloss__lobe_d(&kj, active, norm, oxs[j], oys[j], ozs[j], ixs[j], iys[j], izs[j], want_f,
                        want_p, f, &p);
-        if (want_f) {
-            fr[j] = f[0];
-            fg[j] = f[1];
-            fb[j] = f[2];
+        if (per_element) {
+            oks[j] = v < mat_ok ? v : mat_ok; /* > 0 for a valid element */
+            if (want_f) {
+                fr[j] = f[0];
+                fg[j] = f[1];
+                fb[j] = f[2];
+            }
+            if (want_p)
+                pdf[j] = p;
+        } else {
+            /* the outputs, at most FLT_MAX as in every precision (brdf.h), 0 if invalid */
+            const int ok = v > 0.0;
+            if (want_f) {
+                fr[j] = ok ? clamp_max(f[0]) : 0.0;
+                fg[j] = ok ? clamp_max(f[1]) : 0.0;
+                fb[j] = ok ? clamp_max(f[2]) : 0.0;
+            }
+            if (want_p)
+                pdf[j] = ok ? clamp_max(p) : 0.0;
+            bad += !ok;
         }
-        if (want_p)
-            pdf[j] = p;
     }
+    return bad;
 }
 
-/* The outputs, at most FLT_MAX as in every precision (brdf.h) and 0 for an invalid element,
- * written out in one pass; returns the number of invalid elements. */
+/* The per-element outputs written out in one pass, as eval_d_chunk writes them for one
+ * material; returns the number of invalid elements. */
 PGLOSS__D_FN size_t write_out_d(size_t m, const int want_f, const int want_p,
                                 const double *restrict oks, const double *restrict v0,
                                 const double *restrict v1, const double *restrict v2,
@@ -217,14 +246,37 @@ PGLOSS__D_FN size_t eval_d_loop(const pgloss__consts_d *k, const pgloss_physical
     size_t bad = 0;
     for (size_t base = 0; base < n; base += CHUNK_D) {
         const size_t m = n - base < CHUNK_D ? n - base : CHUNK_D;
-        unit_chunk_d(m, oxs + base, oys + base, ozs + base, in[0], in[1], in[2], in[6]);
-        unit_chunk_d(m, ixs + base, iys + base, izs + base, in[3], in[4], in[5], in[7]);
-        eval_d_chunk(&kc, &mp, per_element, active, norm, want_f, want_p, m, base, in[0], in[1],
-                     in[2], in[3], in[4], in[5], in[6], in[7], out[0], out[1], out[2], out[3],
-                     out[4]);
-        bad += write_out_d(m, want_f, want_p, out[4], out[0], out[1], out[2], out[3], want_f ? fr + base : NULL,
-                           want_f ? fg + base : NULL, want_f ? fb + base : NULL,
-                           want_p ? pdf + base : NULL);
+        const int near_o = unit_chunk_d(m, oxs + base, oys + base, ozs + base, in[0],
+                                             in[1], in[2], in[6]);
+        const int near_i = unit_chunk_d(m, ixs + base, iys + base, izs + base, in[3],
+                                             in[4], in[5], in[7]);
+        if (near_o & near_i) {
+            /* every direction near-unit, hence valid: `in[6]`, `in[7]` not read */
+            if (!per_element) {
+                bad += eval_d_chunk(&kc, &mp, 0, 1, active, norm, want_f, want_p, m, base,
+                                    in[0], in[1], in[2], in[3], in[4], in[5], NULL, NULL,
+                                    want_f ? fr + base : NULL, want_f ? fg + base : NULL,
+                                    want_f ? fb + base : NULL, want_p ? pdf + base : NULL, NULL);
+                continue;
+            }
+            eval_d_chunk(&kc, &mp, 1, 1, active, norm, want_f, want_p, m, base, in[0], in[1],
+                         in[2], in[3], in[4], in[5], NULL, NULL, out[0], out[1], out[2], out[3],
+                         out[4]);
+        } else {
+            if (!per_element) {
+                bad += eval_d_chunk(&kc, &mp, 0, 0, active, norm, want_f, want_p, m, base,
+                                    in[0], in[1], in[2], in[3], in[4], in[5], in[6], in[7],
+                                    want_f ? fr + base : NULL, want_f ? fg + base : NULL,
+                                    want_f ? fb + base : NULL, want_p ? pdf + base : NULL, NULL);
+                continue;
+            }
+            eval_d_chunk(&kc, &mp, 1, 0, active, norm, want_f, want_p, m, base, in[0], in[1],
+                         in[2], in[3], in[4], in[5], in[6], in[7], out[0], out[1], out[2], out[3],
+                         out[4]);
+        }
+        bad += write_out_d(m, want_f, want_p, out[4], out[0], out[1], out[2], out[3],
+                           want_f ? fr + base : NULL, want_f ? fg + base : NULL,
+                           want_f ? fb + base : NULL, want_p ? pdf + base : NULL);
     }
     return bad;
 }

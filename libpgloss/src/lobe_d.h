@@ -33,39 +33,81 @@
 #define PGLOSS__D_PI 3.14159265358979323846
 #define PGLOSS__D_INV_PI 0.31830988618379067154
 
-/* exp(x) for x <= 0 (x = -tan²δ/α², the specular exponent), inline, free of libm's call, its
+/* max(x, lo) and min(x, hi) for a bound > 0 and x not NaN, in the lobe and the exponential:
+ * on AVX-512, one vpmaxsq/vpminsq on the bits (a double > 0 orders as its bits do as int64,
+ * and every negative double or −0 has the sign bit, so it is below any positive one as
+ * int64 too: the same result as the ternary, bit for bit), where GCC makes the ternary a
+ * compare and a blend (it may not assume the operands are not NaN). Elsewhere, and in the
+ * scalar functions, PGLOSS__D_MAX: 64-bit integer max is a compare and a blend on AVX2 and
+ * is not an SSE2 instruction. */
+#if defined(__AVX512F__)
+PGLOSS__D_FN double pgloss__max_pos_d(double x, double lo)
+{
+    int64_t a, b;
+    memcpy(&a, &x, sizeof a);
+    memcpy(&b, &lo, sizeof b);
+    const int64_t m = a > b ? a : b;
+    double r;
+    memcpy(&r, &m, sizeof r);
+    return r;
+}
+PGLOSS__D_FN double pgloss__min_pos_d(double x, double hi)
+{
+    int64_t a, b;
+    memcpy(&a, &x, sizeof a);
+    memcpy(&b, &hi, sizeof b);
+    const int64_t m = a < b ? a : b;
+    double r;
+    memcpy(&r, &m, sizeof r);
+    return r;
+}
+#define PGLOSS__D_MAXP(x, lo) pgloss__max_pos_d(x, lo)
+#define PGLOSS__D_MINP(x, hi) pgloss__min_pos_d(x, hi)
+#else
+#define PGLOSS__D_MAXP(x, lo) PGLOSS__D_MAX(x, lo)
+#define PGLOSS__D_MINP(x, hi) ((x) < (hi) ? (x) : (hi))
+#endif
+
+/* e^-t for t >= 0 (t = tan²δ/α², the specular exponent), inline, free of libm's call, its
  * special cases and of a table (a gather, which the vectoriser does not emit on every ISA):
- * x = n ln2 + r (Cody–Waite: ln2_hi has 32 significant bits, so n ln2_hi is exact for
- * |n| <= 1022), |r| <= ln2/2, e^r by its degree-12 Taylor polynomial in Estrin's scheme
- * (truncation < 0.347^13/13! < 3e-16), times 2^n built in the exponent bits (the rounding
- * trick leaves n in the low bits of x/ln2 + 1.5·2^52). Within 2 ulp on the normal range.
- * Below x = -700 the result is exp(x + 1021 ln2) · 2^-1021, so that it goes on into the
+ * t = m ln2 + s (Cody–Waite: ln2_hi has 32 significant bits, so m ln2_hi is exact for
+ * m <= 1022), |s| <= ln2/2 (+ 2^-40), e^-s by a degree-11 polynomial in Estrin's scheme whose
+ * constant and linear coefficients are 1 (so e^-s = 1 − s + ... near s = 0), the others a
+ * relative minimax fit of e^r on |r| <= 0.3466 (Remez in 50 digits; the rounded polynomial is
+ * within 1.1e-17 relative, 0.1 ulp, where the degree-12 Taylor polynomial it replaces was
+ * within 3e-16; docs/kernels.md), times 2^-m built in the exponent bits (the rounding trick
+ * leaves m in the low bits of t/ln2 + 1.5·2^52). Within 2.5 ulp on the normal range against
+ * long double expl (tests/test_exp_d.cpp: max 2.09 ulp over 2·10^6 arguments; the rounding
+ * of the evaluation, not the fit, is most of it).
+ * Above t = 700 the result is e^-(t − 1021 ln2) · 2^-1021, so that it goes on into the
  * subnormals (relative error there ~1e-13 from rounding the shift, then the subnormal's
  * rounding): the double batches return such values, and e is multiplied by up to ~1e35.
- * Below x = -1416 the result is 0. A NaN x (only where the caller discards the result)
- * gives a finite value. */
-PGLOSS__D_FN double pgloss__exp_neg_d(double x)
+ * Above t = 1416 the result is 0. The lobe's t is never NaN for finite inputs (>= 0, at
+ * worst +Inf); a NaN t gives a finite value, but for a NaN with the sign bit on AVX-512
+ * (PGLOSS__D_MINP), which propagates. */
+PGLOSS__D_FN double pgloss__exp_neg_d(double t)
 {
-    const int low = x < -700.0;
-    double y = low ? x + 707.70327135170422 : x; /* + 1021 ln2 */
-    y = PGLOSS__D_MAX(y, -708.0);
+    const int low = t > 700.0;
+    double y = low ? t - 707.70327135170422 : t; /* − 1021 ln2 */
+    y = PGLOSS__D_MINP(y, 708.0);
     const double shift = 0x1.8p52; /* (v + shift) - shift = round(v) */
-    const double nd = y * 0x1.71547652b82fep0 + shift;
-    const double n = nd - shift;
-    const double r = (y - n * 0x1.62e42feep-1) - n * 0x1.a39ef35793c76p-33;
-    uint64_t nbits, sbits_shift;
-    memcpy(&nbits, &nd, sizeof nbits);
+    const double md = y * 0x1.71547652b82fep0 + shift;
+    const double m = md - shift;
+    const double s = (y - m * 0x1.62e42feep-1) - m * 0x1.a39ef35793c76p-33;
+    uint64_t mbits, sbits_shift;
+    memcpy(&mbits, &md, sizeof mbits);
     memcpy(&sbits_shift, &shift, sizeof sbits_shift);
-    const uint64_t sbits = (nbits - sbits_shift + 1023u) << 52;
+    const uint64_t sbits = (sbits_shift + 1023u - mbits) << 52; /* 2^-m */
     double scale;
     memcpy(&scale, &sbits, sizeof scale);
-    const double r2 = r * r, r4 = r2 * r2, r8 = r4 * r4;
-    const double p01 = 1.0 + r, p23 = 0.5 + r * (1.0 / 6.0);
-    const double p45 = 1.0 / 24.0 + r * (1.0 / 120.0), p67 = 1.0 / 720.0 + r * (1.0 / 5040.0);
-    const double p89 = 1.0 / 40320.0 + r * (1.0 / 362880.0);
-    const double pab = 1.0 / 3628800.0 + r * (1.0 / 39916800.0);
-    const double p = ((p01 + r2 * p23) + r4 * (p45 + r2 * p67)) +
-                     r8 * ((p89 + r2 * pab) + r4 * (1.0 / 479001600.0));
+    /* e^r at r = −s: the odd coefficients negated */
+    const double s2 = s * s, s4 = s2 * s2, s8 = s4 * s4;
+    const double p01 = 1.0 - s, p23 = 0x1.000000000000ap-1 - s * 0x1.55555555554fap-3;
+    const double p45 = 0x1.5555555550880p-5 - s * 0x1.1111111127bd4p-7;
+    const double p67 = 0x1.6c16c18429335p-10 - s * 0x1.a01a012a5c042p-13;
+    const double p89 = 0x1.a0199a0ee7035p-16 - s * 0x1.71df254c77156p-19;
+    const double pab = 0x1.28ad706015ad7p-22 - s * 0x1.ad7f71e4d6022p-26;
+    const double p = ((p01 + s2 * p23) + s4 * (p45 + s2 * p67)) + s8 * (p89 + s2 * pab);
     return (p * scale) * (low ? 0x1p-1021 : 1.0);
 }
 
@@ -160,18 +202,18 @@ PGLOSS__D_FN void pgloss__lobe_d(const pgloss__consts_d *k, const unsigned activ
     if (active & PGLOSS_LOBE_SPECULAR) {
         const double hx = ox + ix, hy = oy + iy, hz = oz + iz;
         const double ex = hx * k->inv_ax, ey = hy * k->inv_ay;
-        const double ci = PGLOSS__D_MAX(iz, (double)PGLOSS_COS_MIN);
-        const double co = PGLOSS__D_MAX(oz, (double)PGLOSS_COS_MIN);
+        const double ci = PGLOSS__D_MAXP(iz, (double)PGLOSS_COS_MIN);
+        const double co = PGLOSS__D_MAXP(oz, (double)PGLOSS_COS_MIN);
         const double hzc = ci + co;
         /* hz > 0 where the result is kept; elsewhere any value is discarded */
-        const double hzt = PGLOSS__D_MAX(hz, PGLOSS__D_HZ_MIN);
+        const double hzt = PGLOSS__D_MAXP(hz, PGLOSS__D_HZ_MIN);
         const double w = norm == PGLOSS_NORM_WARD_DUR ? ci * co
                          : norm == PGLOSS_NORM_BOUNDED ? 1.0
                                                        : sqrt(ci * co);
         const double r = 1.0 / ((hzt * hzc) * w);
         const double inv_hz = (r * hzc) * w, inv_hzc = (r * hzt) * w;
         /* ((t · 1/hz) · 1/hz): t = 0 never meets an infinite factor */
-        const double e = pgloss__exp_neg_d(-(((ex * ex + ey * ey) * inv_hz) * inv_hz));
+        const double e = pgloss__exp_neg_d(((ex * ex + ey * ey) * inv_hz) * inv_hz);
         const double hh = hx * hx + hy * hy + hz * hz;
         const double inv_hzc3 = (inv_hzc * inv_hzc) * inv_hzc;
         if (want_f) {
