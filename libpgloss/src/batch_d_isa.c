@@ -282,12 +282,13 @@ PGLOSS__D_FN double clamp_u_d(double u)
     return u > 0.0 ? (u < ONE_MINUS_EPS_D ? u : ONE_MINUS_EPS_D) : 0.0;
 }
 
-/* The sampler's chunk: half the eval chunk, as it keeps about thirty arrays on the stack. */
 #if defined(__GNUC__) || defined(__clang__)
 #define PGLOSS__D_NOINLINE __attribute__((noinline))
 #else
 #define PGLOSS__D_NOINLINE
 #endif
+
+/* The sampler's chunk: half the eval chunk, as it keeps about thirty arrays on the stack. */
 #define CHUNK_S 128
 
 /* Per-element constants of a chunk (what pgloss__consts_d_of gives for element j's material)
@@ -384,7 +385,8 @@ PGLOSS__D_FN void derive_chunk_d(const mat_ptrs *mp, const unsigned active, cons
 /* pgloss_sample over the arrays, in chunks of passes over stack arrays (as eval_d_loop and
  * the float sample_loop): the random numbers clamped and checked, wo made unit, the
  * elements' constants (per_element), both lobes' directions drawn and one selected, the drawn
- * direction made unit, the lobe at it, the outputs. Every pass is branch-free and vectorises;
+ * direction made unit, the lobe at it, the outputs. Every pass is branch-free and vectorises
+ * (GCC 12 leaves the per-element constants scalar for some lobe sets: docs/kernels.md);
  * every input of a chunk is read before any of its outputs is written (so an output may be
  * its element's input). The rules are pgloss_sample's: an invalid element (random number
  * NaN, wo zero or not finite, material invalid) is drawn as (0, 0, 1) with lobe NONE and
