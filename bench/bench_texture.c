@@ -63,6 +63,10 @@ typedef struct data {
     pgloss_batch_options opt;
     float *fr, *fg, *fb, *pdf;
     double *dr, *dg, *db, *dpdf;
+    /* sampling: random numbers and the directions drawn */
+    float *u[3], *sw[3];
+    double *ud[3], *swd[3];
+    unsigned char *lobe;
     /* perceptual */
     double *L, *a, *b, *c, *d, *out[6];
     signed char *status;
@@ -101,6 +105,15 @@ static void make_data(data *D, size_t n)
     D->b = xmalloc(n * sizeof(double)), D->c = xmalloc(n * sizeof(double));
     D->d = xmalloc(n * sizeof(double));
     D->status = xmalloc(n);
+    D->lobe = xmalloc(n);
+    for (int k = 0; k < 3; ++k) {
+        D->u[k] = xmalloc(n * sizeof(float)), D->sw[k] = xmalloc(n * sizeof(float));
+        D->ud[k] = xmalloc(n * sizeof(double)), D->swd[k] = xmalloc(n * sizeof(double));
+        for (size_t j = 0; j < n; ++j) {
+            D->u[k][j] = (float)urand(&s);
+            D->ud[k][j] = D->u[k][j];
+        }
+    }
     for (size_t j = 0; j < n; ++j) {
         const double v[6] = {0.05 + 0.6 * urand(&s), 0.05 + 0.6 * urand(&s), 0.05 + 0.6 * urand(&s),
                              0.1 * urand(&s), 0.02 + 0.2 * urand(&s), 0.0};
@@ -182,6 +195,48 @@ static void run_materials_d(void *ctx)
     const pgloss_rgb_out_d f = {D->dr, D->dg, D->db};
     const pgloss_physical_array m = mats_d(D);
     pgloss_eval_pdf_batch_materials_d_ex(&D->opt, &m, PGLOSS_LOBE_ALL, D->n, wo, wi, f, D->dpdf, NULL);
+}
+
+static void run_sample_f(void *ctx)
+{
+    data *D = ctx;
+    const pgloss_vec3_array wo = {D->o[0], D->o[1], D->o[2]};
+    const pgloss_vec3_out wi = {D->sw[0], D->sw[1], D->sw[2]};
+    const pgloss_rgb_out w = {D->fr, D->fg, D->fb};
+    pgloss_sample_batch_ex(&D->opt, &D->mat, PGLOSS_LOBE_ALL, D->n, wo, D->u[0], D->u[1], D->u[2], wi,
+                           D->pdf, w, D->lobe);
+}
+
+static void run_sample_d(void *ctx)
+{
+    data *D = ctx;
+    const pgloss_vec3_array_d wo = {D->od[0], D->od[1], D->od[2]};
+    const pgloss_vec3_out_d wi = {D->swd[0], D->swd[1], D->swd[2]};
+    const pgloss_rgb_out_d w = {D->dr, D->dg, D->db};
+    pgloss_sample_batch_d_ex(&D->opt, &D->mat, PGLOSS_LOBE_ALL, D->n, wo, D->ud[0], D->ud[1], D->ud[2],
+                             wi, D->dpdf, w, D->lobe, NULL);
+}
+
+static void run_sample_materials_f(void *ctx)
+{
+    data *D = ctx;
+    const pgloss_vec3_array wo = {D->o[0], D->o[1], D->o[2]};
+    const pgloss_vec3_out wi = {D->sw[0], D->sw[1], D->sw[2]};
+    const pgloss_rgb_out w = {D->fr, D->fg, D->fb};
+    const pgloss_material_array m = mats_f(D);
+    pgloss_sample_batch_materials_ex(&D->opt, &m, PGLOSS_LOBE_ALL, D->n, wo, D->u[0], D->u[1], D->u[2],
+                                     wi, D->pdf, w, D->lobe, NULL);
+}
+
+static void run_sample_materials_d(void *ctx)
+{
+    data *D = ctx;
+    const pgloss_vec3_array_d wo = {D->od[0], D->od[1], D->od[2]};
+    const pgloss_vec3_out_d wi = {D->swd[0], D->swd[1], D->swd[2]};
+    const pgloss_rgb_out_d w = {D->dr, D->dg, D->db};
+    const pgloss_physical_array m = mats_d(D);
+    pgloss_sample_batch_materials_d_ex(&D->opt, &m, PGLOSS_LOBE_ALL, D->n, wo, D->ud[0], D->ud[1],
+                                       D->ud[2], wi, D->dpdf, w, D->lobe, NULL);
 }
 
 /* ---- perceptual ------------------------------------------------------------------------- */
@@ -271,6 +326,12 @@ int main(int argc, char **argv)
     printf("| one material per texel: A float, B double | %.2f | %.2f | %.2f |\n", a, b, b / a);
     paired(run_uniform_f, &D, run_materials_d, &D, &a, &b);
     printf("| A float uniform, B double per texel | %.2f | %.2f | %.2f |\n\n", a, b, b / a);
+
+    printf("| sample (wi, pdf, weight, lobe), WARD | A ns | B ns | B / A |\n|---|---:|---:|---:|\n");
+    paired(run_sample_f, &D, run_sample_d, &D, &a, &b);
+    printf("| uniform material: A float, B double | %.2f | %.2f | %.2f |\n", a, b, b / a);
+    paired(run_sample_materials_f, &D, run_sample_materials_d, &D, &a, &b);
+    printf("| one material per texel: A float, B double | %.2f | %.2f | %.2f |\n\n", a, b, b / a);
 
     printf("| perceptual (double) | A: pgloss batch, ns | B: bare C loop, no checks, ns | A / B |\n|---|---:|---:|---:|\n");
     paired(run_pfp, &D, run_bare_pfp, &D, &a, &b);

@@ -5,8 +5,8 @@
  * material for the call or one per element (its constants formed inside the loop by
  * pgloss__consts_d_of). Compiled once per ISA (libpgloss/CMakeLists.txt, PGLOSS_ISA);
  * batch_materials.c picks one at run time. The eval/pdf loop is branch-free and vectorises
- * (the exponential's table becomes a gather on AVX2 and AVX-512); the sampler calls log1p
- * and stays a scalar loop. */
+ * (the exponential's table becomes a gather on AVX2 and AVX-512); so does the sampler, chunk
+ * by chunk (its maps in lobe_d.h are branch-free, log1p included). */
 #include "batch_internal.h"
 #include "lobe_d.h"
 
@@ -325,7 +325,7 @@ size_t EVAL_PDF_D_FN(const pgloss__consts_d *k, const pgloss_physical_array *pa,
     return eval_d_outputs(k, NULL, 0, active, norm, n, wo, wi, f, pdf);
 }
 
-/* ---- sampling: pgloss_sample in double, element by element ------------------------------ */
+/* ---- sampling: pgloss_sample in double, chunk by chunk ------------------------------------ */
 
 #define ONE_MINUS_EPS_D 0x1.fffffep-1 /* 1 - 2^-24, as the float paths (brdf.h) */
 
@@ -334,57 +334,207 @@ PGLOSS__D_FN double clamp_u_d(double u)
     return u > 0.0 ? (u < ONE_MINUS_EPS_D ? u : ONE_MINUS_EPS_D) : 0.0;
 }
 
+#if defined(__GNUC__) || defined(__clang__)
+#define PGLOSS__D_NOINLINE __attribute__((noinline))
+#else
+#define PGLOSS__D_NOINLINE
+#endif
+
+/* The sampler's chunk: half the eval chunk, as it keeps about thirty arrays on the stack. */
+#define CHUNK_S 128
+
+/* Per-element constants of a chunk (what pgloss__consts_d_of gives for element j's material)
+ * and whether the element has an active lobe (1.0 or 0.0). */
+typedef struct chunk_consts_d {
+    double fd0[CHUNK_S], fd1[CHUNK_S], fd2[CHUNK_S], spec[CHUNK_S], iax[CHUNK_S], iay[CHUNK_S];
+    double ps[CHUNK_S], pd[CHUNK_S], pdf_scale[CHUNK_S], ax[CHUNK_S], ay[CHUNK_S], has[CHUNK_S];
+} chunk_consts_d;
+
+/* Element j's constants from the chunk's arrays (per_element) or the call's. */
+PGLOSS__D_FN pgloss__consts_d consts_of_chunk_d(const pgloss__consts_d *kc,
+                                                const chunk_consts_d *restrict cc,
+                                                const int per_element, const unsigned active,
+                                                size_t j)
+{
+    if (!per_element)
+        return *kc;
+    pgloss__consts_d r;
+    r.fd[0] = cc->fd0[j];
+    r.fd[1] = cc->fd1[j];
+    r.fd[2] = cc->fd2[j];
+    r.spec_scale = cc->spec[j];
+    r.inv_ax = cc->iax[j];
+    r.inv_ay = cc->iay[j];
+    r.ps = cc->ps[j];
+    r.pd = cc->pd[j];
+    r.pdf_scale = cc->pdf_scale[j];
+    r.alpha_x = cc->ax[j];
+    r.alpha_y = cc->ay[j];
+    r.active = active;
+    return r;
+}
+
+/* The outputs of a chunk: wi as drawn, and where the sample stands (ok > 0: drawn, wo above
+ * the horizon, wo·h > 0 for a specular draw, wi not zero) pdf and weight = f cosθi / pdf
+ * at the unit wi, at most FLT_MAX; a zero pdf is a rejected sample (weight 0). Out of line:
+ * inlined into the sampler, GCC 12 finds no vector type for its loads and leaves it scalar. */
+static PGLOSS__D_NOINLINE void write_sample_d(size_t m, const double *restrict oks,
+                                 const double *restrict vis, const double *restrict wx,
+                                 const double *restrict wy, const double *restrict wz,
+                                 const double *restrict iz, const double *restrict fr,
+                                 const double *restrict fg, const double *restrict fb,
+                                 const double *restrict pr, double *restrict ox_,
+                                 double *restrict oy_, double *restrict oz_,
+                                 double *restrict pdf, double *restrict gr,
+                                 double *restrict gg, double *restrict gb)
+{
+    for (size_t j = 0; j < m; ++j) {
+        /* every load unconditional, the selects flat: GCC 12 if-converts nothing else here */
+        const double okj = oks[j], vij = vis[j], pj = pr[j], izj = iz[j];
+        double p = okj > 0.0 ? pj : 0.0;
+        p = vij > 0.0 ? p : 0.0;
+        const int pos = p > 0.0;
+        const double r = izj / (pos ? p : 1.0);
+        ox_[j] = wx[j];
+        oy_[j] = wy[j];
+        oz_[j] = wz[j];
+        pdf[j] = pos ? clamp_max(p) : 0.0;
+        gr[j] = pos ? clamp_max(fr[j] * r) : 0.0;
+        gg[j] = pos ? clamp_max(fg[j] * r) : 0.0;
+        gb[j] = pos ? clamp_max(fb[j] * r) : 0.0;
+    }
+}
+
+/* The constants of elements [base, base + m) into the chunk (per-element materials). */
+PGLOSS__D_FN void derive_chunk_d(const mat_ptrs *mp, const unsigned active, const int norm,
+                                 size_t m, size_t base, chunk_consts_d *restrict cc)
+{
+    /* the chunk's pointers in a local copy: through *mp, GCC 12 finds no vector type for the
+     * loads */
+    const mat_ptrs lm = {mp->r + base, mp->g + base, mp->b + base,
+                         mp->s + base, mp->ax + base, mp->ay + base};
+    for (size_t j = 0; j < m; ++j) {
+        double mat_ok;
+        const pgloss__consts_d kj = consts_at_d(NULL, &lm, 1, active, norm, j, &mat_ok);
+        cc->fd0[j] = kj.fd[0];
+        cc->fd1[j] = kj.fd[1];
+        cc->fd2[j] = kj.fd[2];
+        cc->spec[j] = kj.spec_scale;
+        cc->iax[j] = kj.inv_ax;
+        cc->iay[j] = kj.inv_ay;
+        cc->ps[j] = kj.ps;
+        cc->pd[j] = kj.pd;
+        cc->pdf_scale[j] = kj.pdf_scale;
+        cc->ax[j] = kj.alpha_x;
+        cc->ay[j] = kj.alpha_y;
+        /* an active lobe exactly where Ps > 0 or 1 − Ps > 0 (pgloss__lobe_probs_d;
+         * none for an invalid material, which is black) */
+        const double h = kj.pd > 0.0 ? mat_ok : 0.0;
+        cc->has[j] = kj.ps > 0.0 ? mat_ok : h;
+    }
+}
+
+/* pgloss_sample over the arrays, in chunks of passes over stack arrays (as eval_d_loop and
+ * the float sample_loop): the random numbers clamped and checked, wo made unit, the
+ * elements' constants (per_element), both lobes' directions drawn and one selected, the drawn
+ * direction made unit, the lobe at it, the outputs. Every pass is branch-free and vectorises
+ * (GCC 12 leaves the per-element constants scalar for some lobe sets: docs/kernels.md);
+ * every input of a chunk is read before any of its outputs is written (so an output may be
+ * its element's input). The rules are pgloss_sample's: an invalid element (random number
+ * NaN, wo zero or not finite, material invalid) is drawn as (0, 0, 1) with lobe NONE and
+ * zeros, as is one without an active lobe; a valid one below the horizon or with wo·h <= 0
+ * keeps its direction and lobe, with pdf and weight 0. */
+PGLOSS__D_FN void sample_d_loop(const pgloss__consts_d *k, const pgloss_physical_array *pa,
+                                const int per_element, const unsigned active, const int norm,
+                                size_t n, pgloss_vec3_array_d wo, const double *u0s,
+                                const double *u1s, const double *u2s, pgloss_vec3_out_d wi,
+                                double *pdf, pgloss_rgb_out_d weight, unsigned char *lobe)
+{
+    const pgloss__consts_d kc = per_element ? pgloss__consts_d_of(0, 0, 0, 0, 1, 1, 0, 0) : *k;
+    const mat_ptrs mp = mat_ptrs_of(pa);
+    const double has_u = kc.active ? 1.0 : 0.0;
+    chunk_consts_d cc;
+    double c0[CHUNK_S], c1[CHUNK_S], c2[CHUNK_S], ok[CHUNK_S];
+    double ox[CHUNK_S], oy[CHUNK_S], oz[CHUNK_S], vo[CHUNK_S];
+    double wx[CHUNK_S], wy[CHUNK_S], wz[CHUNK_S], lb[CHUNK_S];
+    double nx[CHUNK_S], ny[CHUNK_S], nz[CHUNK_S], vi[CHUNK_S];
+    double fr[CHUNK_S], fg[CHUNK_S], fb[CHUNK_S], pr[CHUNK_S];
+    for (size_t base = 0; base < n; base += CHUNK_S) {
+        const size_t m = n - base < CHUNK_S ? n - base : CHUNK_S;
+        /* random numbers: 1.0 where none is NaN (as nested selects: GCC 12 vectorises those
+         * next to double arithmetic), clamped to [0, 1 - 2^-24] */
+        for (size_t j = 0; j < m; ++j) {
+            const double r0 = u0s[base + j], r1 = u1s[base + j], r2 = u2s[base + j];
+            double v = r0 == r0 ? 1.0 : 0.0;
+            v = r1 == r1 ? v : 0.0;
+            ok[j] = r2 == r2 ? v : 0.0;
+            c0[j] = clamp_u_d(r0);
+            c1[j] = clamp_u_d(r1);
+            c2[j] = clamp_u_d(r2);
+        }
+        unit_chunk_d(m, wo.x + base, wo.y + base, wo.z + base, ox, oy, oz, vo);
+        if (per_element)
+            derive_chunk_d(&mp, active, norm, m, base, &cc);
+        /* both lobes' directions, one selected by u0 < Ps (Ps is 1 for the specular lobe
+         * alone, 0 for the diffuse one alone) */
+        for (size_t j = 0; j < m; ++j) {
+            /* every load unconditional and the selects flat, as GCC 12 if-converts them */
+            const double ax = per_element ? cc.ax[j] : kc.alpha_x;
+            const double ay = per_element ? cc.ay[j] : kc.alpha_y;
+            const double ps = per_element ? cc.ps[j] : kc.ps;
+            const double has = per_element ? cc.has[j] : has_u;
+            const double okj = ok[j], voj = vo[j], oxj = ox[j], oyj = oy[j], ozj = oz[j];
+            const double u0 = c0[j], u1 = c1[j], u2 = c2[j];
+            double drawn = okj > 0.0 ? has : 0.0;
+            drawn = voj > 0.0 ? drawn : 0.0;
+            double sw[3] = {0.0, 0.0, 1.0}, dw[3] = {0.0, 0.0, 1.0}, og = 1.0;
+            if (active & PGLOSS_LOBE_SPECULAR)
+                og = pgloss__sample_specular_d(ax, ay, oxj, oyj, ozj, 1.0, u1, u2, sw);
+            if (active & PGLOSS_LOBE_DIFFUSE)
+                pgloss__sample_cosine_d(u1, u2, dw);
+            const double sx = u0 < ps ? sw[0] : dw[0], sy = u0 < ps ? sw[1] : dw[1];
+            const double sz = u0 < ps ? sw[2] : dw[2];
+            const double l = u0 < ps ? (double)PGLOSS_LOBE_SPECULAR : (double)PGLOSS_LOBE_DIFFUSE;
+            /* kept (pdf and weight) where wo is above the horizon and, drawn specular, wo·h > 0 */
+            const double keep_s = og > 0.0 ? drawn : 0.0;
+            const double keep = u0 < ps ? keep_s : drawn;
+            wx[j] = drawn > 0.0 ? sx : 0.0;
+            wy[j] = drawn > 0.0 ? sy : 0.0;
+            wz[j] = drawn > 0.0 ? sz : 1.0;
+            ok[j] = ozj > 0.0 ? keep : 0.0;
+            lb[j] = drawn > 0.0 ? l : (double)PGLOSS_LOBE_NONE;
+        }
+        unit_chunk_d(m, wx, wy, wz, nx, ny, nz, vi);
+        for (size_t j = 0; j < m; ++j) {
+            const pgloss__consts_d kj = consts_of_chunk_d(&kc, &cc, per_element, active, j);
+            double f[3], p;
+            pgloss__lobe_d(&kj, active, norm, ox[j], oy[j], oz[j], nx[j], ny[j], nz[j], 1, 1, f,
+                           &p);
+            fr[j] = f[0];
+            fg[j] = f[1];
+            fb[j] = f[2];
+            pr[j] = p;
+        }
+        write_sample_d(m, ok, vi, wx, wy, wz, nz, fr, fg, fb, pr, wi.x + base, wi.y + base,
+                       wi.z + base, pdf + base, weight.r + base, weight.g + base,
+                       weight.b + base);
+        if (lobe)
+            for (size_t j = 0; j < m; ++j)
+                lobe[base + j] = (unsigned char)lb[j];
+    }
+}
+
 void SAMPLE_D_FN(const pgloss__consts_d *k, const pgloss_physical_array *pa, unsigned active,
                  int norm, size_t n, pgloss_vec3_array_d wo, const double *u0s, const double *u1s,
                  const double *u2s, pgloss_vec3_out_d wi, double *pdf, pgloss_rgb_out_d weight,
                  unsigned char *lobe)
 {
-    const mat_ptrs mp = mat_ptrs_of(pa);
-    for (size_t j = 0; j < n; ++j) {
-        double mat_ok;
-        const pgloss__consts_d kj =
-            pa ? consts_at_d(NULL, &mp, 1, active, norm, j, &mat_ok)
-               : consts_at_d(k, &mp, 0, active, norm, j, &mat_ok);
-        double w[3] = {0.0, 0.0, 1.0}, p = 0.0, f[3] = {0.0, 0.0, 0.0};
-        unsigned chosen = PGLOSS_LOBE_NONE;
-        double ox = wo.x[j], oy = wo.y[j], oz = wo.z[j];
-        const double u0 = u0s[j], u1 = u1s[j], u2 = u2s[j];
-        const int ok = (mat_ok > 0.0) & !(isnan(u0) | isnan(u1) | isnan(u2)) &
-                       (unit_d(&ox, &oy, &oz) > 0.0);
-        if (ok && kj.active) {
-            const double c0 = clamp_u_d(u0), c1 = clamp_u_d(u1), c2 = clamp_u_d(u2);
-            int good = oz > 0.0;
-            if (c0 < kj.ps) {
-                chosen = PGLOSS_LOBE_SPECULAR;
-                good &= pgloss__sample_specular_d(kj.alpha_x, kj.alpha_y, ox, oy, oz, 1.0, c1, c2,
-                                                  w) > 0.0;
-            } else {
-                chosen = PGLOSS_LOBE_DIFFUSE;
-                pgloss__sample_cosine_d(c1, c2, w);
-            }
-            double ix = w[0], iy = w[1], iz = w[2];
-            if (good && unit_d(&ix, &iy, &iz) > 0.0) {
-                pgloss__lobe_d(&kj, kj.active, norm, ox, oy, oz, ix, iy, iz, 1, 1, f, &p);
-                if (p > 0.0) {
-                    const double r = iz / p; /* weight = f cosθi / pdf */
-                    f[0] *= r;
-                    f[1] *= r;
-                    f[2] *= r;
-                } else {
-                    p = 0.0;
-                }
-            }
-            if (!(p > 0.0))
-                f[0] = f[1] = f[2] = 0.0;
-        }
-        wi.x[j] = w[0];
-        wi.y[j] = w[1];
-        wi.z[j] = w[2];
-        pdf[j] = clamp_max(p);
-        weight.r[j] = clamp_max(f[0]);
-        weight.g[j] = clamp_max(f[1]);
-        weight.b[j] = clamp_max(f[2]);
-        if (lobe)
-            lobe[j] = (unsigned char)chosen;
-    }
+#define LOOP_PE(A, N) sample_d_loop(NULL, pa, 1, A, N, n, wo, u0s, u1s, u2s, wi, pdf, weight, lobe)
+#define LOOP_U(A, N) sample_d_loop(k, NULL, 0, A, N, n, wo, u0s, u1s, u2s, wi, pdf, weight, lobe)
+    if (pa)
+        BY_LOBES(LOOP_PE);
+    else
+        BY_LOBES(LOOP_U);
+#undef LOOP_PE
+#undef LOOP_U
 }

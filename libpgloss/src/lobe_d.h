@@ -238,6 +238,53 @@ PGLOSS__D_FN void pgloss__lobe_d(const pgloss__consts_d *k, const unsigned activ
 
 /* ---- sampling maps (sample.c, the double batches) ----------------------------------------- */
 
+/* ln(1 + x) for finite x > −1 (the sampler takes −ln(1 − u1), u1 in [0, 1 − 2^-24]), inline and
+ * free of libm's call, its branches and of a table, so that the sampling loops vectorise: fdlibm's
+ * log1p (Sun, 1993; as in musl) with its branches made selects. 1 + x = u rounded, u = m 2^k with
+ * m in [√2/2, √2) (by the high word: k and m from u's bits shifted by √2/2's), f = m − 1 (exact),
+ * c = (1 + x) − u the rounding error of u (exact: x − (u − 1) for k < 2, 1 − (u − x) above;
+ * dropped for k >= 54, where it is below 2^-54 of ln u), and ln(1 + x) = k ln2 + ln(1 + f) + c/u,
+ * ln(1 + f) = f − f²/2 + s (f²/2 + R(s²)), s = f/(2 + f), R fdlibm's minimax polynomial (error
+ * < 2^-58.45). One division, q = 1/(m (2 + f)), for s = f m q and c/u = (c − c f (2 + f) q) 2^-k
+ * (2^-k built in the exponent bits). Below 1 ulp (0.89 measured against long double log1pl in
+ * tests/test_log1p_d.cpp; libm's log1p is a call with branches, which the loops cannot take).
+ * Out of its domain (x <= −1, Inf, NaN) a value without meaning, computed without a trap. */
+PGLOSS__D_FN double pgloss__log1p_d(double x)
+{
+    const double u = 1.0 + x;
+    /* u's bits with m in [√2/2, √2) moved into [1, 2√2) (high word + 0x3ff00000 − 0x3fe6a09e) */
+    uint64_t hu, kb, mb, sb;
+    memcpy(&hu, &u, sizeof hu);
+    hu += 0x00095f6200000000u;
+    kb = (hu >> 52) | 0x4330000000000000u; /* 2^52 + (k + 1023), read as a double */
+    double kd, m;
+    memcpy(&kd, &kb, sizeof kd);
+    kd -= 0x1p52 + 1023.0;
+    mb = (hu & 0x000fffffffffffffu) + 0x3fe6a09e00000000u;
+    memcpy(&m, &mb, sizeof m);
+    /* 2^-k from u's exponent, u capped at 2^60 (used for k < 54 only): a normal double */
+    const double uc = u < 0x1p60 ? u : 0x1p60;
+    memcpy(&sb, &uc, sizeof sb);
+    sb = 0x7fe0000000000000u - ((sb + 0x00095f6200000000u) & 0x7ff0000000000000u);
+    double inv_2k;
+    memcpy(&inv_2k, &sb, sizeof inv_2k);
+    const double f = m - 1.0;
+    const double two_f = 2.0 + f;
+    const double q = 1.0 / (m * two_f);
+    const double s = (f * m) * q;
+    const double c_err = kd >= 2.0 ? 1.0 - (u - x) : x - (u - 1.0);
+    /* c/u = (c − c f/m) 2^-k: the quotient's error stays in the small term c f/m */
+    const double c = kd < 54.0 ? (c_err - c_err * ((f * two_f) * q)) * inv_2k : 0.0;
+    const double z = s * s, w = z * z;
+    const double t1 = w * (0x1.999999997fa04p-2 + w * (0x1.c71c51d8e78afp-3 + w * 0x1.39a09d078c69fp-3));
+    const double t2 = z * (0x1.5555555555593p-1 +
+                           w * (0x1.2492494229359p-2 + w * (0x1.7466496cb03dep-3 +
+                                                             w * 0x1.2f112df3e5244p-3)));
+    const double hfsq = 0.5 * f * f;
+    return s * (hfsq + (t1 + t2)) + (kd * 0x1.a39ef35793c76p-33 + c) - hfsq + f +
+           kd * 0x1.62e42feep-1;
+}
+
 /* sin u and cos u for |u| <= π/4, from their Taylor series (to u^15 and u^16: truncation below
  * 0.786^17/17! < 5e-17 and 0.786^18/18! < 3e-18), in Estrin's scheme: within a few ulps. */
 PGLOSS__D_FN void pgloss__sincos_quarter(double u, double *s, double *c)
@@ -255,43 +302,37 @@ PGLOSS__D_FN void pgloss__sincos_quarter(double u, double *s, double *c)
 
 /* Shirley & Chiu's concentric map of [0,1)² onto the unit disk, lifted to the hemisphere
  * (Malley's method): density cosθ/π. The disk angle φ is (π/4)(b/a) or π/2 - (π/4)(a/b),
- * so (cos φ, sin φ) needs sin and cos of an angle in [-π/4, π/4] only. */
+ * so (cos φ, sin φ) needs sin and cos of an angle in [-π/4, π/4] only. Branch-free (selects),
+ * so that the batches vectorise it: the centre a = b = 0 divides 0 by 1 and gives (0, 0, 1). */
 PGLOSS__D_FN void pgloss__sample_cosine_d(double u1, double u2, double w[3])
 {
     const double a = 2.0 * u1 - 1.0, b = 2.0 * u2 - 1.0;
-    double x = 0.0, y = 0.0;
-    if (a != 0.0 || b != 0.0) {
-        double sn, cs;
-        if (fabs(a) > fabs(b)) {
-            pgloss__sincos_quarter((PGLOSS__D_PI / 4.0) * (b / a), &sn, &cs);
-            x = a * cs;
-            y = a * sn;
-        } else {
-            pgloss__sincos_quarter((PGLOSS__D_PI / 4.0) * (a / b), &sn, &cs);
-            x = b * sn; /* cos(π/2 - u) */
-            y = b * cs; /* sin(π/2 - u) */
-        }
-    }
+    const int a_major = fabs(a) > fabs(b);
+    const double big = a_major ? a : b, small = a_major ? b : a;
+    double sn, cs;
+    pgloss__sincos_quarter((PGLOSS__D_PI / 4.0) * (small / (big != 0.0 ? big : 1.0)), &sn, &cs);
+    /* |a| > |b|: φ = (π/4)(b/a); else φ = π/2 − (π/4)(a/b), cos φ = sin, sin φ = cos */
+    const double x = big * (a_major ? cs : sn), y = big * (a_major ? sn : cs);
     const double z2 = 1.0 - x * x - y * y;
     w[0] = x;
     w[1] = y;
     w[2] = sqrt(z2 > 0.0 ? z2 : 0.0);
 }
 
-/* cos and sin of t = 2π u for u in [0, 1): with v = 4u = k + r (k = round(v), r in [-1/2, 1/2],
- * both exact), t = k π/2 + r π/2, a quarter turn k times the angle r π/2 of [-π/4, π/4]. */
+/* cos and sin of t = 2π u for u in [0, 1): with v = 4u = k + r (k = floor(v + 1/2), r in
+ * [-1/2, 1/2], both exact), t = k π/2 + r π/2, a quarter turn k times the angle r π/2 of
+ * [-π/4, π/4]. k as a double (floor by the 1.5·2^52 rounding trick and a select) and the
+ * quadrant by selects: branch-free, so that the batches vectorise it. */
 PGLOSS__D_FN void pgloss__cos_sin_turn(double u, double *c, double *s)
 {
-    const double v = 4.0 * u;
-    const int k = (int)(v + 0.5);
+    const double v = 4.0 * u, t = v + 0.5;
+    const double kn = (t + 0x1.8p52) - 0x1.8p52; /* t rounded to nearest (0 <= t < 4.5) */
+    const double k = kn > t ? kn - 1.0 : kn;     /* floor(t), in {0, 1, 2, 3, 4} */
     double sn, cs;
-    pgloss__sincos_quarter((v - (double)k) * (PGLOSS__D_PI / 2.0), &sn, &cs);
-    switch (k & 3) {
-    case 0: *c = cs; *s = sn; break;
-    case 1: *c = -sn; *s = cs; break;
-    case 2: *c = -cs; *s = -sn; break;
-    default: *c = sn; *s = -cs; break;
-    }
+    pgloss__sincos_quarter((v - k) * (PGLOSS__D_PI / 2.0), &sn, &cs);
+    /* k = 0 (or 4): (cs, sn); 1: (−sn, cs); 2: (−cs, −sn); 3: (sn, −cs) */
+    *c = k == 1.0 ? -sn : (k == 2.0 ? -cs : (k == 3.0 ? sn : cs));
+    *s = k == 1.0 ? cs : (k == 2.0 ? -sn : (k == 3.0 ? -cs : sn));
 }
 
 /* Walter 2005's half vector (anisotropic form of Ward 1992) for (u1, u2) and the mirrored
@@ -302,7 +343,7 @@ PGLOSS__D_FN double pgloss__sample_specular_d(double ax, double ay, double ox, d
                                               double oz, double l2o, double u1, double u2,
                                               double w[3])
 {
-    const double sq = sqrt(-log1p(-u1));
+    const double sq = sqrt(-pgloss__log1p_d(-u1));
     double ct, st;
     pgloss__cos_sin_turn(u2, &ct, &st);
     const double gx = ax * sq * ct, gy = ay * sq * st;
