@@ -73,10 +73,21 @@ PGLOSS__P_FN double pgloss__contrast_d(double rho_s, double den)
 }
 
 /* Eq. 7 expanded, (c + B)³ − B³ = c (c² + 3cB + 3B²) with B = ∛(ρd/2): free of cancellation. */
+PGLOSS__P_FN double pgloss__specular_b_d(double c, double b)
+{
+    return c * (c * c + 3.0 * c * b + 3.0 * b * b);
+}
+
 PGLOSS__P_FN double pgloss__specular_d(double rho_d, double c)
 {
-    const double b = pgloss__half_cbrt_d(rho_d, 0);
-    return c * (c * c + 3.0 * c * b + 3.0 * b * b);
+    return pgloss__specular_b_d(c, pgloss__half_cbrt_d(rho_d, 0));
+}
+
+/* The envelope of Fig. 10: eq. 4 with ρs = 1 − ρd, for ρd = Y in [0, 1] and b = ∛(Y/2)
+ * (A² + AB + B² in quotient form again: A − B cancels near Y = 1). */
+PGLOSS__P_FN double pgloss__envelope_b_d(double y, double b)
+{
+    return pgloss__contrast_d(1.0 - y, pgloss__contrast_den_d(y, 1.0 - y, b, 0));
 }
 
 /* Eq. 3, d = 1 − α, rounded down where it would round to 1 (α ≤ 2^-54): d < 1 then holds for
@@ -130,6 +141,96 @@ PGLOSS__P_FN double pgloss__gloss_from_physical_k(double rho_d, double rho_s, do
     *c = st >= 0.0 ? cc : 0.0;
     *d = st >= 0.0 ? dd : 0.0;
     return st;
+}
+
+/* pgloss_physical_from_gloss on one element (eqs. 6, 7, 8): NONFINITE, LIGHTNESS, NEGATIVE,
+ * ALPHA, NONFINITE (ρs beyond DBL_MAX), then the warning; outputs 0 on error. */
+PGLOSS__P_FN double pgloss__physical_from_gloss_k(double L, double c, double d, double *rho_d,
+                                                  double *rho_s, double *alpha)
+{
+    const double y = pgloss__luminance_d(L);   /* eq. 6 */
+    const double s = pgloss__specular_d(y, c); /* eq. 7 */
+    const double al = 1.0 - d;                 /* eq. 8 */
+    double st = pgloss__alpha_status_d(al);
+    st = pgloss__finite_d(s) ? st : (double)PGLOSS_ERR_NONFINITE;
+    st = d < 1.0 ? st : (double)PGLOSS_ERR_ALPHA;
+    st = c < 0.0 ? (double)PGLOSS_ERR_NEGATIVE : st;
+    st = (L < 0.0 || L > 100.0) ? (double)PGLOSS_ERR_LIGHTNESS : st;
+    st = (pgloss__finite_d(L) && pgloss__finite_d(c) && pgloss__finite_d(d))
+             ? st : (double)PGLOSS_ERR_NONFINITE;
+    *rho_d = st >= 0.0 ? y : 0.0;
+    *rho_s = st >= 0.0 ? s : 0.0;
+    *alpha = st >= 0.0 ? al : 0.0;
+    return st;
+}
+
+/* pgloss_envelope_contrast on one element: NONFINITE, LIGHTNESS; 0 on error. (Its eq. 4's
+ * own checks cannot fail for L* in [0, 100]: Y = f⁻¹(L*) is in [0, 1].) */
+PGLOSS__P_FN double pgloss__envelope_k(double L, double *c_max)
+{
+    const double y = pgloss__luminance_d(L);
+    const double cm = pgloss__envelope_b_d(y, pgloss__half_cbrt_d(y, 0));
+    double st = (L < 0.0 || L > 100.0) ? (double)PGLOSS_ERR_LIGHTNESS : 0.0;
+    st = pgloss__finite_d(L) ? st : (double)PGLOSS_ERR_NONFINITE;
+    *c_max = st == 0.0 ? cm : 0.0;
+    return st;
+}
+
+/* pgloss_match_gloss on one element (§5.2): NONFINITE, NEGATIVE, LIGHTNESS, NONFINITE (eq. 4's
+ * ρs + ρd/2, then eq. 7's ρs beyond DBL_MAX), ENVELOPE; outputs 0 on error but ENVELOPE's
+ * (the matched values are written). */
+PGLOSS__P_FN double pgloss__match_gloss_k(double rho_d, double rho_s, double L_target,
+                                          double *rho_d_out, double *rho_s_out)
+{
+    const double den = pgloss__contrast_den_d(rho_d, rho_s, pgloss__half_cbrt_d(rho_d, 0), 0);
+    const double c = pgloss__contrast_d(rho_s, den); /* eq. 4 */
+    const double y = pgloss__luminance_d(L_target);  /* eq. 6 */
+    const double s = pgloss__specular_d(y, c);       /* eq. 7 */
+    double st = y + s > 1.0 + PGLOSS_BOUNDARY_TOLERANCE ? (double)PGLOSS_ERR_ENVELOPE : 0.0;
+    st = pgloss__finite_d(s) ? st : (double)PGLOSS_ERR_NONFINITE;
+    st = pgloss__finite_d(den) ? st : (double)PGLOSS_ERR_NONFINITE;
+    st = (L_target < 0.0 || L_target > 100.0) ? (double)PGLOSS_ERR_LIGHTNESS : st;
+    st = (rho_d < 0.0 || rho_s < 0.0) ? (double)PGLOSS_ERR_NEGATIVE : st;
+    st = (pgloss__finite_d(rho_d) && pgloss__finite_d(rho_s) && pgloss__finite_d(L_target))
+             ? st : (double)PGLOSS_ERR_NONFINITE;
+    const double kept = st == 0.0 || st == (double)PGLOSS_ERR_ENVELOPE;
+    *rho_d_out = kept ? y : 0.0;
+    *rho_s_out = kept ? s : 0.0;
+    return st;
+}
+
+/* pgloss__check_physical_values on one element: NONFINITE (a value NaN, ±Inf or beyond
+ * limit in magnitude), NEGATIVE (ρd, ρs), ALPHA (αx, αy not > 0); 0 if all pass. */
+PGLOSS__P_FN double pgloss__physical_values_k(double r, double g, double b, double s,
+                                              double ax, double ay, double limit)
+{
+    double st = (ax > 0.0 && ay > 0.0) ? 0.0 : (double)PGLOSS_ERR_ALPHA;
+    st = (r < 0.0 || g < 0.0 || b < 0.0 || s < 0.0) ? (double)PGLOSS_ERR_NEGATIVE : st;
+    st = (fabs(r) <= limit && fabs(g) <= limit && fabs(b) <= limit && fabs(s) <= limit &&
+          fabs(ax) <= limit && fabs(ay) <= limit)
+             ? st : (double)PGLOSS_ERR_NONFINITE;
+    return st;
+}
+
+/* The larger of two values neither of which is NaN (a select, what vectorises; fmax is a
+ * call or a NaN-aware sequence). */
+PGLOSS__P_FN double pgloss__max_d(double x, double y)
+{
+    return x > y ? x : y;
+}
+
+/* pgloss_check_physical on one element, `norm_ok` 1 for a known normalisation, else 0:
+ * pgloss__physical_values_k (limit FLT_MAX), NORMALIZATION, ENERGY, then the warning. */
+PGLOSS__P_FN double pgloss__check_physical_k(double r, double g, double b, double s, double ax,
+                                             double ay, double norm_ok)
+{
+    const double dmax = pgloss__max_d(r, pgloss__max_d(g, b));
+    double st = pgloss__max_d(ax, ay) > PGLOSS_ALPHA_TRUSTED_MAX
+                    ? (double)PGLOSS_WARN_ALPHA_UNTRUSTED : 0.0;
+    st = dmax + s > 1.0 + PGLOSS_BOUNDARY_TOLERANCE ? (double)PGLOSS_ERR_ENERGY : st;
+    st = norm_ok != 0.0 ? st : (double)PGLOSS_ERR_NORMALIZATION;
+    const double basic = pgloss__physical_values_k(r, g, b, s, ax, ay, (double)FLT_MAX);
+    return basic < 0.0 ? basic : st;
 }
 
 /* The D65 white (0.3127, 0.3290) as XYZ with Y = 1. */
@@ -190,21 +291,16 @@ PGLOSS__P_FN double pgloss__physical_from_perceptual_k(double L, double a, doubl
                                                        double *rho_s, double *alpha,
                                                        double *pre)
 {
-    const double y = pgloss__luminance_d(L);    /* eq. 6 */
-    const double s = pgloss__specular_d(y, c);  /* eq. 7 */
-    const double al = 1.0 - d;                  /* eq. 8 */
-    double sg = pgloss__finite_d(s) ? 0.0 : (double)PGLOSS_ERR_NONFINITE;
-    sg = d < 1.0 ? sg : (double)PGLOSS_ERR_ALPHA;
-    sg = c < 0.0 ? (double)PGLOSS_ERR_NEGATIVE : sg;
-    sg = (L < 0.0 || L > 100.0) ? (double)PGLOSS_ERR_LIGHTNESS : sg;
-    sg = (pgloss__finite_d(L) && pgloss__finite_d(c) && pgloss__finite_d(d))
-             ? sg : (double)PGLOSS_ERR_NONFINITE;
+    double y, s, al; /* eqs. 6, 7, 8 */
+    const double sgw = pgloss__physical_from_gloss_k(L, c, d, &y, &s, &al);
+    double sg = sgw < 0.0 ? sgw : 0.0;
     sg = (pgloss__finite_d(a) && pgloss__finite_d(b)) ? sg : (double)PGLOSS_ERR_NONFINITE;
     *pre = sg;
     double r, g, bb;
     const double cs = pgloss__rgb_from_lab_k(L, a, b, M, &r, &g, &bb);
-    /* a failed element: the checks before the colour's, or a non-finite colour */
-    const double st = sg < 0.0 ? sg : (cs != 0.0 ? cs : pgloss__alpha_status_d(al));
+    /* a failed element: the checks before the colour's, or a non-finite colour; else the
+     * warning of physical_from_gloss (sgw ≥ 0 there) */
+    const double st = sg < 0.0 ? sg : (cs != 0.0 ? cs : sgw);
     /* kept: an element that passed, and a GAMUT one (its exact ρd, ρs, α) */
     const double gamut = (double)PGLOSS_ERR_GAMUT;
     *rho_r = st >= 0.0 ? r : (st == gamut ? r : 0.0);
@@ -215,7 +311,93 @@ PGLOSS__P_FN double pgloss__physical_from_perceptual_k(double L, double a, doubl
     return st;
 }
 
+/* pgloss_lab_from_rgb_ex on one element (Mx: the working space's RGB → XYZ, row-major):
+ * NONFINITE, NEGATIVE, NONFINITE (a result beyond DBL_MAX); outputs 0 on error. *Y receives
+ * the luminance (XYZ's Y), computed on every path. */
+PGLOSS__P_FN double pgloss__lab_from_rgb_k(double r, double g, double b, const double *Mx,
+                                           double *L, double *a, double *bb, double *Y)
+{
+    const double X = Mx[0] * r + Mx[1] * g + Mx[2] * b;
+    const double y = Mx[3] * r + Mx[4] * g + Mx[5] * b;
+    const double Z = Mx[6] * r + Mx[7] * g + Mx[8] * b;
+    const double fx = pgloss__lab_f_d(X / PGLOSS__WHITE_X), fy = pgloss__lab_f_d(y),
+                 fz = pgloss__lab_f_d(Z / PGLOSS__WHITE_Z);
+    const double o0 = 116.0 * fy - 16.0, o1 = 500.0 * (fx - fy), o2 = 200.0 * (fy - fz);
+    double st = (pgloss__finite_d(o0) && pgloss__finite_d(o1) && pgloss__finite_d(o2))
+                    ? 0.0 : (double)PGLOSS_ERR_NONFINITE;
+    st = (r < 0.0 || g < 0.0 || b < 0.0) ? (double)PGLOSS_ERR_NEGATIVE : st;
+    st = (pgloss__finite_d(r) && pgloss__finite_d(g) && pgloss__finite_d(b))
+             ? st : (double)PGLOSS_ERR_NONFINITE;
+    *L = st == 0.0 ? o0 : 0.0;
+    *a = st == 0.0 ? o1 : 0.0;
+    *bb = st == 0.0 ? o2 : 0.0;
+    *Y = y;
+    return st;
+}
+
+/* pgloss_perceptual_from_physical_ex on one element (Mx: RGB → XYZ): the values' checks
+ * (limit DBL_MAX), lab_from_rgb's, NONFINITE (luminance, then eq. 4's ρs + ρd/2 beyond
+ * DBL_MAX), then the warning (the wider spread beyond the trusted range); outputs 0 on error.
+ * For αx ≠ αy the geometric mean stands in for α in eq. 3: the α with the same solid-angle
+ * spread (the lobe's constant is 1/(αx αy)); the paper studied isotropic lobes. */
+PGLOSS__P_FN double pgloss__perceptual_from_physical_k(double r, double g, double b, double s,
+                                                       double ax, double ay, const double *Mx,
+                                                       double *L, double *a, double *bb,
+                                                       double *c, double *d)
+{
+    double l, la, lb, y;
+    const double cs = pgloss__lab_from_rgb_k(r, g, b, Mx, &l, &la, &lb, &y);
+    const double den = pgloss__contrast_den_d(y, s, pgloss__half_cbrt_d(y, 0), 0);
+    const double cc = pgloss__contrast_d(s, den); /* eq. 4 */
+    const double dd = pgloss__doi_d(sqrt(ax) * sqrt(ay)); /* eq. 3 */
+    double st = pgloss__max_d(ax, ay) > PGLOSS_ALPHA_TRUSTED_MAX
+                    ? (double)PGLOSS_WARN_ALPHA_UNTRUSTED : 0.0;
+    st = pgloss__finite_d(den) ? st : (double)PGLOSS_ERR_NONFINITE;
+    st = y < 0.0 ? (double)PGLOSS_ERR_NEGATIVE : st; /* not for these spaces' Y ≥ 0 weights */
+    st = pgloss__finite_d(y) ? st : (double)PGLOSS_ERR_NONFINITE;
+    st = cs < 0.0 ? cs : st;
+    const double basic = pgloss__physical_values_k(r, g, b, s, ax, ay, DBL_MAX);
+    st = basic < 0.0 ? basic : st;
+    *L = st >= 0.0 ? l : 0.0;
+    *a = st >= 0.0 ? la : 0.0;
+    *bb = st >= 0.0 ? lb : 0.0;
+    *c = st >= 0.0 ? cc : 0.0;
+    *d = st >= 0.0 ? dd : 0.0;
+    return st;
+}
+
+/* pgloss_check_perceptual_ex on one element (M: XYZ → RGB): NONFINITE (also α = 1 − d above
+ * FLT_MAX, which no material holds), LIGHTNESS, NEGATIVE, ALPHA, rgb_from_lab's (NONFINITE,
+ * GAMUT), ENVELOPE (c above Fig. 10's c_max), NONFINITE (ρs of eq. 7), ENERGY (max ρd + ρs),
+ * then the warning. */
+PGLOSS__P_FN double pgloss__check_perceptual_k(double L, double a, double b, double c, double d,
+                                               const double *M)
+{
+    double r, g, bl;
+    const double cs = pgloss__rgb_from_lab_k(L, a, b, M, &r, &g, &bl);
+    const double y = pgloss__luminance_d(L);          /* eq. 6 */
+    const double hb = pgloss__half_cbrt_d(y, 0);      /* ∛(Y/2), of eqs. 4 and 7 */
+    const double cmax = pgloss__envelope_b_d(y, hb);  /* Fig. 10 */
+    const double s = pgloss__specular_b_d(c, hb);     /* eq. 7 */
+    const double al = 1.0 - d;                        /* eq. 8 */
+    double st = pgloss__alpha_status_d(al);
+    st = pgloss__max_d(r, pgloss__max_d(g, bl)) + s > 1.0 + PGLOSS_BOUNDARY_TOLERANCE
+             ? (double)PGLOSS_ERR_ENERGY : st;
+    st = pgloss__finite_d(s) ? st : (double)PGLOSS_ERR_NONFINITE;
+    st = c > cmax + PGLOSS_BOUNDARY_TOLERANCE ? (double)PGLOSS_ERR_ENVELOPE : st;
+    st = cs != 0.0 ? cs : st;
+    st = d < 1.0 ? st : (double)PGLOSS_ERR_ALPHA;
+    st = c < 0.0 ? (double)PGLOSS_ERR_NEGATIVE : st;
+    st = (L < 0.0 || L > 100.0) ? (double)PGLOSS_ERR_LIGHTNESS : st;
+    st = (pgloss__finite_d(L) && pgloss__finite_d(a) && pgloss__finite_d(b) &&
+          pgloss__finite_d(c) && pgloss__finite_d(d) && al <= FLT_MAX)
+             ? st : (double)PGLOSS_ERR_NONFINITE;
+    return st;
+}
+
 /* The XYZ → linear RGB matrix of a known working space, row-major (color.c's table). */
 const double *pgloss__from_xyz_matrix(pgloss_color_space space);
+/* The linear RGB → XYZ matrix of a known working space, row-major (row 1: its luminance). */
+const double *pgloss__to_xyz_matrix(pgloss_color_space space);
 
 #endif
