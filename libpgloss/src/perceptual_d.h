@@ -23,6 +23,44 @@ PGLOSS__P_FN int pgloss__finite_d(double x)
     return fabs(x) <= DBL_MAX;
 }
 
+/* Several conditions on one element as ONE comparison each: GCC 12 turns a && or || chain of
+ * double comparisons into branches whose merge it cannot if-convert (a PHI of more than four
+ * arguments), and the loop is then not vectorised. The NaN cases of these helpers do not
+ * matter: their callers let a finiteness check (made later, winning) decide those elements. */
+
+/* The larger and the smaller of two values neither of which is NaN (selects; fmax is a call
+ * or a NaN-aware sequence). */
+PGLOSS__P_FN double pgloss__max_d(double x, double y)
+{
+    return x > y ? x : y;
+}
+
+PGLOSS__P_FN double pgloss__min_d(double x, double y)
+{
+    return x < y ? x : y;
+}
+
+/* 0 for a finite x, NaN for NaN and ±Inf: a sum of these is 0 only if every term's x is
+ * finite (x − x is never folded without -ffinite-math-only). */
+PGLOSS__P_FN double pgloss__nan_unless_finite_d(double x)
+{
+    return x - x;
+}
+
+/* x, y and z are all finite. */
+PGLOSS__P_FN int pgloss__finite3_d(double x, double y, double z)
+{
+    return pgloss__nan_unless_finite_d(x) + pgloss__nan_unless_finite_d(y) +
+               pgloss__nan_unless_finite_d(z) == 0.0;
+}
+
+/* x < lo or x > hi, for x not NaN: lo − x > 0 and x − hi > 0 are exact tests, a difference of
+ * doubles being 0 only for equal ones. */
+PGLOSS__P_FN int pgloss__outside_d(double x, double lo, double hi)
+{
+    return pgloss__max_d(lo - x, x - hi) > 0.0;
+}
+
 /* ∛x by the general cube root or, where `in_range` (a compile-time constant) says the caller
  * checked pgloss__cbrt_in_range_d, by its unscaled core: the same bits either way. */
 PGLOSS__P_FN double pgloss__cbrt_sel_d(double x, const int in_range)
@@ -189,11 +227,11 @@ PGLOSS__P_FN double pgloss__match_gloss_k(double rho_d, double rho_s, double L_t
     double st = y + s > 1.0 + PGLOSS_BOUNDARY_TOLERANCE ? (double)PGLOSS_ERR_ENVELOPE : 0.0;
     st = pgloss__finite_d(s) ? st : (double)PGLOSS_ERR_NONFINITE;
     st = pgloss__finite_d(den) ? st : (double)PGLOSS_ERR_NONFINITE;
-    st = (L_target < 0.0 || L_target > 100.0) ? (double)PGLOSS_ERR_LIGHTNESS : st;
-    st = (rho_d < 0.0 || rho_s < 0.0) ? (double)PGLOSS_ERR_NEGATIVE : st;
-    st = (pgloss__finite_d(rho_d) && pgloss__finite_d(rho_s) && pgloss__finite_d(L_target))
-             ? st : (double)PGLOSS_ERR_NONFINITE;
-    const double kept = st == 0.0 || st == (double)PGLOSS_ERR_ENVELOPE;
+    st = pgloss__outside_d(L_target, 0.0, 100.0) ? (double)PGLOSS_ERR_LIGHTNESS : st;
+    st = pgloss__min_d(rho_d, rho_s) < 0.0 ? (double)PGLOSS_ERR_NEGATIVE : st;
+    st = pgloss__finite3_d(rho_d, rho_s, L_target) ? st : (double)PGLOSS_ERR_NONFINITE;
+    /* OK or ENVELOPE (small integers: the product is exact) */
+    const int kept = st * (st - (double)PGLOSS_ERR_ENVELOPE) == 0.0;
     *rho_d_out = kept ? y : 0.0;
     *rho_s_out = kept ? s : 0.0;
     return st;
@@ -204,19 +242,18 @@ PGLOSS__P_FN double pgloss__match_gloss_k(double rho_d, double rho_s, double L_t
 PGLOSS__P_FN double pgloss__physical_values_k(double r, double g, double b, double s,
                                               double ax, double ay, double limit)
 {
-    double st = (ax > 0.0 && ay > 0.0) ? 0.0 : (double)PGLOSS_ERR_ALPHA;
-    st = (r < 0.0 || g < 0.0 || b < 0.0 || s < 0.0) ? (double)PGLOSS_ERR_NEGATIVE : st;
-    st = (fabs(r) <= limit && fabs(g) <= limit && fabs(b) <= limit && fabs(s) <= limit &&
-          fabs(ax) <= limit && fabs(ay) <= limit)
-             ? st : (double)PGLOSS_ERR_NONFINITE;
+    double st = pgloss__min_d(ax, ay) > 0.0 ? 0.0 : (double)PGLOSS_ERR_ALPHA;
+    st = pgloss__min_d(pgloss__min_d(r, g), pgloss__min_d(b, s)) < 0.0
+             ? (double)PGLOSS_ERR_NEGATIVE : st;
+    /* the largest magnitude, made NaN by any NaN or ±Inf value */
+    const double big = pgloss__max_d(pgloss__max_d(pgloss__max_d(fabs(r), fabs(g)),
+                                                   pgloss__max_d(fabs(b), fabs(s))),
+                                     pgloss__max_d(fabs(ax), fabs(ay)));
+    const double nan = pgloss__nan_unless_finite_d(r) + pgloss__nan_unless_finite_d(g) +
+                       pgloss__nan_unless_finite_d(b) + pgloss__nan_unless_finite_d(s) +
+                       pgloss__nan_unless_finite_d(ax) + pgloss__nan_unless_finite_d(ay);
+    st = big + nan <= limit ? st : (double)PGLOSS_ERR_NONFINITE;
     return st;
-}
-
-/* The larger of two values neither of which is NaN (a select, what vectorises; fmax is a
- * call or a NaN-aware sequence). */
-PGLOSS__P_FN double pgloss__max_d(double x, double y)
-{
-    return x > y ? x : y;
 }
 
 /* pgloss_check_physical on one element, `norm_ok` 1 for a known normalisation, else 0:
@@ -265,17 +302,19 @@ PGLOSS__P_FN double pgloss__rgb_from_lab_k(double L, double a, double b, const d
     const double o1 = M[3] * X + M[4] * Y + M[5] * Z;
     const double o2 = M[6] * X + M[7] * Y + M[8] * Z;
     const double tol = -PGLOSS_BOUNDARY_TOLERANCE;
-    double st = (o0 < tol || o1 < tol || o2 < tol) ? (double)PGLOSS_ERR_GAMUT : 0.0;
-    st = (pgloss__finite_d(o0) && pgloss__finite_d(o1) && pgloss__finite_d(o2))
-             ? st : (double)PGLOSS_ERR_NONFINITE;
-    st = (L < 0.0 || L > 100.0) ? (double)PGLOSS_ERR_LIGHTNESS : st;
-    st = (pgloss__finite_d(L) && pgloss__finite_d(a) && pgloss__finite_d(b))
-             ? st : (double)PGLOSS_ERR_NONFINITE;
-    /* GAMUT keeps the exact channels; OK rounds the boundary's −tolerance..0 up to 0. */
-    const double gamut = (double)PGLOSS_ERR_GAMUT;
-    *r = st == 0.0 ? (o0 < 0.0 ? 0.0 : o0) : (st == gamut ? o0 : 0.0);
-    *g = st == 0.0 ? (o1 < 0.0 ? 0.0 : o1) : (st == gamut ? o1 : 0.0);
-    *bl = st == 0.0 ? (o2 < 0.0 ? 0.0 : o2) : (st == gamut ? o2 : 0.0);
+    double st = pgloss__min_d(o0, pgloss__min_d(o1, o2)) < tol ? (double)PGLOSS_ERR_GAMUT : 0.0;
+    st = pgloss__finite3_d(o0, o1, o2) ? st : (double)PGLOSS_ERR_NONFINITE;
+    st = pgloss__outside_d(L, 0.0, 100.0) ? (double)PGLOSS_ERR_LIGHTNESS : st;
+    st = pgloss__finite3_d(L, a, b) ? st : (double)PGLOSS_ERR_NONFINITE;
+    /* GAMUT keeps the exact channels; OK rounds the boundary's −tolerance..0 up to 0 (one
+     * select after another: nested ones make a PHI GCC does not if-convert). */
+    const int kept = st * (st - (double)PGLOSS_ERR_GAMUT) == 0.0; /* small integers: exact */
+    const int ok = st == 0.0;
+    const double c0 = o0 < 0.0 ? 0.0 : o0, c1 = o1 < 0.0 ? 0.0 : o1, c2 = o2 < 0.0 ? 0.0 : o2;
+    const double v0 = ok ? c0 : o0, v1 = ok ? c1 : o1, v2 = ok ? c2 : o2;
+    *r = kept ? v0 : 0.0;
+    *g = kept ? v1 : 0.0;
+    *bl = kept ? v2 : 0.0;
     return st;
 }
 
@@ -323,11 +362,9 @@ PGLOSS__P_FN double pgloss__lab_from_rgb_k(double r, double g, double b, const d
     const double fx = pgloss__lab_f_d(X / PGLOSS__WHITE_X), fy = pgloss__lab_f_d(y),
                  fz = pgloss__lab_f_d(Z / PGLOSS__WHITE_Z);
     const double o0 = 116.0 * fy - 16.0, o1 = 500.0 * (fx - fy), o2 = 200.0 * (fy - fz);
-    double st = (pgloss__finite_d(o0) && pgloss__finite_d(o1) && pgloss__finite_d(o2))
-                    ? 0.0 : (double)PGLOSS_ERR_NONFINITE;
-    st = (r < 0.0 || g < 0.0 || b < 0.0) ? (double)PGLOSS_ERR_NEGATIVE : st;
-    st = (pgloss__finite_d(r) && pgloss__finite_d(g) && pgloss__finite_d(b))
-             ? st : (double)PGLOSS_ERR_NONFINITE;
+    double st = pgloss__finite3_d(o0, o1, o2) ? 0.0 : (double)PGLOSS_ERR_NONFINITE;
+    st = pgloss__min_d(r, pgloss__min_d(g, b)) < 0.0 ? (double)PGLOSS_ERR_NEGATIVE : st;
+    st = pgloss__finite3_d(r, g, b) ? st : (double)PGLOSS_ERR_NONFINITE;
     *L = st == 0.0 ? o0 : 0.0;
     *a = st == 0.0 ? o1 : 0.0;
     *bb = st == 0.0 ? o2 : 0.0;
