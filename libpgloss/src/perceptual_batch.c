@@ -96,7 +96,7 @@ typedef struct cols {
                        double *, signed char *);
 } cols;
 
-static void gloss_from_physical_chunk(const void *ctx, size_t b, size_t m, signed char *st)
+static void loop3_chunk(const void *ctx, size_t b, size_t m, signed char *st)
 {
     const cols *k = ctx;
     k->loop3(m, k->x0 + b, k->x1 + b, k->x2 + b, k->y0 + b, k->y1 + b, k->y2 + b, st);
@@ -112,9 +112,8 @@ pgloss_status pgloss_gloss_from_physical_batch(size_t n, const double *rho_d, co
         return PGLOSS_ERR_NULL;
     const cols k = {rho_d, rho_s, alpha, L, c, d, PICK_LOOP(pgloss__gloss_from_physical_loop),
                     NULL, NULL};
-    return run(n, status, gloss_from_physical_chunk, &k);
+    return run(n, status, loop3_chunk, &k);
 }
-
 
 pgloss_status pgloss_physical_from_gloss_batch(size_t n, const double *L, const double *c,
                                                const double *d, double *rho_d, double *rho_s,
@@ -126,7 +125,7 @@ pgloss_status pgloss_physical_from_gloss_batch(size_t n, const double *L, const 
         return PGLOSS_ERR_NULL;
     const cols k = {L, c, d, rho_d, rho_s, alpha, PICK_LOOP(pgloss__physical_from_gloss_loop),
                     NULL, NULL};
-    return run(n, status, gloss_from_physical_chunk, &k); /* the same shape of loop */
+    return run(n, status, loop3_chunk, &k);
 }
 
 static void envelope_chunk(const void *ctx, size_t b, size_t m, signed char *st)
@@ -207,16 +206,11 @@ typedef struct sets {
     void (*lab_loop)(size_t, pgloss_rgb_array_d, const double *, pgloss_lab_out, signed char *);
 } sets;
 
-static int valid_normalization(pgloss_normalization n)
-{
-    return n == PGLOSS_NORM_WARD || n == PGLOSS_NORM_WARD_DUR || n == PGLOSS_NORM_BOUNDED;
-}
-
 static void check_physical_chunk(const void *ctx, size_t b, size_t m, signed char *st)
 {
     const sets *k = ctx;
-    k->check_physical_loop(m, physical_from(k->p, b), valid_normalization(k->p->normalization),
-                           st);
+    const double norm_ok = pgloss__valid_normalization(k->p->normalization);
+    k->check_physical_loop(m, physical_from(k->p, b), norm_ok, st);
 }
 
 pgloss_status pgloss_check_physical_batch(size_t n, const pgloss_physical_array *p,
@@ -283,8 +277,7 @@ pgloss_status pgloss_physical_from_perceptual_batch_ex(size_t n, pgloss_perceptu
         return PGLOSS_ERR_NULL;
     if (!pgloss__valid_color_space(space))
         return PGLOSS_ERR_ARGUMENT;
-    if (normalization != PGLOSS_NORM_WARD && normalization != PGLOSS_NORM_WARD_DUR &&
-        normalization != PGLOSS_NORM_BOUNDED)
+    if (!pgloss__valid_normalization(normalization))
         return PGLOSS_ERR_NORMALIZATION;
     const sets k = {.q = q, .space = space, .p_out = p,
                     .physical_loop = PICK_LOOP(pgloss__physical_from_perceptual_loop)};

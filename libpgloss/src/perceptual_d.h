@@ -149,7 +149,7 @@ PGLOSS__P_FN double pgloss__gloss_plain_d(double rho_d, double rho_s, double alp
 {
     const int in_d = (rho_d == 0.0) | ((rho_d >= 0x1p-899) & (rho_d <= 0x1p899));
     const int in_s = (rho_s == 0.0) | ((rho_s >= 0x1p-899) & (rho_s <= 0x1p899));
-    return in_d & in_s & (alpha > 0.0) & (alpha <= DBL_MAX) ? 1.0 : 0.0;
+    return (in_d & in_s & (alpha > 0.0) & (alpha <= DBL_MAX)) ? 1.0 : 0.0;
 }
 
 /* pgloss_gloss_from_physical on one element (eqs. 3, 4 and L* of ρd): NONFINITE, NEGATIVE,

@@ -6,11 +6,6 @@
 #include "perceptual_d.h"
 #include "pgloss/perceptual.h"
 
-static int valid_normalization(pgloss_normalization n)
-{
-    return n == PGLOSS_NORM_WARD || n == PGLOSS_NORM_WARD_DUR || n == PGLOSS_NORM_BOUNDED;
-}
-
 pgloss_status pgloss__check_physical_values(const pgloss_physical *p, double limit)
 {
     return (pgloss_status)pgloss__physical_values_k(p->rho_d[0], p->rho_d[1], p->rho_d[2],
@@ -26,7 +21,7 @@ pgloss_status pgloss_check_physical(const pgloss_physical *p)
      * material can hold it. */
     return (pgloss_status)pgloss__check_physical_k(p->rho_d[0], p->rho_d[1], p->rho_d[2],
                                                    p->rho_s, p->alpha_x, p->alpha_y,
-                                                   valid_normalization(p->normalization));
+                                                   pgloss__valid_normalization(p->normalization));
 }
 
 pgloss_status pgloss_check_perceptual_ex(const pgloss_perceptual *q, pgloss_color_space space)
@@ -72,7 +67,7 @@ pgloss_status pgloss_physical_from_perceptual_ex(const pgloss_perceptual *q,
         &rho_s, &alpha, &pre);
     if (pre < 0.0)
         return (pgloss_status)pre;
-    if (!valid_normalization(normalization))
+    if (!pgloss__valid_normalization(normalization))
         return PGLOSS_ERR_NORMALIZATION;
     p->rho_d[0] = rgb[0]; p->rho_d[1] = rgb[1]; p->rho_d[2] = rgb[2];
     p->rho_s = rho_s;           /* eq. 7 with the luminance of ρd (= Y of L*) */
