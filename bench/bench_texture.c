@@ -304,6 +304,47 @@ static void run_rgb_from_lab(void *ctx)
     pgloss_rgb_from_lab_batch(D->n, lab, rgb, D->status);
 }
 
+static void run_perceptual_from_physical(void *ctx)
+{
+    data *D = ctx;
+    const pgloss_physical_array m = mats_d(D);
+    const pgloss_perceptual_out q = {D->out[0], D->out[1], D->out[2], D->out[3], D->out[4]};
+    pgloss_perceptual_from_physical_batch(D->n, &m, q, D->status);
+}
+
+static void run_lab_from_rgb(void *ctx)
+{
+    data *D = ctx;
+    const pgloss_rgb_array_d rgb = {D->md[0], D->md[1], D->md[2]};
+    const pgloss_lab_out lab = {D->out[0], D->out[1], D->out[2]};
+    pgloss_lab_from_rgb_batch(D->n, rgb, lab, D->status);
+}
+
+static void run_check_physical(void *ctx)
+{
+    data *D = ctx;
+    const pgloss_physical_array m = mats_d(D);
+    pgloss_check_physical_batch(D->n, &m, D->status);
+}
+
+static void run_physical_from_gloss(void *ctx)
+{
+    data *D = ctx;
+    pgloss_physical_from_gloss_batch(D->n, D->L, D->c, D->d, D->out[0], D->out[1], D->out[2], D->status);
+}
+
+static void run_envelope(void *ctx)
+{
+    data *D = ctx;
+    pgloss_envelope_contrast_batch(D->n, D->L, D->out[0], D->status);
+}
+
+static void run_match_gloss(void *ctx)
+{
+    data *D = ctx;
+    pgloss_match_gloss_batch(D->n, D->md[0], D->md[3], D->L, D->out[0], D->out[1], D->status);
+}
+
 int main(int argc, char **argv)
 {
     for (int k = 1; k < argc; ++k)
@@ -341,5 +382,11 @@ int main(int argc, char **argv)
     printf("| gloss_from_physical_batch vs eq. 4 + L* + eq. 3 | %.2f | %.2f | %.2f |\n", a, b, a / b);
     paired(run_check_perceptual, &D, run_rgb_from_lab, &D, &a, &b);
     printf("| check_perceptual_batch (A) and rgb_from_lab_batch (B) | %.2f | %.2f | %.2f |\n", a, b, a / b);
+    paired(run_perceptual_from_physical, &D, run_lab_from_rgb, &D, &a, &b);
+    printf("| perceptual_from_physical_batch (A) and lab_from_rgb_batch (B) | %.2f | %.2f | %.2f |\n", a, b, a / b);
+    paired(run_check_physical, &D, run_physical_from_gloss, &D, &a, &b);
+    printf("| check_physical_batch (A) and physical_from_gloss_batch (B) | %.2f | %.2f | %.2f |\n", a, b, a / b);
+    paired(run_envelope, &D, run_match_gloss, &D, &a, &b);
+    printf("| envelope_contrast_batch (A) and match_gloss_batch (B) | %.2f | %.2f | %.2f |\n", a, b, a / b);
     return 0;
 }

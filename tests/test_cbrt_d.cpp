@@ -29,11 +29,29 @@ extern "C" {
         size_t, const double *, const double *, const double *, double *, double *, double *,     \
         signed char *);                                                                             \
     __attribute__((weak)) void pgloss__physical_from_perceptual_loop_##isa(                         \
-        size_t, pgloss_perceptual_array, const double *, pgloss_physical_out, signed char *);
+        size_t, pgloss_perceptual_array, const double *, pgloss_physical_out, signed char *);       \
+    __attribute__((weak)) void pgloss__physical_from_gloss_loop_##isa(                              \
+        size_t, const double *, const double *, const double *, double *, double *, double *,     \
+        signed char *);                                                                             \
+    __attribute__((weak)) void pgloss__envelope_contrast_loop_##isa(size_t, const double *,         \
+                                                                    double *, signed char *);       \
+    __attribute__((weak)) void pgloss__match_gloss_loop_##isa(                                      \
+        size_t, const double *, const double *, const double *, double *, double *, signed char *); \
+    __attribute__((weak)) void pgloss__check_physical_loop_##isa(size_t, pgloss_physical_array,     \
+                                                                 double, signed char *);            \
+    __attribute__((weak)) void pgloss__check_perceptual_loop_##isa(                                 \
+        size_t, pgloss_perceptual_array, const double *, signed char *);                            \
+    __attribute__((weak)) void pgloss__perceptual_from_physical_loop_##isa(                         \
+        size_t, pgloss_physical_array, const double *, pgloss_perceptual_out, signed char *);       \
+    __attribute__((weak)) void pgloss__rgb_from_lab_loop_##isa(                                     \
+        size_t, pgloss_lab_array, const double *, pgloss_rgb_out_d, signed char *);                 \
+    __attribute__((weak)) void pgloss__lab_from_rgb_loop_##isa(                                     \
+        size_t, pgloss_rgb_array_d, const double *, pgloss_lab_out, signed char *);
 DECLARE_LOOPS(baseline)
 DECLARE_LOOPS(avx2)
 DECLARE_LOOPS(avx512)
 const double *pgloss__from_xyz_matrix(pgloss_color_space space);
+const double *pgloss__to_xyz_matrix(pgloss_color_space space);
 }
 
 namespace {
@@ -157,6 +175,14 @@ struct Isa {
     pgloss_isa isa;
     decltype(&pgloss__gloss_from_physical_loop_baseline) gloss;
     decltype(&pgloss__physical_from_perceptual_loop_baseline) physical;
+    decltype(&pgloss__physical_from_gloss_loop_baseline) from_gloss;
+    decltype(&pgloss__envelope_contrast_loop_baseline) envelope;
+    decltype(&pgloss__match_gloss_loop_baseline) match;
+    decltype(&pgloss__check_physical_loop_baseline) check_physical;
+    decltype(&pgloss__check_perceptual_loop_baseline) check_perceptual;
+    decltype(&pgloss__perceptual_from_physical_loop_baseline) to_perceptual;
+    decltype(&pgloss__rgb_from_lab_loop_baseline) rgb_from_lab;
+    decltype(&pgloss__lab_from_rgb_loop_baseline) lab_from_rgb;
 };
 
 std::vector<Isa> isas() {
@@ -165,12 +191,16 @@ std::vector<Isa> isas() {
     double x = 0.5, L, c, d;
     signed char st;
     EXPECT_EQ(pgloss_gloss_from_physical_batch(1, &x, &x, &x, &L, &c, &d, &st), PGLOSS_WARN_ALPHA_UNTRUSTED);
-    return {{"baseline", PGLOSS_ISA_BASELINE, pgloss__gloss_from_physical_loop_baseline,
-             pgloss__physical_from_perceptual_loop_baseline},
-            {"avx2", PGLOSS_ISA_AVX2, pgloss__gloss_from_physical_loop_avx2,
-             pgloss__physical_from_perceptual_loop_avx2},
-            {"avx512", PGLOSS_ISA_AVX512, pgloss__gloss_from_physical_loop_avx512,
-             pgloss__physical_from_perceptual_loop_avx512}};
+#define ISA_LOOPS(isa)                                                                                    \
+    pgloss__gloss_from_physical_loop_##isa, pgloss__physical_from_perceptual_loop_##isa,                    \
+        pgloss__physical_from_gloss_loop_##isa, pgloss__envelope_contrast_loop_##isa,                       \
+        pgloss__match_gloss_loop_##isa, pgloss__check_physical_loop_##isa,                                  \
+        pgloss__check_perceptual_loop_##isa, pgloss__perceptual_from_physical_loop_##isa,                   \
+        pgloss__rgb_from_lab_loop_##isa, pgloss__lab_from_rgb_loop_##isa
+    return {{"baseline", PGLOSS_ISA_BASELINE, ISA_LOOPS(baseline)},
+            {"avx2", PGLOSS_ISA_AVX2, ISA_LOOPS(avx2)},
+            {"avx512", PGLOSS_ISA_AVX512, ISA_LOOPS(avx512)}};
+#undef ISA_LOOPS
 }
 
 // Values that reach every check: negatives, zeros, subnormals, NaN, ±Inf, huge, the ε and
@@ -295,6 +325,250 @@ TEST(PerceptualLoops, PhysicalFromPerceptualEqualsScalarOnEveryIsa) {
     }
     EXPECT_GE(tested, 1);
     std::printf("physical_from_perceptual loops tested on %d ISA(s)\n", tested);
+}
+
+// The other loops, each against its scalar function in the same way: every ISA built and run
+// by the CPU, every length of kSizes, the adversarial pick() values (every status reached:
+// counted), every colour space where the function takes one.
+
+// Runs body(isa, n) for each ISA the CPU has (loop non-NULL) and each length; returns the ISAs.
+template <class Get, class Body>
+int each_isa(Get get, Body body) {
+    int tested = 0;
+    for (const Isa &I : isas()) {
+        if (!get(I) || !pgloss_isa_supported(I.isa)) continue;  // reported above
+        ++tested;
+        for (size_t n : kSizes) body(I, n);
+    }
+    EXPECT_GE(tested, 1);
+    return tested;
+}
+
+// The statuses seen, so that a test can show it reached the ones it means to.
+struct Seen {
+    std::vector<int> v;
+    void add(int s) {
+        if (std::find(v.begin(), v.end(), s) == v.end()) v.push_back(s);
+    }
+    bool has(pgloss_status s) const { return std::find(v.begin(), v.end(), int(s)) != v.end(); }
+};
+
+TEST(PerceptualLoops, PhysicalFromGlossEqualsScalarOnEveryIsa) {
+    std::mt19937_64 rng(20);
+    Seen seen;
+    each_isa([](const Isa &I) { return I.from_gloss; }, [&](const Isa &I, size_t n) {
+        std::vector<double> L(n), c(n), d(n), rd(n), rs(n), al(n);
+        std::vector<signed char> st(n);
+        for (size_t j = 0; j < n; ++j)
+            L[j] = pick(rng, -5.0, 105.0), c[j] = pick(rng, -0.01, 0.2), d[j] = pick(rng, 0.7, 1.01);
+        I.from_gloss(n, L.data(), c.data(), d.data(), rd.data(), rs.data(), al.data(), st.data());
+        for (size_t j = 0; j < n; ++j) {
+            double x, y, z;
+            const pgloss_status want = pgloss_physical_from_gloss(L[j], c[j], d[j], &x, &y, &z);
+            seen.add(want);
+            ASSERT_EQ(int(st[j]), int(want)) << I.name << " n=" << n << " j=" << j;
+            ASSERT_TRUE(same_bits(rd[j], x) && same_bits(rs[j], y) && same_bits(al[j], z))
+                << I.name << " j=" << j << " L=" << L[j] << " c=" << c[j] << " d=" << d[j];
+        }
+    });
+    for (pgloss_status s : {PGLOSS_OK, PGLOSS_WARN_ALPHA_UNTRUSTED, PGLOSS_ERR_NONFINITE, PGLOSS_ERR_LIGHTNESS,
+                            PGLOSS_ERR_NEGATIVE, PGLOSS_ERR_ALPHA})
+        EXPECT_TRUE(seen.has(s)) << pgloss_status_name(s);
+}
+
+TEST(PerceptualLoops, EnvelopeEqualsScalarOnEveryIsa) {
+    std::mt19937_64 rng(21);
+    Seen seen;
+    each_isa([](const Isa &I) { return I.envelope; }, [&](const Isa &I, size_t n) {
+        std::vector<double> L(n), cm(n);
+        std::vector<signed char> st(n);
+        for (size_t j = 0; j < n; ++j) L[j] = pick(rng, -5.0, 105.0);
+        I.envelope(n, L.data(), cm.data(), st.data());
+        for (size_t j = 0; j < n; ++j) {
+            double x;
+            const pgloss_status want = pgloss_envelope_contrast(L[j], &x);
+            seen.add(want);
+            ASSERT_EQ(int(st[j]), int(want)) << I.name << " n=" << n << " j=" << j;
+            ASSERT_TRUE(same_bits(cm[j], x)) << I.name << " j=" << j << " L=" << L[j];
+        }
+    });
+    for (pgloss_status s : {PGLOSS_OK, PGLOSS_ERR_NONFINITE, PGLOSS_ERR_LIGHTNESS})
+        EXPECT_TRUE(seen.has(s)) << pgloss_status_name(s);
+}
+
+TEST(PerceptualLoops, MatchGlossEqualsScalarOnEveryIsa) {
+    std::mt19937_64 rng(22);
+    Seen seen;
+    each_isa([](const Isa &I) { return I.match; }, [&](const Isa &I, size_t n) {
+        std::vector<double> rd(n), rs(n), L(n), od(n), os(n);
+        std::vector<signed char> st(n);
+        for (size_t j = 0; j < n; ++j)
+            rd[j] = pick(rng, -0.01, 1.0), rs[j] = pick(rng, -0.01, 0.4), L[j] = pick(rng, -5.0, 105.0);
+        I.match(n, rd.data(), rs.data(), L.data(), od.data(), os.data(), st.data());
+        for (size_t j = 0; j < n; ++j) {
+            double x, y;
+            const pgloss_status want = pgloss_match_gloss(rd[j], rs[j], L[j], &x, &y);
+            seen.add(want);
+            ASSERT_EQ(int(st[j]), int(want)) << I.name << " n=" << n << " j=" << j;
+            ASSERT_TRUE(same_bits(od[j], x) && same_bits(os[j], y))
+                << I.name << " j=" << j << " rho_d=" << rd[j] << " rho_s=" << rs[j] << " L=" << L[j];
+        }
+    });
+    for (pgloss_status s : {PGLOSS_OK, PGLOSS_ERR_ENVELOPE, PGLOSS_ERR_NONFINITE, PGLOSS_ERR_LIGHTNESS,
+                            PGLOSS_ERR_NEGATIVE})
+        EXPECT_TRUE(seen.has(s)) << pgloss_status_name(s);
+}
+
+// n physical parameter sets from pick(): ρd, ρs, αx, αy (the specials reach FLT_MAX, NaN, ±Inf,
+// negatives, α = 0 and the trusted-α bound).
+struct Sets {
+    std::vector<double> r, g, b, s, ax, ay;
+    Sets(std::mt19937_64 &rng, size_t n) : r(n), g(n), b(n), s(n), ax(n), ay(n) {
+        for (size_t j = 0; j < n; ++j) {
+            r[j] = pick(rng, -0.01, 1.0), g[j] = pick(rng, 0.0, 1.0), b[j] = pick(rng, 0.0, 1.0);
+            s[j] = pick(rng, -0.01, 0.4), ax[j] = pick(rng, -0.01, 0.3), ay[j] = pick(rng, -0.01, 0.3);
+        }
+    }
+    pgloss_physical at(size_t j, bool iso, pgloss_normalization nm) const {
+        return pgloss_physical{{r[j], g[j], b[j]}, s[j], ax[j], iso ? ax[j] : ay[j], nm};
+    }
+    pgloss_physical_array array(bool iso, pgloss_normalization nm) const {
+        return pgloss_physical_array{r.data(), g.data(), b.data(), s.data(), ax.data(), iso ? nullptr : ay.data(), nm};
+    }
+};
+
+TEST(PerceptualLoops, CheckPhysicalEqualsScalarOnEveryIsa) {
+    std::mt19937_64 rng(23);
+    Seen seen;
+    each_isa([](const Isa &I) { return I.check_physical; }, [&](const Isa &I, size_t n) {
+        for (int variant = 0; variant < 3; ++variant) {  // anisotropic, isotropic, unknown normalisation
+            const Sets P(rng, n);
+            const bool iso = variant == 1;
+            const auto nm = variant == 2 ? static_cast<pgloss_normalization>(7) : PGLOSS_NORM_WARD_DUR;
+            std::vector<signed char> st(n);
+            I.check_physical(n, P.array(iso, nm), variant == 2 ? 0.0 : 1.0, st.data());
+            for (size_t j = 0; j < n; ++j) {
+                const pgloss_physical v = P.at(j, iso, nm);
+                const pgloss_status want = pgloss_check_physical(&v);
+                seen.add(want);
+                ASSERT_EQ(int(st[j]), int(want)) << I.name << " variant " << variant << " n=" << n << " j=" << j
+                                                 << " " << v.rho_d[0] << " " << v.rho_d[1] << " " << v.rho_d[2]
+                                                 << " " << v.rho_s << " " << v.alpha_x << " " << v.alpha_y;
+            }
+        }
+    });
+    for (pgloss_status s : {PGLOSS_OK, PGLOSS_WARN_ALPHA_UNTRUSTED, PGLOSS_ERR_NONFINITE, PGLOSS_ERR_NEGATIVE,
+                            PGLOSS_ERR_ALPHA, PGLOSS_ERR_NORMALIZATION, PGLOSS_ERR_ENERGY})
+        EXPECT_TRUE(seen.has(s)) << pgloss_status_name(s);
+}
+
+TEST(PerceptualLoops, PerceptualFromPhysicalEqualsScalarOnEveryIsa) {
+    std::mt19937_64 rng(24);
+    Seen seen;
+    each_isa([](const Isa &I) { return I.to_perceptual; }, [&](const Isa &I, size_t n) {
+        for (int space = 0; space <= 3; ++space) {
+            const auto sp = static_cast<pgloss_color_space>(space);
+            const bool iso = space % 2 == 1;
+            const Sets P(rng, n);
+            std::vector<double> L(n), a(n), b(n), c(n), d(n);
+            std::vector<signed char> st(n);
+            I.to_perceptual(n, P.array(iso, PGLOSS_NORM_WARD), pgloss__to_xyz_matrix(sp),
+                            pgloss_perceptual_out{L.data(), a.data(), b.data(), c.data(), d.data()}, st.data());
+            for (size_t j = 0; j < n; ++j) {
+                const pgloss_physical v = P.at(j, iso, PGLOSS_NORM_WARD);
+                pgloss_perceptual o;
+                const pgloss_status want = pgloss_perceptual_from_physical_ex(&v, sp, &o);
+                seen.add(want);
+                ASSERT_EQ(int(st[j]), int(want)) << I.name << " space " << space << " n=" << n << " j=" << j;
+                ASSERT_TRUE(same_bits(L[j], o.L) && same_bits(a[j], o.a) && same_bits(b[j], o.b) &&
+                            same_bits(c[j], o.c) && same_bits(d[j], o.d))
+                    << I.name << " space " << space << " j=" << j;
+            }
+        }
+    });
+    for (pgloss_status s : {PGLOSS_OK, PGLOSS_WARN_ALPHA_UNTRUSTED, PGLOSS_ERR_NONFINITE, PGLOSS_ERR_NEGATIVE,
+                            PGLOSS_ERR_ALPHA})
+        EXPECT_TRUE(seen.has(s)) << pgloss_status_name(s);
+}
+
+TEST(PerceptualLoops, CheckPerceptualEqualsScalarOnEveryIsa) {
+    std::mt19937_64 rng(25);
+    Seen seen;
+    each_isa([](const Isa &I) { return I.check_perceptual; }, [&](const Isa &I, size_t n) {
+        for (int space = 0; space <= 3; ++space) {
+            const auto sp = static_cast<pgloss_color_space>(space);
+            std::vector<double> L(n), a(n), b(n), c(n), d(n);
+            std::vector<signed char> st(n);
+            for (size_t j = 0; j < n; ++j) {
+                L[j] = pick(rng, -5.0, 105.0), a[j] = pick(rng, -60.0, 60.0), b[j] = pick(rng, -60.0, 60.0);
+                c[j] = pick(rng, -0.01, 0.25), d[j] = pick(rng, 0.7, 1.01);
+            }
+            I.check_perceptual(n, pgloss_perceptual_array{L.data(), a.data(), b.data(), c.data(), d.data()},
+                               pgloss__from_xyz_matrix(sp), st.data());
+            for (size_t j = 0; j < n; ++j) {
+                const pgloss_perceptual v{L[j], a[j], b[j], c[j], d[j]};
+                const pgloss_status want = pgloss_check_perceptual_ex(&v, sp);
+                seen.add(want);
+                ASSERT_EQ(int(st[j]), int(want)) << I.name << " space " << space << " n=" << n << " j=" << j
+                                                 << " L=" << L[j] << " a=" << a[j] << " b=" << b[j]
+                                                 << " c=" << c[j] << " d=" << d[j];
+            }
+        }
+    });
+    for (pgloss_status s : {PGLOSS_OK, PGLOSS_WARN_ALPHA_UNTRUSTED, PGLOSS_ERR_NONFINITE, PGLOSS_ERR_LIGHTNESS,
+                            PGLOSS_ERR_NEGATIVE, PGLOSS_ERR_ALPHA, PGLOSS_ERR_GAMUT, PGLOSS_ERR_ENVELOPE,
+                            PGLOSS_ERR_ENERGY})
+        EXPECT_TRUE(seen.has(s)) << pgloss_status_name(s);
+}
+
+TEST(PerceptualLoops, RgbFromLabAndLabFromRgbEqualScalarOnEveryIsa) {
+    std::mt19937_64 rng(26);
+    Seen to_rgb, to_lab;
+    each_isa([](const Isa &I) { return I.rgb_from_lab && I.lab_from_rgb; }, [&](const Isa &I, size_t n) {
+        for (int space = 0; space <= 3; ++space) {
+            const auto sp = static_cast<pgloss_color_space>(space);
+            std::vector<double> L(n), a(n), b(n), R(n), G(n), B(n), L2(n), a2(n), b2(n);
+            std::vector<signed char> st(n), st2(n);
+            for (size_t j = 0; j < n; ++j)
+                L[j] = pick(rng, -5.0, 105.0), a[j] = pick(rng, -150.0, 150.0), b[j] = pick(rng, -150.0, 150.0);
+            I.rgb_from_lab(n, pgloss_lab_array{L.data(), a.data(), b.data()}, pgloss__from_xyz_matrix(sp),
+                           pgloss_rgb_out_d{R.data(), G.data(), B.data()}, st.data());
+            // back again, the GAMUT elements' negative channels included
+            I.lab_from_rgb(n, pgloss_rgb_array_d{R.data(), G.data(), B.data()}, pgloss__to_xyz_matrix(sp),
+                           pgloss_lab_out{L2.data(), a2.data(), b2.data()}, st2.data());
+            for (size_t j = 0; j < n; ++j) {
+                const double lab[3] = {L[j], a[j], b[j]}, rgb[3] = {R[j], G[j], B[j]};
+                double o[3], o2[3];
+                const pgloss_status want = pgloss_rgb_from_lab_ex(lab, sp, o);
+                const pgloss_status want2 = pgloss_lab_from_rgb_ex(rgb, sp, o2);
+                to_rgb.add(want), to_lab.add(want2);
+                ASSERT_EQ(int(st[j]), int(want)) << I.name << " space " << space << " n=" << n << " j=" << j;
+                ASSERT_TRUE(same_bits(R[j], o[0]) && same_bits(G[j], o[1]) && same_bits(B[j], o[2]))
+                    << I.name << " rgb_from_lab space " << space << " j=" << j;
+                ASSERT_EQ(int(st2[j]), int(want2)) << I.name << " space " << space << " n=" << n << " j=" << j;
+                ASSERT_TRUE(same_bits(L2[j], o2[0]) && same_bits(a2[j], o2[1]) && same_bits(b2[j], o2[2]))
+                    << I.name << " lab_from_rgb space " << space << " j=" << j;
+            }
+        }
+        // lab_from_rgb on its own domain's specials too (NaN, ±Inf, 1e308: NONFINITE results)
+        std::vector<double> r(n), g(n), bb(n), L(n), a(n), b(n);
+        std::vector<signed char> st(n);
+        for (size_t j = 0; j < n; ++j) r[j] = pick(rng, 0.0, 1.0), g[j] = pick(rng, 0.0, 1.0), bb[j] = pick(rng, 0.0, 1.0);
+        I.lab_from_rgb(n, pgloss_rgb_array_d{r.data(), g.data(), bb.data()}, pgloss__to_xyz_matrix(PGLOSS_COLOR_SPACE_ACESCG),
+                       pgloss_lab_out{L.data(), a.data(), b.data()}, st.data());
+        for (size_t j = 0; j < n; ++j) {
+            const double rgb[3] = {r[j], g[j], bb[j]};
+            double o[3];
+            const pgloss_status want = pgloss_lab_from_rgb_ex(rgb, PGLOSS_COLOR_SPACE_ACESCG, o);
+            to_lab.add(want);
+            ASSERT_EQ(int(st[j]), int(want)) << I.name << " n=" << n << " j=" << j;
+            ASSERT_TRUE(same_bits(L[j], o[0]) && same_bits(a[j], o[1]) && same_bits(b[j], o[2])) << I.name << " j=" << j;
+        }
+    });
+    for (pgloss_status s : {PGLOSS_OK, PGLOSS_ERR_NONFINITE, PGLOSS_ERR_LIGHTNESS, PGLOSS_ERR_GAMUT})
+        EXPECT_TRUE(to_rgb.has(s)) << "rgb_from_lab " << pgloss_status_name(s);
+    for (pgloss_status s : {PGLOSS_OK, PGLOSS_ERR_NONFINITE, PGLOSS_ERR_NEGATIVE})
+        EXPECT_TRUE(to_lab.has(s)) << "lab_from_rgb " << pgloss_status_name(s);
 }
 
 }  // namespace

@@ -1633,6 +1633,109 @@ TEST(Vectors, batch_equals_scalar_bit_for_bit) {
             ++compared;
         }
     }
+    // The other batches, one case per call (each its own normalisation / space).
+    if (const json *doc = doc_or_fail("gloss.json")) {
+        for (const json *cp : cases_of(*doc, "physical_from_gloss")) {
+            const json &in = (*cp)["input"];
+            if (in.contains("null")) continue;
+            const double L = num(in["L"]), c = num(in["c"]), d = num(in["d"]);
+            double o[3], w[3];
+            signed char st = 99;
+            pgloss_physical_from_gloss_batch(1, &L, &c, &d, &o[0], &o[1], &o[2], &st);
+            EXPECT_EQ(int(st), int(pgloss_physical_from_gloss(L, c, d, &w[0], &w[1], &w[2]))) << case_id(*cp);
+            EXPECT_TRUE(same_bits(o[0], w[0]) && same_bits(o[1], w[1]) && same_bits(o[2], w[2])) << case_id(*cp);
+            ++compared;
+        }
+        for (const json *cp : cases_of(*doc, "envelope_contrast")) {
+            const json &in = (*cp)["input"];
+            if (in.contains("null")) continue;
+            const double L = num(in["L"]);
+            double o, w;
+            signed char st = 99;
+            pgloss_envelope_contrast_batch(1, &L, &o, &st);
+            EXPECT_EQ(int(st), int(pgloss_envelope_contrast(L, &w))) << case_id(*cp);
+            EXPECT_TRUE(same_bits(o, w)) << case_id(*cp);
+            ++compared;
+        }
+        for (const json *cp : cases_of(*doc, "match_gloss")) {
+            const json &in = (*cp)["input"];
+            if (in.contains("null")) continue;
+            const double rd = num(in["rho_d"]), rs = num(in["rho_s"]), L = num(in["L_target"]);
+            double o[2], w[2];
+            signed char st = 99;
+            pgloss_match_gloss_batch(1, &rd, &rs, &L, &o[0], &o[1], &st);
+            EXPECT_EQ(int(st), int(pgloss_match_gloss(rd, rs, L, &w[0], &w[1]))) << case_id(*cp);
+            EXPECT_TRUE(same_bits(o[0], w[0]) && same_bits(o[1], w[1])) << case_id(*cp);
+            ++compared;
+        }
+    }
+    if (const json *doc = doc_or_fail("validity.json")) {
+        for (const json *cp : cases_of(*doc, "check_physical")) {
+            const json &in = (*cp)["input"];
+            if (in.contains("null")) continue;
+            const pgloss_physical p = physical_from(in["p"]);
+            // the normalisation from the int (an unknown one read back as the enum is UB in C++)
+            const pgloss_physical_array pa{&p.rho_d[0], &p.rho_d[1], &p.rho_d[2], &p.rho_s, &p.alpha_x, &p.alpha_y,
+                                           static_cast<pgloss_normalization>(in["p"]["normalization"].get<int>())};
+            signed char st = 99;
+            pgloss_check_physical_batch(1, &pa, &st);
+            EXPECT_EQ(int(st), int(pgloss_check_physical(&p))) << case_id(*cp);
+            ++compared;
+        }
+    }
+    for (const char *file : {"validity.json", "color_space.json"}) {
+        const json *doc = doc_or_fail(file);
+        if (!doc) continue;
+        const bool ex = std::string(file) == "color_space.json";
+        for (const json *cp : cases_of(*doc, ex ? "check_perceptual_ex" : "check_perceptual")) {
+            const json &in = (*cp)["input"];
+            const int space = ex ? in["space"].get<int>() : 0;
+            if (in.contains("null") || !known_space(space)) continue;
+            const pgloss_perceptual v = perceptual_from(in["q"]);
+            signed char st = 99;
+            const auto sp = static_cast<pgloss_color_space>(space);
+            pgloss_check_perceptual_batch_ex(1, pgloss_perceptual_array{&v.L, &v.a, &v.b, &v.c, &v.d}, sp, &st);
+            EXPECT_EQ(int(st), int(pgloss_check_perceptual_ex(&v, sp))) << case_id(*cp);
+            ++compared;
+        }
+    }
+    for (const char *file : {"perceptual_material.json", "color_space.json"}) {
+        const json *doc = doc_or_fail(file);
+        if (!doc) continue;
+        const bool ex = std::string(file) == "color_space.json";
+        for (const json *cp : cases_of(*doc, ex ? "perceptual_from_physical_ex" : "perceptual_from_physical")) {
+            const json &in = (*cp)["input"];
+            const int space = ex ? in["space"].get<int>() : 0;
+            if (in.contains("null") || !known_space(space)) continue;
+            const pgloss_physical p = physical_from(in["p"]);
+            // the normalisation from the int (an unknown one read back as the enum is UB in C++)
+            const pgloss_physical_array pa{&p.rho_d[0], &p.rho_d[1], &p.rho_d[2], &p.rho_s, &p.alpha_x, &p.alpha_y,
+                                           static_cast<pgloss_normalization>(in["p"]["normalization"].get<int>())};
+            double L, a, b, c, d;
+            signed char st = 99;
+            const auto sp = static_cast<pgloss_color_space>(space);
+            pgloss_perceptual_from_physical_batch_ex(1, &pa, sp, pgloss_perceptual_out{&L, &a, &b, &c, &d}, &st);
+            pgloss_perceptual o;
+            EXPECT_EQ(int(st), int(pgloss_perceptual_from_physical_ex(&p, sp, &o))) << case_id(*cp);
+            EXPECT_TRUE(same_bits(L, o.L) && same_bits(a, o.a) && same_bits(b, o.b) && same_bits(c, o.c) &&
+                        same_bits(d, o.d))
+                << case_id(*cp);
+            ++compared;
+        }
+    }
+    if (const json *doc = doc_or_fail("color.json")) {
+        for (const json *cp : cases_of(*doc, "lab_from_rgb")) {
+            const json &in = (*cp)["input"];
+            if (in.contains("null")) continue;
+            const double rgb[3] = {num(in["rgb"][0]), num(in["rgb"][1]), num(in["rgb"][2])};
+            double L, a, b, w[3];
+            signed char st = 99;
+            pgloss_lab_from_rgb_batch(1, pgloss_rgb_array_d{&rgb[0], &rgb[1], &rgb[2]}, pgloss_lab_out{&L, &a, &b}, &st);
+            EXPECT_EQ(int(st), int(pgloss_lab_from_rgb(rgb, w))) << case_id(*cp);
+            EXPECT_TRUE(same_bits(L, w[0]) && same_bits(a, w[1]) && same_bits(b, w[2])) << case_id(*cp);
+            ++compared;
+        }
+    }
     EXPECT_GT(compared, 200);
 }
 

@@ -56,10 +56,9 @@ const double *pgloss__from_xyz_matrix(pgloss_color_space space)
     return &SPACES[space].from_xyz[0][0];
 }
 
-static void mul3(const double M[3][3], const double v[3], double out[3])
+const double *pgloss__to_xyz_matrix(pgloss_color_space space)
 {
-    for (int r = 0; r < 3; ++r)
-        out[r] = M[r][0] * v[0] + M[r][1] * v[1] + M[r][2] * v[2];
+    return &SPACES[space].to_xyz[0][0];
 }
 
 pgloss_status pgloss_rgb_from_lab_ex(const double lab[3], pgloss_color_space space, double rgb[3])
@@ -93,19 +92,11 @@ pgloss_status pgloss_lab_from_rgb_ex(const double rgb[3], pgloss_color_space spa
         return PGLOSS_ERR_NULL;
     if (!pgloss__valid_color_space(space))
         return PGLOSS_ERR_ARGUMENT;
-    if (!isfinite(rgb[0]) || !isfinite(rgb[1]) || !isfinite(rgb[2]))
-        return PGLOSS_ERR_NONFINITE;
-    if (rgb[0] < 0.0 || rgb[1] < 0.0 || rgb[2] < 0.0)
-        return PGLOSS_ERR_NEGATIVE;
-    double xyz[3];
-    mul3(SPACES[space].to_xyz, rgb, xyz);
-    const double fx = pgloss__lab_f_d(xyz[0] / PGLOSS__WHITE_X), fy = pgloss__lab_f_d(xyz[1]),
-                 fz = pgloss__lab_f_d(xyz[2] / PGLOSS__WHITE_Z);
-    const double out[3] = {116.0 * fy - 16.0, 500.0 * (fx - fy), 200.0 * (fy - fz)};
-    if (!isfinite(out[0]) || !isfinite(out[1]) || !isfinite(out[2]))
-        return PGLOSS_ERR_NONFINITE;
-    lab[0] = out[0]; lab[1] = out[1]; lab[2] = out[2];
-    return PGLOSS_OK;
+    /* The batch's per-element code (perceptual_d.h): the same bits. */
+    double Y;
+    return (pgloss_status)pgloss__lab_from_rgb_k(rgb[0], rgb[1], rgb[2],
+                                                 pgloss__to_xyz_matrix(space), &lab[0], &lab[1],
+                                                 &lab[2], &Y);
 }
 
 pgloss_status pgloss_lab_from_rgb(const double rgb[3], double lab[3])

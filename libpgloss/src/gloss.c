@@ -60,25 +60,9 @@ pgloss_status pgloss_physical_from_gloss(double L, double c, double d,
         if (alpha) *alpha = 0.0;
         return PGLOSS_ERR_NULL;
     }
-    *rho_d = *rho_s = *alpha = 0.0;
-    if (!isfinite(L) || !isfinite(c) || !isfinite(d))
-        return PGLOSS_ERR_NONFINITE;
-    if (L < 0.0 || L > 100.0)
-        return PGLOSS_ERR_LIGHTNESS;
-    if (c < 0.0)
-        return PGLOSS_ERR_NEGATIVE;
-    if (!(d < 1.0))
-        return PGLOSS_ERR_ALPHA;
-    double s;
-    const double y = pgloss__luminance_d(L);         /* eq. 6 */
-    /* eq. 7; c ≳ 5e102 overflows ρs: NONFINITE, not a silent ρs = 0. */
-    const pgloss_status ss = pgloss_specular_from_contrast(y, c, &s);
-    if (ss != PGLOSS_OK)
-        return ss;
-    *rho_d = y;
-    *rho_s = s;
-    *alpha = 1.0 - d;                                /* eq. 8 */
-    return (pgloss_status)pgloss__alpha_status_d(*alpha);
+    /* The batch's per-element code (perceptual_d.h): the same bits. c ≳ 5e102 overflows ρs
+     * (eq. 7): NONFINITE, not a silent ρs = 0. */
+    return (pgloss_status)pgloss__physical_from_gloss_k(L, c, d, rho_d, rho_s, alpha);
 }
 
 pgloss_status pgloss_gloss_distance(double c1, double d1, double c2, double d2, double *D)
@@ -99,15 +83,8 @@ pgloss_status pgloss_envelope_contrast(double L, double *c_max)
 {
     if (!c_max)
         return PGLOSS_ERR_NULL;
-    *c_max = 0.0;
-    if (!isfinite(L))
-        return PGLOSS_ERR_NONFINITE;
-    if (L < 0.0 || L > 100.0)
-        return PGLOSS_ERR_LIGHTNESS;
-    double y;
-    pgloss_luminance_from_lightness(L, &y);
-    /* ρs = 1 - ρd in eq. 4: cbrt(1 - ρd/2) - cbrt(ρd/2), again in quotient form. */
-    return pgloss_contrast_gloss(y, 1.0 - y, c_max);
+    /* ρs = 1 - ρd in eq. 4 (perceptual_d.h, the batch's per-element code: the same bits) */
+    return (pgloss_status)pgloss__envelope_k(L, c_max);
 }
 
 pgloss_status pgloss_match_gloss(double rho_d, double rho_s, double L_target,
@@ -118,24 +95,8 @@ pgloss_status pgloss_match_gloss(double rho_d, double rho_s, double L_target,
         if (rho_s_out) *rho_s_out = 0.0;
         return PGLOSS_ERR_NULL;
     }
-    *rho_d_out = *rho_s_out = 0.0;
-    if (!isfinite(rho_d) || !isfinite(rho_s) || !isfinite(L_target))
-        return PGLOSS_ERR_NONFINITE;
-    if (rho_d < 0.0 || rho_s < 0.0)
-        return PGLOSS_ERR_NEGATIVE;
-    if (L_target < 0.0 || L_target > 100.0)
-        return PGLOSS_ERR_LIGHTNESS;
-    double c, y, s;
-    const pgloss_status cs = pgloss_contrast_gloss(rho_d, rho_s, &c);
-    if (cs != PGLOSS_OK)
-        return cs; /* ρs + ρd/2 beyond DBL_MAX */
-    pgloss_luminance_from_lightness(L_target, &y);
-    const pgloss_status st = pgloss_specular_from_contrast(y, c, &s);
-    if (st != PGLOSS_OK)
-        return st;
-    *rho_d_out = y;
-    *rho_s_out = s;
-    return (y + s > 1.0 + PGLOSS_BOUNDARY_TOLERANCE) ? PGLOSS_ERR_ENVELOPE : PGLOSS_OK;
+    /* The batch's per-element code (perceptual_d.h): the same bits. */
+    return (pgloss_status)pgloss__match_gloss_k(rho_d, rho_s, L_target, rho_d_out, rho_s_out);
 }
 
 pgloss_status pgloss_isogloss_contour(double c0, double d0, double D, size_t n,

@@ -42,6 +42,11 @@ static inline int pgloss__valid_color_space(pgloss_color_space space)
     return (int)space >= (int)PGLOSS_COLOR_SPACE_LINEAR_REC709 && (int)space <= (int)PGLOSS_COLOR_SPACE_LINEAR_REC2020;
 }
 
+static inline int pgloss__valid_normalization(pgloss_normalization n)
+{
+    return n == PGLOSS_NORM_WARD || n == PGLOSS_NORM_WARD_DUR || n == PGLOSS_NORM_BOUNDED;
+}
+
 static inline double pgloss__luminance3(double r, double g, double b)
 {
     return PGLOSS_LUMA_R * r + PGLOSS_LUMA_G * g + PGLOSS_LUMA_B * b;

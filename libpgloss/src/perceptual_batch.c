@@ -2,10 +2,10 @@
 // SPDX-License-Identifier: Apache-2.0
 /* The batched perceptual and colour functions (pgloss/perceptual_batch.h): argument checks,
  * then one driver (run) over chunks of elements, each function giving the code of a chunk.
- * gloss_from_physical and physical_from_perceptual run the vectorised loops of
- * perceptual_batch_isa.c, on the best ISA of the running CPU (pgloss_isa_best); the others
- * call the scalar function per element. Either way element j gets the scalar function's
- * status and outputs, bit for bit (perceptual_d.h). */
+ * Every function runs the vectorised loops of perceptual_batch_isa.c, on the best ISA of the
+ * running CPU (pgloss_isa_best): the per-element code of the scalar functions
+ * (perceptual_d.h), so that element j gets the scalar function's status and outputs, bit for
+ * bit. */
 #include "internal.h"
 #include "perceptual_batch_isa.h"
 #include "perceptual_d.h"
@@ -84,18 +84,22 @@ static pgloss_isa pick_isa(void)
 
 /* ---- gloss space (eqs. 3–8) ------------------------------------------------------------- */
 
-/* Up to three inputs and three outputs of one element-wise function. */
+/* Up to three inputs and three outputs of one element-wise function, and its loop. */
+typedef void (*loop3_fn)(size_t, const double *, const double *, const double *, double *,
+                         double *, double *, signed char *);
 typedef struct cols {
     const double *x0, *x1, *x2;
     double *y0, *y1, *y2;
-    void (*gloss_loop)(size_t, const double *, const double *, const double *, double *,
-                       double *, double *, signed char *);
+    loop3_fn loop3;
+    void (*envelope_loop)(size_t, const double *, double *, signed char *);
+    void (*match_loop)(size_t, const double *, const double *, const double *, double *,
+                       double *, signed char *);
 } cols;
 
-static void gloss_from_physical_chunk(const void *ctx, size_t b, size_t m, signed char *st)
+static void loop3_chunk(const void *ctx, size_t b, size_t m, signed char *st)
 {
     const cols *k = ctx;
-    k->gloss_loop(m, k->x0 + b, k->x1 + b, k->x2 + b, k->y0 + b, k->y1 + b, k->y2 + b, st);
+    k->loop3(m, k->x0 + b, k->x1 + b, k->x2 + b, k->y0 + b, k->y1 + b, k->y2 + b, st);
 }
 
 pgloss_status pgloss_gloss_from_physical_batch(size_t n, const double *rho_d, const double *rho_s,
@@ -106,16 +110,9 @@ pgloss_status pgloss_gloss_from_physical_batch(size_t n, const double *rho_d, co
         return PGLOSS_OK;
     if (!rho_d || !rho_s || !alpha || !L || !c || !d)
         return PGLOSS_ERR_NULL;
-    const cols k = {rho_d, rho_s, alpha, L, c, d, PICK_LOOP(pgloss__gloss_from_physical_loop)};
-    return run(n, status, gloss_from_physical_chunk, &k);
-}
-
-static void physical_from_gloss_chunk(const void *ctx, size_t b, size_t m, signed char *st)
-{
-    const cols *k = ctx;
-    for (size_t j = b; j < b + m; ++j)
-        st[j - b] = (signed char)pgloss_physical_from_gloss(k->x0[j], k->x1[j], k->x2[j],
-                                                            &k->y0[j], &k->y1[j], &k->y2[j]);
+    const cols k = {rho_d, rho_s, alpha, L, c, d, PICK_LOOP(pgloss__gloss_from_physical_loop),
+                    NULL, NULL};
+    return run(n, status, loop3_chunk, &k);
 }
 
 pgloss_status pgloss_physical_from_gloss_batch(size_t n, const double *L, const double *c,
@@ -126,15 +123,15 @@ pgloss_status pgloss_physical_from_gloss_batch(size_t n, const double *L, const 
         return PGLOSS_OK;
     if (!L || !c || !d || !rho_d || !rho_s || !alpha)
         return PGLOSS_ERR_NULL;
-    const cols k = {L, c, d, rho_d, rho_s, alpha, NULL};
-    return run(n, status, physical_from_gloss_chunk, &k);
+    const cols k = {L, c, d, rho_d, rho_s, alpha, PICK_LOOP(pgloss__physical_from_gloss_loop),
+                    NULL, NULL};
+    return run(n, status, loop3_chunk, &k);
 }
 
 static void envelope_chunk(const void *ctx, size_t b, size_t m, signed char *st)
 {
     const cols *k = ctx;
-    for (size_t j = b; j < b + m; ++j)
-        st[j - b] = (signed char)pgloss_envelope_contrast(k->x0[j], &k->y0[j]);
+    k->envelope_loop(m, k->x0 + b, k->y0 + b, st);
 }
 
 pgloss_status pgloss_envelope_contrast_batch(size_t n, const double *L, double *c_max,
@@ -144,16 +141,15 @@ pgloss_status pgloss_envelope_contrast_batch(size_t n, const double *L, double *
         return PGLOSS_OK;
     if (!L || !c_max)
         return PGLOSS_ERR_NULL;
-    const cols k = {L, NULL, NULL, c_max, NULL, NULL, NULL};
+    const cols k = {L, NULL, NULL, c_max, NULL, NULL, NULL,
+                    PICK_LOOP(pgloss__envelope_contrast_loop), NULL};
     return run(n, status, envelope_chunk, &k);
 }
 
 static void match_chunk(const void *ctx, size_t b, size_t m, signed char *st)
 {
     const cols *k = ctx;
-    for (size_t j = b; j < b + m; ++j)
-        st[j - b] = (signed char)pgloss_match_gloss(k->x0[j], k->x1[j], k->x2[j], &k->y0[j],
-                                                    &k->y1[j]);
+    k->match_loop(m, k->x0 + b, k->x1 + b, k->x2 + b, k->y0 + b, k->y1 + b, st);
 }
 
 pgloss_status pgloss_match_gloss_batch(size_t n, const double *rho_d, const double *rho_s,
@@ -164,7 +160,8 @@ pgloss_status pgloss_match_gloss_batch(size_t n, const double *rho_d, const doub
         return PGLOSS_OK;
     if (!rho_d || !rho_s || !L_target || !rho_d_out || !rho_s_out)
         return PGLOSS_ERR_NULL;
-    const cols k = {rho_d, rho_s, L_target, rho_d_out, rho_s_out, NULL, NULL};
+    const cols k = {rho_d, rho_s, L_target, rho_d_out, rho_s_out, NULL, NULL, NULL,
+                    PICK_LOOP(pgloss__match_gloss_loop)};
     return run(n, status, match_chunk, &k);
 }
 
@@ -175,28 +172,18 @@ static int physical_array_ok(const pgloss_physical_array *p)
     return p && p->rho_d_r && p->rho_d_g && p->rho_d_b && p->rho_s && p->alpha_x;
 }
 
-static pgloss_physical physical_at(const pgloss_physical_array *p, size_t j)
+/* The arrays from element b on (alpha_y NULL stays NULL: isotropic). */
+static pgloss_physical_array physical_from(const pgloss_physical_array *p, size_t b)
 {
-    pgloss_physical q;
-    q.rho_d[0] = p->rho_d_r[j];
-    q.rho_d[1] = p->rho_d_g[j];
-    q.rho_d[2] = p->rho_d_b[j];
-    q.rho_s = p->rho_s[j];
-    q.alpha_x = p->alpha_x[j];
-    q.alpha_y = p->alpha_y ? p->alpha_y[j] : p->alpha_x[j];
-    q.normalization = p->normalization;
-    return q;
+    const pgloss_physical_array r = {p->rho_d_r + b, p->rho_d_g + b, p->rho_d_b + b,
+                                     p->rho_s + b, p->alpha_x + b,
+                                     p->alpha_y ? p->alpha_y + b : NULL, p->normalization};
+    return r;
 }
 
 static int perceptual_array_ok(pgloss_perceptual_array q)
 {
     return q.L && q.a && q.b && q.c && q.d;
-}
-
-static pgloss_perceptual perceptual_at(pgloss_perceptual_array q, size_t j)
-{
-    const pgloss_perceptual v = {q.L[j], q.a[j], q.b[j], q.c[j], q.d[j]};
-    return v;
 }
 
 /* The arrays and options of one call over parameter sets or colours. */
@@ -210,15 +197,20 @@ typedef struct sets {
     double *out[3];
     void (*physical_loop)(size_t, pgloss_perceptual_array, const double *, pgloss_physical_out,
                           signed char *);
+    void (*check_physical_loop)(size_t, pgloss_physical_array, double, signed char *);
+    void (*check_perceptual_loop)(size_t, pgloss_perceptual_array, const double *,
+                                  signed char *);
+    void (*perceptual_loop)(size_t, pgloss_physical_array, const double *, pgloss_perceptual_out,
+                            signed char *);
+    void (*rgb_loop)(size_t, pgloss_lab_array, const double *, pgloss_rgb_out_d, signed char *);
+    void (*lab_loop)(size_t, pgloss_rgb_array_d, const double *, pgloss_lab_out, signed char *);
 } sets;
 
 static void check_physical_chunk(const void *ctx, size_t b, size_t m, signed char *st)
 {
     const sets *k = ctx;
-    for (size_t j = b; j < b + m; ++j) {
-        const pgloss_physical v = physical_at(k->p, j);
-        st[j - b] = (signed char)pgloss_check_physical(&v);
-    }
+    const double norm_ok = pgloss__valid_normalization(k->p->normalization);
+    k->check_physical_loop(m, physical_from(k->p, b), norm_ok, st);
 }
 
 pgloss_status pgloss_check_physical_batch(size_t n, const pgloss_physical_array *p,
@@ -228,17 +220,20 @@ pgloss_status pgloss_check_physical_batch(size_t n, const pgloss_physical_array 
         return PGLOSS_OK;
     if (!physical_array_ok(p))
         return PGLOSS_ERR_NULL;
-    const sets k = {.p = p};
+    const sets k = {.p = p, .check_physical_loop = PICK_LOOP(pgloss__check_physical_loop)};
     return run(n, status, check_physical_chunk, &k);
+}
+
+static pgloss_perceptual_array perceptual_from(pgloss_perceptual_array q, size_t b)
+{
+    const pgloss_perceptual_array r = {q.L + b, q.a + b, q.b + b, q.c + b, q.d + b};
+    return r;
 }
 
 static void check_perceptual_chunk(const void *ctx, size_t b, size_t m, signed char *st)
 {
     const sets *k = ctx;
-    for (size_t j = b; j < b + m; ++j) {
-        const pgloss_perceptual v = perceptual_at(k->q, j);
-        st[j - b] = (signed char)pgloss_check_perceptual_ex(&v, k->space);
-    }
+    k->check_perceptual_loop(m, perceptual_from(k->q, b), pgloss__from_xyz_matrix(k->space), st);
 }
 
 pgloss_status pgloss_check_perceptual_batch_ex(size_t n, pgloss_perceptual_array q,
@@ -250,7 +245,8 @@ pgloss_status pgloss_check_perceptual_batch_ex(size_t n, pgloss_perceptual_array
         return PGLOSS_ERR_NULL;
     if (!pgloss__valid_color_space(space))
         return PGLOSS_ERR_ARGUMENT;
-    const sets k = {.q = q, .space = space};
+    const sets k = {.q = q, .space = space,
+                    .check_perceptual_loop = PICK_LOOP(pgloss__check_perceptual_loop)};
     return run(n, status, check_perceptual_chunk, &k);
 }
 
@@ -258,12 +254,6 @@ pgloss_status pgloss_check_perceptual_batch(size_t n, pgloss_perceptual_array q,
                                             signed char *status)
 {
     return pgloss_check_perceptual_batch_ex(n, q, PGLOSS_COLOR_SPACE_LINEAR_REC709, status);
-}
-
-static pgloss_perceptual_array perceptual_from(pgloss_perceptual_array q, size_t b)
-{
-    const pgloss_perceptual_array r = {q.L + b, q.a + b, q.b + b, q.c + b, q.d + b};
-    return r;
 }
 
 static void physical_from_perceptual_chunk(const void *ctx, size_t b, size_t m, signed char *st)
@@ -287,8 +277,7 @@ pgloss_status pgloss_physical_from_perceptual_batch_ex(size_t n, pgloss_perceptu
         return PGLOSS_ERR_NULL;
     if (!pgloss__valid_color_space(space))
         return PGLOSS_ERR_ARGUMENT;
-    if (normalization != PGLOSS_NORM_WARD && normalization != PGLOSS_NORM_WARD_DUR &&
-        normalization != PGLOSS_NORM_BOUNDED)
+    if (!pgloss__valid_normalization(normalization))
         return PGLOSS_ERR_NORMALIZATION;
     const sets k = {.q = q, .space = space, .p_out = p,
                     .physical_loop = PICK_LOOP(pgloss__physical_from_perceptual_loop)};
@@ -307,16 +296,8 @@ static void perceptual_from_physical_chunk(const void *ctx, size_t b, size_t m, 
 {
     const sets *k = ctx;
     const pgloss_perceptual_out q = k->q_out;
-    for (size_t j = b; j < b + m; ++j) {
-        const pgloss_physical v = physical_at(k->p, j);
-        pgloss_perceptual o;
-        st[j - b] = (signed char)pgloss_perceptual_from_physical_ex(&v, k->space, &o);
-        q.L[j] = o.L;
-        q.a[j] = o.a;
-        q.b[j] = o.b;
-        q.c[j] = o.c;
-        q.d[j] = o.d;
-    }
+    const pgloss_perceptual_out qb = {q.L + b, q.a + b, q.b + b, q.c + b, q.d + b};
+    k->perceptual_loop(m, physical_from(k->p, b), pgloss__to_xyz_matrix(k->space), qb, st);
 }
 
 pgloss_status pgloss_perceptual_from_physical_batch_ex(size_t n, const pgloss_physical_array *p,
@@ -330,7 +311,8 @@ pgloss_status pgloss_perceptual_from_physical_batch_ex(size_t n, const pgloss_ph
         return PGLOSS_ERR_NULL;
     if (!pgloss__valid_color_space(space))
         return PGLOSS_ERR_ARGUMENT;
-    const sets k = {.p = p, .space = space, .q_out = q};
+    const sets k = {.p = p, .space = space, .q_out = q,
+                    .perceptual_loop = PICK_LOOP(pgloss__perceptual_from_physical_loop)};
     return run(n, status, perceptual_from_physical_chunk, &k);
 }
 
@@ -354,35 +336,26 @@ static pgloss_status colour_batch(size_t n, const double *in0, const double *in1
         return PGLOSS_ERR_NULL;
     if (!pgloss__valid_color_space(space))
         return PGLOSS_ERR_ARGUMENT;
-    const sets k = {.space = space, .in = {in0, in1, in2}, .out = {out0, out1, out2}};
+    const sets k = {.space = space, .in = {in0, in1, in2}, .out = {out0, out1, out2},
+                    .rgb_loop = PICK_LOOP(pgloss__rgb_from_lab_loop),
+                    .lab_loop = PICK_LOOP(pgloss__lab_from_rgb_loop)};
     return run(n, status, f, &k);
 }
 
 static void rgb_from_lab_chunk(const void *ctx, size_t b, size_t m, signed char *st)
 {
     const sets *k = ctx;
-    const double *M = pgloss__from_xyz_matrix(k->space);
-    for (size_t j = b; j < b + m; ++j) {
-        double o[3];
-        st[j - b] = (signed char)pgloss__rgb_from_lab_k(k->in[0][j], k->in[1][j], k->in[2][j], M,
-                                                        &o[0], &o[1], &o[2]);
-        k->out[0][j] = o[0];
-        k->out[1][j] = o[1];
-        k->out[2][j] = o[2];
-    }
+    const pgloss_lab_array in = {k->in[0] + b, k->in[1] + b, k->in[2] + b};
+    const pgloss_rgb_out_d out = {k->out[0] + b, k->out[1] + b, k->out[2] + b};
+    k->rgb_loop(m, in, pgloss__from_xyz_matrix(k->space), out, st);
 }
 
 static void lab_from_rgb_chunk(const void *ctx, size_t b, size_t m, signed char *st)
 {
     const sets *k = ctx;
-    for (size_t j = b; j < b + m; ++j) {
-        const double in[3] = {k->in[0][j], k->in[1][j], k->in[2][j]};
-        double o[3];
-        st[j - b] = (signed char)pgloss_lab_from_rgb_ex(in, k->space, o);
-        k->out[0][j] = o[0];
-        k->out[1][j] = o[1];
-        k->out[2][j] = o[2];
-    }
+    const pgloss_rgb_array_d in = {k->in[0] + b, k->in[1] + b, k->in[2] + b};
+    const pgloss_lab_out out = {k->out[0] + b, k->out[1] + b, k->out[2] + b};
+    k->lab_loop(m, in, pgloss__to_xyz_matrix(k->space), out, st);
 }
 
 pgloss_status pgloss_rgb_from_lab_batch_ex(size_t n, pgloss_lab_array lab,

@@ -23,6 +23,44 @@ PGLOSS__P_FN int pgloss__finite_d(double x)
     return fabs(x) <= DBL_MAX;
 }
 
+/* Several conditions on one element as ONE comparison each: GCC 12 turns a && or || chain of
+ * double comparisons into branches whose merge it cannot if-convert (a PHI of more than four
+ * arguments), and the loop is then not vectorised. The NaN cases of these helpers do not
+ * matter: their callers let a finiteness check (made later, winning) decide those elements. */
+
+/* The larger and the smaller of two values neither of which is NaN (selects; fmax is a call
+ * or a NaN-aware sequence). */
+PGLOSS__P_FN double pgloss__max_d(double x, double y)
+{
+    return x > y ? x : y;
+}
+
+PGLOSS__P_FN double pgloss__min_d(double x, double y)
+{
+    return x < y ? x : y;
+}
+
+/* 0 for a finite x, NaN for NaN and ±Inf: a sum of these is 0 only if every term's x is
+ * finite (x − x is never folded without -ffinite-math-only). */
+PGLOSS__P_FN double pgloss__nan_unless_finite_d(double x)
+{
+    return x - x;
+}
+
+/* x, y and z are all finite. */
+PGLOSS__P_FN int pgloss__finite3_d(double x, double y, double z)
+{
+    return pgloss__nan_unless_finite_d(x) + pgloss__nan_unless_finite_d(y) +
+               pgloss__nan_unless_finite_d(z) == 0.0;
+}
+
+/* x < lo or x > hi, for x not NaN: lo − x > 0 and x − hi > 0 are exact tests, a difference of
+ * doubles being 0 only for equal ones. */
+PGLOSS__P_FN int pgloss__outside_d(double x, double lo, double hi)
+{
+    return pgloss__max_d(lo - x, x - hi) > 0.0;
+}
+
 /* ∛x by the general cube root or, where `in_range` (a compile-time constant) says the caller
  * checked pgloss__cbrt_in_range_d, by its unscaled core: the same bits either way. */
 PGLOSS__P_FN double pgloss__cbrt_sel_d(double x, const int in_range)
@@ -73,10 +111,21 @@ PGLOSS__P_FN double pgloss__contrast_d(double rho_s, double den)
 }
 
 /* Eq. 7 expanded, (c + B)³ − B³ = c (c² + 3cB + 3B²) with B = ∛(ρd/2): free of cancellation. */
+PGLOSS__P_FN double pgloss__specular_b_d(double c, double b)
+{
+    return c * (c * c + 3.0 * c * b + 3.0 * b * b);
+}
+
 PGLOSS__P_FN double pgloss__specular_d(double rho_d, double c)
 {
-    const double b = pgloss__half_cbrt_d(rho_d, 0);
-    return c * (c * c + 3.0 * c * b + 3.0 * b * b);
+    return pgloss__specular_b_d(c, pgloss__half_cbrt_d(rho_d, 0));
+}
+
+/* The envelope of Fig. 10: eq. 4 with ρs = 1 − ρd, for ρd = Y in [0, 1] and b = ∛(Y/2)
+ * (A² + AB + B² in quotient form again: A − B cancels near Y = 1). */
+PGLOSS__P_FN double pgloss__envelope_b_d(double y, double b)
+{
+    return pgloss__contrast_d(1.0 - y, pgloss__contrast_den_d(y, 1.0 - y, b, 0));
 }
 
 /* Eq. 3, d = 1 − α, rounded down where it would round to 1 (α ≤ 2^-54): d < 1 then holds for
@@ -100,7 +149,7 @@ PGLOSS__P_FN double pgloss__gloss_plain_d(double rho_d, double rho_s, double alp
 {
     const int in_d = (rho_d == 0.0) | ((rho_d >= 0x1p-899) & (rho_d <= 0x1p899));
     const int in_s = (rho_s == 0.0) | ((rho_s >= 0x1p-899) & (rho_s <= 0x1p899));
-    return in_d & in_s & (alpha > 0.0) & (alpha <= DBL_MAX) ? 1.0 : 0.0;
+    return (in_d & in_s & (alpha > 0.0) & (alpha <= DBL_MAX)) ? 1.0 : 0.0;
 }
 
 /* pgloss_gloss_from_physical on one element (eqs. 3, 4 and L* of ρd): NONFINITE, NEGATIVE,
@@ -130,6 +179,95 @@ PGLOSS__P_FN double pgloss__gloss_from_physical_k(double rho_d, double rho_s, do
     *c = st >= 0.0 ? cc : 0.0;
     *d = st >= 0.0 ? dd : 0.0;
     return st;
+}
+
+/* pgloss_physical_from_gloss on one element (eqs. 6, 7, 8): NONFINITE, LIGHTNESS, NEGATIVE,
+ * ALPHA, NONFINITE (ρs beyond DBL_MAX), then the warning; outputs 0 on error. */
+PGLOSS__P_FN double pgloss__physical_from_gloss_k(double L, double c, double d, double *rho_d,
+                                                  double *rho_s, double *alpha)
+{
+    const double y = pgloss__luminance_d(L);   /* eq. 6 */
+    const double s = pgloss__specular_d(y, c); /* eq. 7 */
+    const double al = 1.0 - d;                 /* eq. 8 */
+    double st = pgloss__alpha_status_d(al);
+    st = pgloss__finite_d(s) ? st : (double)PGLOSS_ERR_NONFINITE;
+    st = d < 1.0 ? st : (double)PGLOSS_ERR_ALPHA;
+    st = c < 0.0 ? (double)PGLOSS_ERR_NEGATIVE : st;
+    st = (L < 0.0 || L > 100.0) ? (double)PGLOSS_ERR_LIGHTNESS : st;
+    st = (pgloss__finite_d(L) && pgloss__finite_d(c) && pgloss__finite_d(d))
+             ? st : (double)PGLOSS_ERR_NONFINITE;
+    *rho_d = st >= 0.0 ? y : 0.0;
+    *rho_s = st >= 0.0 ? s : 0.0;
+    *alpha = st >= 0.0 ? al : 0.0;
+    return st;
+}
+
+/* pgloss_envelope_contrast on one element: NONFINITE, LIGHTNESS; 0 on error. (Its eq. 4's
+ * own checks cannot fail for L* in [0, 100]: Y = f⁻¹(L*) is in [0, 1].) */
+PGLOSS__P_FN double pgloss__envelope_k(double L, double *c_max)
+{
+    const double y = pgloss__luminance_d(L);
+    const double cm = pgloss__envelope_b_d(y, pgloss__half_cbrt_d(y, 0));
+    double st = (L < 0.0 || L > 100.0) ? (double)PGLOSS_ERR_LIGHTNESS : 0.0;
+    st = pgloss__finite_d(L) ? st : (double)PGLOSS_ERR_NONFINITE;
+    *c_max = st == 0.0 ? cm : 0.0;
+    return st;
+}
+
+/* pgloss_match_gloss on one element (§5.2): NONFINITE, NEGATIVE, LIGHTNESS, NONFINITE (eq. 4's
+ * ρs + ρd/2, then eq. 7's ρs beyond DBL_MAX), ENVELOPE; outputs 0 on error but ENVELOPE's
+ * (the matched values are written). */
+PGLOSS__P_FN double pgloss__match_gloss_k(double rho_d, double rho_s, double L_target,
+                                          double *rho_d_out, double *rho_s_out)
+{
+    const double den = pgloss__contrast_den_d(rho_d, rho_s, pgloss__half_cbrt_d(rho_d, 0), 0);
+    const double c = pgloss__contrast_d(rho_s, den); /* eq. 4 */
+    const double y = pgloss__luminance_d(L_target);  /* eq. 6 */
+    const double s = pgloss__specular_d(y, c);       /* eq. 7 */
+    double st = y + s > 1.0 + PGLOSS_BOUNDARY_TOLERANCE ? (double)PGLOSS_ERR_ENVELOPE : 0.0;
+    st = pgloss__finite_d(s) ? st : (double)PGLOSS_ERR_NONFINITE;
+    st = pgloss__finite_d(den) ? st : (double)PGLOSS_ERR_NONFINITE;
+    st = pgloss__outside_d(L_target, 0.0, 100.0) ? (double)PGLOSS_ERR_LIGHTNESS : st;
+    st = pgloss__min_d(rho_d, rho_s) < 0.0 ? (double)PGLOSS_ERR_NEGATIVE : st;
+    st = pgloss__finite3_d(rho_d, rho_s, L_target) ? st : (double)PGLOSS_ERR_NONFINITE;
+    /* OK or ENVELOPE (small integers: the product is exact) */
+    const int kept = st * (st - (double)PGLOSS_ERR_ENVELOPE) == 0.0;
+    *rho_d_out = kept ? y : 0.0;
+    *rho_s_out = kept ? s : 0.0;
+    return st;
+}
+
+/* pgloss__check_physical_values on one element: NONFINITE (a value NaN, ±Inf or beyond
+ * limit in magnitude), NEGATIVE (ρd, ρs), ALPHA (αx, αy not > 0); 0 if all pass. */
+PGLOSS__P_FN double pgloss__physical_values_k(double r, double g, double b, double s,
+                                              double ax, double ay, double limit)
+{
+    double st = pgloss__min_d(ax, ay) > 0.0 ? 0.0 : (double)PGLOSS_ERR_ALPHA;
+    st = pgloss__min_d(pgloss__min_d(r, g), pgloss__min_d(b, s)) < 0.0
+             ? (double)PGLOSS_ERR_NEGATIVE : st;
+    /* the largest magnitude, made NaN by any NaN or ±Inf value */
+    const double big = pgloss__max_d(pgloss__max_d(pgloss__max_d(fabs(r), fabs(g)),
+                                                   pgloss__max_d(fabs(b), fabs(s))),
+                                     pgloss__max_d(fabs(ax), fabs(ay)));
+    const double nan = pgloss__nan_unless_finite_d(r) + pgloss__nan_unless_finite_d(g) +
+                       pgloss__nan_unless_finite_d(b) + pgloss__nan_unless_finite_d(s) +
+                       pgloss__nan_unless_finite_d(ax) + pgloss__nan_unless_finite_d(ay);
+    st = big + nan <= limit ? st : (double)PGLOSS_ERR_NONFINITE;
+    return st;
+}
+
+/* pgloss_check_physical on one element, `norm_ok` 1 for a known normalisation, else 0:
+ * pgloss__physical_values_k (limit FLT_MAX), NORMALIZATION, ENERGY, then the warning. */
+PGLOSS__P_FN double pgloss__check_physical_k(double r, double g, double b, double s, double ax,
+                                             double ay, double norm_ok)
+{
+    const double dmax = pgloss__max_d(r, pgloss__max_d(g, b));
+    double st = pgloss__max_d(ax, ay) > PGLOSS_ALPHA_TRUSTED_MAX
+                    ? (double)PGLOSS_WARN_ALPHA_UNTRUSTED : 0.0;
+    st = dmax + s > 1.0 + PGLOSS_BOUNDARY_TOLERANCE ? (double)PGLOSS_ERR_ENERGY : st;
+    st = norm_ok != 0.0 ? st : (double)PGLOSS_ERR_NORMALIZATION;
+    const double basic = pgloss__physical_values_k(r, g, b, s, ax, ay, (double)FLT_MAX);
+    return basic < 0.0 ? basic : st;
 }
 
 /* The D65 white (0.3127, 0.3290) as XYZ with Y = 1. */
@@ -164,17 +302,19 @@ PGLOSS__P_FN double pgloss__rgb_from_lab_k(double L, double a, double b, const d
     const double o1 = M[3] * X + M[4] * Y + M[5] * Z;
     const double o2 = M[6] * X + M[7] * Y + M[8] * Z;
     const double tol = -PGLOSS_BOUNDARY_TOLERANCE;
-    double st = (o0 < tol || o1 < tol || o2 < tol) ? (double)PGLOSS_ERR_GAMUT : 0.0;
-    st = (pgloss__finite_d(o0) && pgloss__finite_d(o1) && pgloss__finite_d(o2))
-             ? st : (double)PGLOSS_ERR_NONFINITE;
-    st = (L < 0.0 || L > 100.0) ? (double)PGLOSS_ERR_LIGHTNESS : st;
-    st = (pgloss__finite_d(L) && pgloss__finite_d(a) && pgloss__finite_d(b))
-             ? st : (double)PGLOSS_ERR_NONFINITE;
-    /* GAMUT keeps the exact channels; OK rounds the boundary's −tolerance..0 up to 0. */
-    const double gamut = (double)PGLOSS_ERR_GAMUT;
-    *r = st == 0.0 ? (o0 < 0.0 ? 0.0 : o0) : (st == gamut ? o0 : 0.0);
-    *g = st == 0.0 ? (o1 < 0.0 ? 0.0 : o1) : (st == gamut ? o1 : 0.0);
-    *bl = st == 0.0 ? (o2 < 0.0 ? 0.0 : o2) : (st == gamut ? o2 : 0.0);
+    double st = pgloss__min_d(o0, pgloss__min_d(o1, o2)) < tol ? (double)PGLOSS_ERR_GAMUT : 0.0;
+    st = pgloss__finite3_d(o0, o1, o2) ? st : (double)PGLOSS_ERR_NONFINITE;
+    st = pgloss__outside_d(L, 0.0, 100.0) ? (double)PGLOSS_ERR_LIGHTNESS : st;
+    st = pgloss__finite3_d(L, a, b) ? st : (double)PGLOSS_ERR_NONFINITE;
+    /* GAMUT keeps the exact channels; OK rounds the boundary's −tolerance..0 up to 0 (one
+     * select after another: nested ones make a PHI GCC does not if-convert). */
+    const int kept = st * (st - (double)PGLOSS_ERR_GAMUT) == 0.0; /* small integers: exact */
+    const int ok = st == 0.0;
+    const double c0 = o0 < 0.0 ? 0.0 : o0, c1 = o1 < 0.0 ? 0.0 : o1, c2 = o2 < 0.0 ? 0.0 : o2;
+    const double v0 = ok ? c0 : o0, v1 = ok ? c1 : o1, v2 = ok ? c2 : o2;
+    *r = kept ? v0 : 0.0;
+    *g = kept ? v1 : 0.0;
+    *bl = kept ? v2 : 0.0;
     return st;
 }
 
@@ -190,21 +330,16 @@ PGLOSS__P_FN double pgloss__physical_from_perceptual_k(double L, double a, doubl
                                                        double *rho_s, double *alpha,
                                                        double *pre)
 {
-    const double y = pgloss__luminance_d(L);    /* eq. 6 */
-    const double s = pgloss__specular_d(y, c);  /* eq. 7 */
-    const double al = 1.0 - d;                  /* eq. 8 */
-    double sg = pgloss__finite_d(s) ? 0.0 : (double)PGLOSS_ERR_NONFINITE;
-    sg = d < 1.0 ? sg : (double)PGLOSS_ERR_ALPHA;
-    sg = c < 0.0 ? (double)PGLOSS_ERR_NEGATIVE : sg;
-    sg = (L < 0.0 || L > 100.0) ? (double)PGLOSS_ERR_LIGHTNESS : sg;
-    sg = (pgloss__finite_d(L) && pgloss__finite_d(c) && pgloss__finite_d(d))
-             ? sg : (double)PGLOSS_ERR_NONFINITE;
+    double y, s, al; /* eqs. 6, 7, 8 */
+    const double sgw = pgloss__physical_from_gloss_k(L, c, d, &y, &s, &al);
+    double sg = sgw < 0.0 ? sgw : 0.0;
     sg = (pgloss__finite_d(a) && pgloss__finite_d(b)) ? sg : (double)PGLOSS_ERR_NONFINITE;
     *pre = sg;
     double r, g, bb;
     const double cs = pgloss__rgb_from_lab_k(L, a, b, M, &r, &g, &bb);
-    /* a failed element: the checks before the colour's, or a non-finite colour */
-    const double st = sg < 0.0 ? sg : (cs != 0.0 ? cs : pgloss__alpha_status_d(al));
+    /* a failed element: the checks before the colour's, or a non-finite colour; else the
+     * warning of physical_from_gloss (sgw ≥ 0 there) */
+    const double st = sg < 0.0 ? sg : (cs != 0.0 ? cs : sgw);
     /* kept: an element that passed, and a GAMUT one (its exact ρd, ρs, α) */
     const double gamut = (double)PGLOSS_ERR_GAMUT;
     *rho_r = st >= 0.0 ? r : (st == gamut ? r : 0.0);
@@ -215,7 +350,91 @@ PGLOSS__P_FN double pgloss__physical_from_perceptual_k(double L, double a, doubl
     return st;
 }
 
+/* pgloss_lab_from_rgb_ex on one element (Mx: the working space's RGB → XYZ, row-major):
+ * NONFINITE, NEGATIVE, NONFINITE (a result beyond DBL_MAX); outputs 0 on error. *Y receives
+ * the luminance (XYZ's Y), computed on every path. */
+PGLOSS__P_FN double pgloss__lab_from_rgb_k(double r, double g, double b, const double *Mx,
+                                           double *L, double *a, double *bb, double *Y)
+{
+    const double X = Mx[0] * r + Mx[1] * g + Mx[2] * b;
+    const double y = Mx[3] * r + Mx[4] * g + Mx[5] * b;
+    const double Z = Mx[6] * r + Mx[7] * g + Mx[8] * b;
+    const double fx = pgloss__lab_f_d(X / PGLOSS__WHITE_X), fy = pgloss__lab_f_d(y),
+                 fz = pgloss__lab_f_d(Z / PGLOSS__WHITE_Z);
+    const double o0 = 116.0 * fy - 16.0, o1 = 500.0 * (fx - fy), o2 = 200.0 * (fy - fz);
+    double st = pgloss__finite3_d(o0, o1, o2) ? 0.0 : (double)PGLOSS_ERR_NONFINITE;
+    st = pgloss__min_d(r, pgloss__min_d(g, b)) < 0.0 ? (double)PGLOSS_ERR_NEGATIVE : st;
+    st = pgloss__finite3_d(r, g, b) ? st : (double)PGLOSS_ERR_NONFINITE;
+    *L = st == 0.0 ? o0 : 0.0;
+    *a = st == 0.0 ? o1 : 0.0;
+    *bb = st == 0.0 ? o2 : 0.0;
+    *Y = y;
+    return st;
+}
+
+/* pgloss_perceptual_from_physical_ex on one element (Mx: RGB → XYZ): the values' checks
+ * (limit DBL_MAX), lab_from_rgb's, NONFINITE (luminance, then eq. 4's ρs + ρd/2 beyond
+ * DBL_MAX), then the warning (the wider spread beyond the trusted range); outputs 0 on error.
+ * For αx ≠ αy the geometric mean stands in for α in eq. 3: the α with the same solid-angle
+ * spread (the lobe's constant is 1/(αx αy)); the paper studied isotropic lobes. */
+PGLOSS__P_FN double pgloss__perceptual_from_physical_k(double r, double g, double b, double s,
+                                                       double ax, double ay, const double *Mx,
+                                                       double *L, double *a, double *bb,
+                                                       double *c, double *d)
+{
+    double l, la, lb, y;
+    const double cs = pgloss__lab_from_rgb_k(r, g, b, Mx, &l, &la, &lb, &y);
+    const double den = pgloss__contrast_den_d(y, s, pgloss__half_cbrt_d(y, 0), 0);
+    const double cc = pgloss__contrast_d(s, den); /* eq. 4 */
+    const double dd = pgloss__doi_d(sqrt(ax) * sqrt(ay)); /* eq. 3 */
+    double st = pgloss__max_d(ax, ay) > PGLOSS_ALPHA_TRUSTED_MAX
+                    ? (double)PGLOSS_WARN_ALPHA_UNTRUSTED : 0.0;
+    st = pgloss__finite_d(den) ? st : (double)PGLOSS_ERR_NONFINITE;
+    st = y < 0.0 ? (double)PGLOSS_ERR_NEGATIVE : st; /* not for these spaces' Y ≥ 0 weights */
+    st = pgloss__finite_d(y) ? st : (double)PGLOSS_ERR_NONFINITE;
+    st = cs < 0.0 ? cs : st;
+    const double basic = pgloss__physical_values_k(r, g, b, s, ax, ay, DBL_MAX);
+    st = basic < 0.0 ? basic : st;
+    *L = st >= 0.0 ? l : 0.0;
+    *a = st >= 0.0 ? la : 0.0;
+    *bb = st >= 0.0 ? lb : 0.0;
+    *c = st >= 0.0 ? cc : 0.0;
+    *d = st >= 0.0 ? dd : 0.0;
+    return st;
+}
+
+/* pgloss_check_perceptual_ex on one element (M: XYZ → RGB): NONFINITE (also α = 1 − d above
+ * FLT_MAX, which no material holds), LIGHTNESS, NEGATIVE, ALPHA, rgb_from_lab's (NONFINITE,
+ * GAMUT), ENVELOPE (c above Fig. 10's c_max), NONFINITE (ρs of eq. 7), ENERGY (max ρd + ρs),
+ * then the warning. */
+PGLOSS__P_FN double pgloss__check_perceptual_k(double L, double a, double b, double c, double d,
+                                               const double *M)
+{
+    double r, g, bl;
+    const double cs = pgloss__rgb_from_lab_k(L, a, b, M, &r, &g, &bl);
+    const double y = pgloss__luminance_d(L);          /* eq. 6 */
+    const double hb = pgloss__half_cbrt_d(y, 0);      /* ∛(Y/2), of eqs. 4 and 7 */
+    const double cmax = pgloss__envelope_b_d(y, hb);  /* Fig. 10 */
+    const double s = pgloss__specular_b_d(c, hb);     /* eq. 7 */
+    const double al = 1.0 - d;                        /* eq. 8 */
+    double st = pgloss__alpha_status_d(al);
+    st = pgloss__max_d(r, pgloss__max_d(g, bl)) + s > 1.0 + PGLOSS_BOUNDARY_TOLERANCE
+             ? (double)PGLOSS_ERR_ENERGY : st;
+    st = pgloss__finite_d(s) ? st : (double)PGLOSS_ERR_NONFINITE;
+    st = c > cmax + PGLOSS_BOUNDARY_TOLERANCE ? (double)PGLOSS_ERR_ENVELOPE : st;
+    st = cs != 0.0 ? cs : st;
+    st = d < 1.0 ? st : (double)PGLOSS_ERR_ALPHA;
+    st = c < 0.0 ? (double)PGLOSS_ERR_NEGATIVE : st;
+    st = (L < 0.0 || L > 100.0) ? (double)PGLOSS_ERR_LIGHTNESS : st;
+    st = (pgloss__finite_d(L) && pgloss__finite_d(a) && pgloss__finite_d(b) &&
+          pgloss__finite_d(c) && pgloss__finite_d(d) && al <= FLT_MAX)
+             ? st : (double)PGLOSS_ERR_NONFINITE;
+    return st;
+}
+
 /* The XYZ → linear RGB matrix of a known working space, row-major (color.c's table). */
 const double *pgloss__from_xyz_matrix(pgloss_color_space space);
+/* The linear RGB → XYZ matrix of a known working space, row-major (row 1: its luminance). */
+const double *pgloss__to_xyz_matrix(pgloss_color_space space);
 
 #endif

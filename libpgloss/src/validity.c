@@ -6,42 +6,22 @@
 #include "perceptual_d.h"
 #include "pgloss/perceptual.h"
 
-static int valid_normalization(pgloss_normalization n)
-{
-    return n == PGLOSS_NORM_WARD || n == PGLOSS_NORM_WARD_DUR || n == PGLOSS_NORM_BOUNDED;
-}
-
 pgloss_status pgloss__check_physical_values(const pgloss_physical *p, double limit)
 {
-    const double v[6] = {p->rho_d[0], p->rho_d[1], p->rho_d[2], p->rho_s, p->alpha_x, p->alpha_y};
-    for (int k = 0; k < 6; ++k)
-        if (!isfinite(v[k]) || fabs(v[k]) > limit)
-            return PGLOSS_ERR_NONFINITE;
-    for (int k = 0; k < 4; ++k)
-        if (v[k] < 0.0)
-            return PGLOSS_ERR_NEGATIVE;
-    if (!(p->alpha_x > 0.0) || !(p->alpha_y > 0.0))
-        return PGLOSS_ERR_ALPHA;
-    return PGLOSS_OK;
+    return (pgloss_status)pgloss__physical_values_k(p->rho_d[0], p->rho_d[1], p->rho_d[2],
+                                                    p->rho_s, p->alpha_x, p->alpha_y, limit);
 }
 
 pgloss_status pgloss_check_physical(const pgloss_physical *p)
 {
     if (!p)
         return PGLOSS_ERR_NULL;
-    /* FLT_MAX, as pgloss_material_init: a paint is inside the model only if a material can
-     * hold it. */
-    const pgloss_status basic = pgloss__check_physical_values(p, FLT_MAX);
-    if (basic != PGLOSS_OK)
-        return basic;
-    if (!valid_normalization(p->normalization))
-        return PGLOSS_ERR_NORMALIZATION;
-    const double dmax = fmax(p->rho_d[0], fmax(p->rho_d[1], p->rho_d[2]));
-    if (dmax + p->rho_s > 1.0 + PGLOSS_BOUNDARY_TOLERANCE)
-        return PGLOSS_ERR_ENERGY;
-    if (fmax(p->alpha_x, p->alpha_y) > PGLOSS_ALPHA_TRUSTED_MAX)
-        return PGLOSS_WARN_ALPHA_UNTRUSTED;
-    return PGLOSS_OK;
+    /* The batch's per-element code (perceptual_d.h): the same bits. Values beyond FLT_MAX
+     * are NONFINITE, as for pgloss_material_init: a paint is inside the model only if a
+     * material can hold it. */
+    return (pgloss_status)pgloss__check_physical_k(p->rho_d[0], p->rho_d[1], p->rho_d[2],
+                                                   p->rho_s, p->alpha_x, p->alpha_y,
+                                                   pgloss__valid_normalization(p->normalization));
 }
 
 pgloss_status pgloss_check_perceptual_ex(const pgloss_perceptual *q, pgloss_color_space space)
@@ -50,35 +30,9 @@ pgloss_status pgloss_check_perceptual_ex(const pgloss_perceptual *q, pgloss_colo
         return PGLOSS_ERR_NULL;
     if (!pgloss__valid_color_space(space))
         return PGLOSS_ERR_ARGUMENT;
-    /* α = 1 − d above FLT_MAX: no material can hold it (as pgloss_check_physical). */
-    if (!isfinite(q->L) || !isfinite(q->a) || !isfinite(q->b) || !isfinite(q->c) || !isfinite(q->d) ||
-        1.0 - q->d > FLT_MAX)
-        return PGLOSS_ERR_NONFINITE;
-    if (q->L < 0.0 || q->L > 100.0)
-        return PGLOSS_ERR_LIGHTNESS;
-    if (q->c < 0.0)
-        return PGLOSS_ERR_NEGATIVE;
-    if (!(q->d < 1.0))
-        return PGLOSS_ERR_ALPHA;
-    const double lab[3] = {q->L, q->a, q->b};
-    double rgb[3];
-    pgloss_status st = pgloss_rgb_from_lab_ex(lab, space, rgb);
-    if (st != PGLOSS_OK)
-        return st;
-    double cmax;
-    pgloss_envelope_contrast(q->L, &cmax);
-    if (q->c > cmax + PGLOSS_BOUNDARY_TOLERANCE)
-        return PGLOSS_ERR_ENVELOPE;
-    double y, rho_s;
-    pgloss_luminance_from_lightness(q->L, &y);
-    st = pgloss_specular_from_contrast(y, q->c, &rho_s);
-    if (st != PGLOSS_OK)
-        return st;
-    if (fmax(rgb[0], fmax(rgb[1], rgb[2])) + rho_s > 1.0 + PGLOSS_BOUNDARY_TOLERANCE)
-        return PGLOSS_ERR_ENERGY;
-    if (1.0 - q->d > PGLOSS_ALPHA_TRUSTED_MAX)
-        return PGLOSS_WARN_ALPHA_UNTRUSTED;
-    return PGLOSS_OK;
+    /* The batch's per-element code (perceptual_d.h): the same bits. */
+    return (pgloss_status)pgloss__check_perceptual_k(q->L, q->a, q->b, q->c, q->d,
+                                                     pgloss__from_xyz_matrix(space));
 }
 
 pgloss_status pgloss_check_perceptual(const pgloss_perceptual *q)
@@ -113,7 +67,7 @@ pgloss_status pgloss_physical_from_perceptual_ex(const pgloss_perceptual *q,
         &rho_s, &alpha, &pre);
     if (pre < 0.0)
         return (pgloss_status)pre;
-    if (!valid_normalization(normalization))
+    if (!pgloss__valid_normalization(normalization))
         return PGLOSS_ERR_NORMALIZATION;
     p->rho_d[0] = rgb[0]; p->rho_d[1] = rgb[1]; p->rho_d[2] = rgb[2];
     p->rho_s = rho_s;           /* eq. 7 with the luminance of ρd (= Y of L*) */
@@ -138,29 +92,10 @@ pgloss_status pgloss_perceptual_from_physical_ex(const pgloss_physical *p, pglos
         return PGLOSS_ERR_NULL;
     if (!pgloss__valid_color_space(space))
         return PGLOSS_ERR_ARGUMENT;
-    const pgloss_status basic = pgloss__check_physical_values(p, DBL_MAX);
-    if (basic != PGLOSS_OK)
-        return basic;
-    double lab[3], y, c;
-    pgloss_status st = pgloss_lab_from_rgb_ex(p->rho_d, space, lab);
-    if (st != PGLOSS_OK)
-        return st;
-    st = pgloss_luminance_ex(p->rho_d, space, &y);
-    if (st != PGLOSS_OK)
-        return st;
-    st = pgloss_contrast_gloss(y, p->rho_s, &c);
-    if (st != PGLOSS_OK)
-        return st;
-    /* The paper studied isotropic lobes; for αx ≠ αy the geometric mean (the α with the same
-     * solid-angle spread, since the lobe's constant is 1/(αx αy)) stands in for α in eq. 3. */
-    const double alpha = sqrt(p->alpha_x) * sqrt(p->alpha_y);
-    q->L = lab[0]; q->a = lab[1]; q->b = lab[2];
-    q->c = c;
-    q->d = pgloss__doi_d(alpha); /* eq. 3 */
-    /* The warning asks the same question as pgloss_check_physical: is the wider of the two
-     * spreads beyond the trusted range? (Not the geometric mean used for d.) */
-    return fmax(p->alpha_x, p->alpha_y) > PGLOSS_ALPHA_TRUSTED_MAX ? PGLOSS_WARN_ALPHA_UNTRUSTED
-                                                                   : PGLOSS_OK;
+    /* The batch's per-element code (perceptual_d.h): the same bits. */
+    return (pgloss_status)pgloss__perceptual_from_physical_k(
+        p->rho_d[0], p->rho_d[1], p->rho_d[2], p->rho_s, p->alpha_x, p->alpha_y,
+        pgloss__to_xyz_matrix(space), &q->L, &q->a, &q->b, &q->c, &q->d);
 }
 
 pgloss_status pgloss_perceptual_from_physical(const pgloss_physical *p, pgloss_perceptual *q)

@@ -5,9 +5,9 @@
  * and pgloss/color.h over SoA double arrays (a texture of paints), with a status per element.
  *
  * Element j gets exactly what the scalar function returns for element j: the same status and
- * the same outputs, bit for bit (each loop runs the scalar function's per-element code;
- * gloss_from_physical and physical_from_perceptual run it vectorised, on the best ISA of the
- * running CPU, and the scalar functions run the same code: docs/kernels.md), so
+ * the same outputs, bit for bit (each loop runs the scalar function's per-element code,
+ * vectorised, on the best ISA of the running CPU, and the scalar functions run the same code:
+ * docs/kernels.md), so
  * the scalar functions' error against the shared vectors (relative 1e-12, tests/vectors) is
  * theirs too. That includes the documented outputs of a failed element: 0, except the exact
  * values of a GAMUT element (rgb_from_lab, physical_from_perceptual) and the matched values of
