@@ -20,6 +20,7 @@
 #include "pgloss/batch.h"
 #include "pgloss/perceptual_batch.h"
 #include "pgloss/pgloss.h"
+#include "test_ulp.h"
 
 // The per-ISA loops: internal symbols of the static library, weak so that a build without
 // the AVX2/AVX-512 objects (PGLOSS_ISA_DISPATCH=OFF, another architecture) still links.
@@ -56,15 +57,7 @@ const double *pgloss__to_xyz_matrix(pgloss_color_space space);
 
 namespace {
 
-// |got − ref| in ulps of the double nearest ref (subnormal ulps below DBL_MIN).
-double ulp_error(double got, long double ref) {
-    if (ref == 0.0L) return got == 0.0 ? 0.0 : INFINITY;
-    int e = 0;
-    std::frexp(static_cast<double>(ref), &e);
-    long double ulp = std::ldexp(1.0L, e - 53);
-    if (std::fabs(ref) < static_cast<long double>(DBL_MIN)) ulp = std::ldexp(1.0L, -1074);
-    return static_cast<double>(std::fabs(static_cast<long double>(got) - ref) / ulp);
-}
+using pgt::ulp_error;
 
 double from_bits(uint64_t u) {
     double x;

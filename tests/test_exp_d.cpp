@@ -15,18 +15,11 @@
 #include <random>
 
 #include "lobe_d.h"
+#include "test_ulp.h"
 
 namespace {
 
-// |got − ref| in ulps of the double nearest ref (subnormal ulps below DBL_MIN).
-double ulp_error(double got, long double ref) {
-    if (ref == 0.0L) return got == 0.0 ? 0.0 : INFINITY;
-    int e = 0;
-    std::frexp(static_cast<double>(ref), &e);
-    long double ulp = std::ldexp(1.0L, e - 53);
-    if (std::fabs(ref) < static_cast<long double>(DBL_MIN)) ulp = std::ldexp(1.0L, -1074);
-    return static_cast<double>(std::fabs(static_cast<long double>(got) - ref) / ulp);
-}
+using pgt::ulp_error;
 
 // The documented bound on the normal range (lobe_d.h).
 constexpr double kMaxUlp = 2.5;

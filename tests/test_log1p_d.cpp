@@ -16,16 +16,11 @@
 #include <random>
 
 #include "lobe_d.h"
+#include "test_ulp.h"
 
 namespace {
 
-// |got − ref| in ulps of the double nearest ref.
-double ulp_error(double got, long double ref) {
-    if (ref == 0.0L) return got == 0.0 ? 0.0 : INFINITY;
-    int e = 0;
-    std::frexp(static_cast<double>(ref), &e);
-    return static_cast<double>(std::fabs(static_cast<long double>(got) - ref) / std::ldexp(1.0L, e - 53));
-}
+using pgt::ulp_error;
 
 double err_at(double x) { return ulp_error(pgloss__log1p_d(x), log1pl(static_cast<long double>(x))); }
 
