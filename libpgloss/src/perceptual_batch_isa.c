@@ -78,13 +78,15 @@ void GLOSS_FN(size_t n, const double *rho_d, const double *rho_s, const double *
     }
 }
 
+/* A matrix into nine locals: constants of the loop, which no store can alias. */
+#define MATRIX_LOCAL(Mk, M)                                                                        \
+    const double Mk[9] = {M[0], M[1], M[2], M[3], M[4], M[5], M[6], M[7], M[8]}
+
 void PHYSICAL_FN(size_t n, pgloss_perceptual_array q, const double *M, pgloss_physical_out p,
                  signed char *st)
 {
     double r[CHUNK], g[CHUNK], b[CHUNK], s[CHUNK], al[CHUNK], sd[CHUNK];
-    const double m0 = M[0], m1 = M[1], m2 = M[2], m3 = M[3], m4 = M[4], m5 = M[5], m6 = M[6],
-                 m7 = M[7], m8 = M[8];
-    const double Mk[9] = {m0, m1, m2, m3, m4, m5, m6, m7, m8};
+    MATRIX_LOCAL(Mk, M);
     for (size_t base = 0; base < n; base += CHUNK) {
         const size_t m = n - base < CHUNK ? n - base : CHUNK;
         const double *qL = q.L + base, *qa = q.a + base, *qb = q.b + base, *qc = q.c + base,
@@ -104,10 +106,6 @@ void PHYSICAL_FN(size_t n, pgloss_perceptual_array q, const double *M, pgloss_ph
         statuses_out(m, sd, st + base);
     }
 }
-
-/* A matrix into nine locals: constants of the loop, which no store can alias. */
-#define MATRIX_LOCAL(Mk, M)                                                                        \
-    const double Mk[9] = {M[0], M[1], M[2], M[3], M[4], M[5], M[6], M[7], M[8]}
 
 void FROM_GLOSS_FN(size_t n, const double *L, const double *c, const double *d, double *rho_d,
                    double *rho_s, double *alpha, signed char *st)
