@@ -218,15 +218,7 @@ static void sample_reference(const pgloss_material *m, unsigned lobes, size_t n,
         const float u[3] = {u0[j], u1[j], u2[j]};
         pgloss_sample_record s;
         (void)pgloss_sample(m, o, u, lobes, &s);
-        wi.x[j] = s.wi.x;
-        wi.y[j] = s.wi.y;
-        wi.z[j] = s.wi.z;
-        pdf[j] = s.pdf;
-        weight.r[j] = s.weight.r;
-        weight.g[j] = s.weight.g;
-        weight.b[j] = s.weight.b;
-        if (lobe)
-            lobe[j] = (unsigned char)s.lobe;
+        pgloss__put_sample_record(&s, j, wi, pdf, weight, lobe);
     }
 }
 

@@ -66,6 +66,23 @@ PGLOSS_INLINE_FN int pgloss__material_valid_f(float r, float g, float b, float s
            (ay > 0.0f);
 }
 
+/* Element j of a float batch's sample outputs from the scalar pgloss_sample's record (the
+ * reference tier of both batch families); lobe may be NULL. */
+PGLOSS_INLINE_FN void pgloss__put_sample_record(const pgloss_sample_record *s, size_t j,
+                                                pgloss_vec3_out wi, float *pdf,
+                                                pgloss_rgb_out weight, unsigned char *lobe)
+{
+    wi.x[j] = s->wi.x;
+    wi.y[j] = s->wi.y;
+    wi.z[j] = s->wi.z;
+    pdf[j] = s->pdf;
+    weight.r[j] = s->weight.r;
+    weight.g[j] = s->weight.g;
+    weight.b[j] = s->weight.b;
+    if (lobe)
+        lobe[j] = (unsigned char)s->lobe;
+}
+
 PGLOSS__DECLARE_MATERIAL_KERNELS(baseline)
 #if defined(PGLOSS_HAVE_AVX2)
 PGLOSS__DECLARE_MATERIAL_KERNELS(avx2)

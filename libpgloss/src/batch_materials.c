@@ -285,15 +285,7 @@ pgloss_status pgloss_sample_batch_materials_ex(const pgloss_batch_options *optio
             pgloss_sample_record s;
             /* an invalid material is black: no lobe, wi = (0, 0, 1), 0 outputs */
             (void)pgloss_sample(&mj, o, u, lobes, &s);
-            wi.x[j] = s.wi.x;
-            wi.y[j] = s.wi.y;
-            wi.z[j] = s.wi.z;
-            pdf[j] = s.pdf;
-            weight.r[j] = s.weight.r;
-            weight.g[j] = s.weight.g;
-            weight.b[j] = s.weight.b;
-            if (lobe)
-                lobe[j] = (unsigned char)s.lobe;
+            pgloss__put_sample_record(&s, j, wi, pdf, weight, lobe);
         }
     } else {
         void (*fn)(const pgloss_material_array *, unsigned, size_t, pgloss_vec3_array,
