@@ -1,0 +1,175 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
+// parallel.h — the array calls of pgloss._core over several threads.
+//
+// The C core is single-threaded by design (no global state: its users thread it). The binding
+// splits one long array call into contiguous ranges of whole units (a unit is the loop's own
+// chunk: 128 direction pairs, or a slice of paints), one range per thread, with std::thread.
+// Each unit's outputs depend on that unit's inputs only, so the outputs are the same bits for
+// any thread count; what a range reports (its first failing element) is merged in range order,
+// so the lowest failing index wins, as on one thread.
+//
+// The calling thread runs the first range itself and is the only one that touches Python:
+// it checks for signals (Ctrl-C) every kSignalStride elements of its range and, once done,
+// every kWaitPoll while it waits for the others; a signal sets an atomic flag that every
+// range checks before each unit. Workers never call the Python API. An exception in a range
+// sets the flag too, and the first in range order is rethrown to the caller after every
+// thread has been joined.
+
+#ifndef PGLOSS_PY_PARALLEL_H
+#define PGLOSS_PY_PARALLEL_H
+
+#include <pybind11/pybind11.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstddef>
+#include <exception>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <utility>
+#include <vector>
+
+namespace pgloss_py {
+
+// Long loops take the GIL back every kSignalStride elements (on the calling thread) so that
+// Ctrl-C (SIGINT) gets through: the call stops and raises KeyboardInterrupt.
+constexpr std::size_t kSignalStride = std::size_t(1) << 16;
+
+// How often the calling thread, done with its own range, checks for signals while it waits.
+constexpr std::chrono::milliseconds kWaitPoll{20};
+
+// The fewest elements worth a thread of their own: below 2 × this an array stays on the calling
+// thread. Measured on a 2-core x86-64 host (BENCHMARKS.md, "Threads"): starting and joining a
+// thread costs about 30-60 µs, and two threads beat one from about 20 000 elements for the
+// cheapest loops (gloss_from_physical, eval float32 with one material, ~4-6 ns an element).
+constexpr std::size_t kMinPerThread = std::size_t(1) << 14;
+
+// The thread count of the array calls: pgloss.set_num_threads (Python validates it). A setting
+// of the binding, not of the C core (which has no global state).
+inline std::atomic<int> &num_threads() {
+    static std::atomic<int> n{1};
+    return n;
+}
+
+// Shared by the threads of one call.
+struct Interrupt {
+    std::atomic<bool> stop{false};  // a signal or an exception: every range stops at its next unit
+    bool signalled = false;         // written and read by the calling thread only
+
+    // Calling thread, GIL released: takes the GIL for a moment and checks for signals.
+    bool check_signals() {
+        pybind11::gil_scoped_acquire gil;
+        if (PyErr_CheckSignals() != 0) {
+            signalled = true;
+            stop.store(true, std::memory_order_relaxed);
+        }
+        return signalled;
+    }
+    // GIL held: raises the pending KeyboardInterrupt (or the signal handler's exception).
+    void raise_if_signalled() const {
+        if (signalled) throw pybind11::error_already_set();
+    }
+};
+
+// A range's "stop now?" test, called before each unit with the number of elements the range
+// has done: the flag; on the calling thread also the signals, every kSignalStride elements.
+class StopCheck {
+  public:
+    StopCheck(Interrupt &I, bool caller) : I_(I), caller_(caller) {}
+    bool operator()(std::size_t done) {
+        if (I_.stop.load(std::memory_order_relaxed)) return true;
+        if (!caller_ || done < next_) return false;
+        next_ = done + kSignalStride;
+        return I_.check_signals();
+    }
+
+  private:
+    Interrupt &I_;
+    bool caller_;
+    std::size_t next_ = kSignalStride;
+};
+
+// How many threads a call of n elements in `units` units gets.
+inline std::size_t threads_for(std::size_t n, std::size_t units) {
+    const auto want = static_cast<std::size_t>(std::max(1, num_threads().load(std::memory_order_relaxed)));
+    return std::max<std::size_t>(1, std::min({want, units, n / kMinPerThread}));
+}
+
+// Runs body(begin, end, stop) -> R over the units [0, units) split into contiguous ranges, one
+// per thread (the calling thread runs the first); returns the ranges' results in range order.
+// Call with the GIL released. n: the elements (for the thread count). After it returns, call
+// I.raise_if_signalled() with the GIL held.
+template <class R, class Body>
+std::vector<R> run_ranges(std::size_t n, std::size_t units, Interrupt &I, Body &&body) {
+    const std::size_t T = threads_for(n, units);
+    std::vector<R> results(T);
+    if (T == 1) {  // today's single-thread loop, on the calling thread
+        StopCheck stop(I, true);
+        results[0] = body(std::size_t(0), units, stop);
+        return results;
+    }
+    std::vector<std::exception_ptr> errors(T);
+    std::mutex mu;
+    std::condition_variable cv;
+    std::size_t running = 0;
+    auto range = [&](std::size_t k) { return std::make_pair(units * k / T, units * (k + 1) / T); };
+    auto work = [&](std::size_t k, bool caller) {
+        try {
+            StopCheck stop(I, caller);
+            const auto r = range(k);
+            results[k] = body(r.first, r.second, stop);
+        } catch (...) {
+            errors[k] = std::current_exception();
+            I.stop.store(true, std::memory_order_relaxed);
+        }
+    };
+    std::vector<std::thread> pool;
+    std::vector<std::size_t> left;  // ranges no thread could be started for: the caller runs them
+    pool.reserve(T - 1);
+    for (std::size_t k = 1; k < T; ++k) {
+        try {
+            {
+                std::lock_guard<std::mutex> lock(mu);
+                ++running;
+            }
+            pool.emplace_back([&, k] {
+                work(k, false);
+                std::lock_guard<std::mutex> lock(mu);
+                --running;
+                cv.notify_one();
+            });
+        } catch (...) {  // std::system_error (no more threads) or bad_alloc
+            std::lock_guard<std::mutex> lock(mu);
+            --running;
+            left.push_back(k);
+        }
+    }
+    // RAII: every started thread is joined, whatever happens below.
+    struct Join {
+        std::vector<std::thread> &pool;
+        ~Join() {
+            for (auto &t : pool)
+                if (t.joinable()) t.join();
+        }
+    } join{pool};
+    work(0, true);
+    for (std::size_t k : left) work(k, true);
+    for (;;) {
+        std::unique_lock<std::mutex> lock(mu);
+        if (cv.wait_for(lock, kWaitPoll, [&] { return running == 0; })) break;
+        lock.unlock();
+        if (!I.signalled) I.check_signals();
+    }
+    for (auto &t : pool) t.join();
+    for (auto &e : errors)
+        if (e) std::rethrow_exception(e);
+    return results;
+}
+
+}  // namespace pgloss_py
+
+#endif
