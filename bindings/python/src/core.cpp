@@ -96,7 +96,7 @@ py::tuple vmap(const std::array<darr, NI> &in, F f) {
     Interrupt I;
     {
         py::gil_scoped_release nogil;
-        run_ranges<char>(count, units_of(count, kSlice), I, [&](size_t u0, size_t u1, StopCheck &stop) {
+        run_ranges<char>(count * pgloss_py::kScalarCost, units_of(count, kSlice), I, [&](size_t u0, size_t u1, StopCheck &stop) {
             for (size_t u = u0; u < u1; ++u) {
                 if (stop((u - u0) * kSlice)) break;
                 const size_t end = std::min(count, (u + 1) * kSlice);
@@ -744,6 +744,13 @@ PYBIND11_MODULE(_core, mod) {
     });
     mod.def("get_num_threads", [] { return pgloss_py::num_threads().load(); });
     mod.attr("MIN_ELEMENTS_PER_THREAD") = pgloss_py::kMinPerThread;
+    // For the tests and the benchmark only: the threshold above (1 splits any array of two
+    // chunks or more); returns the previous value.
+    mod.def("_set_min_elements_per_thread", [](size_t n) {
+        return pgloss_py::min_per_thread().exchange(std::max<size_t>(1, n));
+    });
+    mod.def("_last_threads", [] { return pgloss_py::last_threads().load(); },
+            "The threads the latest array call used (for the tests).");
 
     mod.def("status_string", [](int s) { return std::string(pgloss_status_string(static_cast<pgloss_status>(s))); });
     mod.def("status_name", [](int s) { return std::string(pgloss_status_name(static_cast<pgloss_status>(s))); });

@@ -43,15 +43,26 @@ constexpr std::size_t kSignalStride = std::size_t(1) << 16;
 constexpr std::chrono::milliseconds kWaitPoll{20};
 
 // The fewest elements worth a thread of their own: below 2 × this an array stays on the calling
-// thread. Measured on a 2-core x86-64 host (BENCHMARKS.md, "Threads"): starting and joining a
-// thread costs about 30-60 µs, and two threads beat one from about 20 000 elements for the
-// cheapest loops (gloss_from_physical, eval float32 with one material, ~4-6 ns an element).
-constexpr std::size_t kMinPerThread = std::size_t(1) << 14;
+// thread. Measured (bench/bench_threads.py, BENCHMARKS.md "Threads"; a 2-core VM): a split call
+// costs some 30-80 µs more than its work (starting, waking and joining a thread), and the
+// cheapest loops (gloss_from_physical, eval float32 with one material or per element, 4-8 ns an
+// element) gain from two threads from 131 072 elements (1.1-1.6×), not yet at 65 536 (0.9×). The
+// element-wise scalar functions (vmap, ~40 ns an element) count kScalarCost elements each: they
+// gain from 16 384 elements (1.1-1.2×; 1.3-1.6× at 32 768).
+constexpr std::size_t kMinPerThread = std::size_t(1) << 16;
+constexpr std::size_t kScalarCost = 4;
 
 // The thread count of the array calls: pgloss.set_num_threads (Python validates it). A setting
 // of the binding, not of the C core (which has no global state).
 inline std::atomic<int> &num_threads() {
     static std::atomic<int> n{1};
+    return n;
+}
+
+// kMinPerThread, lowered by the tests (to split the shared vectors' short arrays) and the
+// benchmark (to measure the crossover): _core._set_min_elements_per_thread.
+inline std::atomic<std::size_t> &min_per_thread() {
+    static std::atomic<std::size_t> n{kMinPerThread};
     return n;
 }
 
@@ -93,20 +104,29 @@ class StopCheck {
     std::size_t next_ = kSignalStride;
 };
 
-// How many threads a call of n elements in `units` units gets.
+// The threads the latest split call of this process used (1: not split), for the tests.
+inline std::atomic<std::size_t> &last_threads() {
+    static std::atomic<std::size_t> n{0};
+    return n;
+}
+
+// How many threads a call of n elements in `units` units gets; n counts each element's cost
+// in units of the cheapest loops' (kScalarCost for a scalar function per element).
 inline std::size_t threads_for(std::size_t n, std::size_t units) {
     const auto want = static_cast<std::size_t>(std::max(1, num_threads().load(std::memory_order_relaxed)));
-    return std::max<std::size_t>(1, std::min({want, units, n / kMinPerThread}));
+    const std::size_t least = std::max<std::size_t>(1, min_per_thread().load(std::memory_order_relaxed));
+    return std::max<std::size_t>(1, std::min({want, units, n / least}));
 }
 
 // Runs body(begin, end, stop) -> R over the units [0, units) split into contiguous ranges, one
 // per thread (the calling thread runs the first); returns the ranges' results in range order.
-// Call with the GIL released. n: the elements (for the thread count). After it returns, call
+// Call with the GIL released. n: the elements, times their cost (threads_for). After it returns, call
 // I.raise_if_signalled() with the GIL held.
 template <class R, class Body>
 std::vector<R> run_ranges(std::size_t n, std::size_t units, Interrupt &I, Body &&body) {
     const std::size_t T = threads_for(n, units);
     std::vector<R> results(T);
+    last_threads().store(T, std::memory_order_relaxed);
     if (T == 1) {  // today's single-thread loop, on the calling thread
         StopCheck stop(I, true);
         results[0] = body(std::size_t(0), units, stop);
