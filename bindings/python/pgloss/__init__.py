@@ -19,7 +19,9 @@ the same name without the prefix. Functions are **array-first**:
   texture is one object); :func:`eval`, :func:`pdf`, :func:`eval_pdf` and :func:`sample`
   take such an array (or a list of paints) as one material per element, broadcast against
   the directions;
-* the loops run in C with the GIL released; a scalar input gives a Python ``float``.
+* the loops run in C with the GIL released, a long array over :func:`get_num_threads` threads
+  (default: every CPU this process may run on; :func:`set_num_threads`, ``PGLOSS_NUM_THREADS``)
+  with the same results, bit for bit, on any number; a scalar input gives a Python ``float``.
 
 Precision: the BRDF functions (:func:`eval`, :func:`pdf`, :func:`eval_pdf`, :func:`sample`)
 run the C core's vectorised batches: ``float32`` arrays the float batch (``pgloss_*_batch``,
@@ -72,7 +74,7 @@ __all__ = [
     "envelope_contrast", "match_gloss", "isogloss_contour", "check_physical",
     "check_perceptual", "physical_from_perceptual", "perceptual_from_physical",
     "rgb_from_lab", "lab_from_rgb", "luminance",
-    "set_num_threads", "get_num_threads",
+    "set_num_threads", "get_num_threads", "MAX_THREADS", "MIN_ELEMENTS_PER_THREAD",
 ]
 
 __version__: str = _core.VERSION
@@ -323,9 +325,11 @@ def set_num_threads(n: Optional[int]) -> int:
     ``n``: 1 to :data:`MAX_THREADS` (more than the CPUs is allowed), or ``None`` for the CPUs
     this process may run on (``os.sched_getaffinity``), the default unless the environment
     variable ``PGLOSS_NUM_THREADS`` sets another at import. 1 runs every call on the calling
-    thread. Arrays too short to gain from threads (under 2 × ``MIN_ELEMENTS_PER_THREAD``
-    elements) always run on the calling thread. The results are the same, bit for bit, for any
-    setting: outputs, status arrays, the index of the first failing element, warnings.
+    thread. Arrays too short to gain from threads run on the calling thread: under
+    2 × :data:`MIN_ELEMENTS_PER_THREAD` elements (131 072), or a quarter of that for the
+    element-wise scalar functions (``contrast_gloss``, ``gloss_distance``, …), which cost more
+    per element. The results are the same, bit for bit, for any setting: outputs, status
+    arrays, the index of the first failing element, warnings. Ctrl-C stops a threaded call too.
 
     The setting is the process's, for every Python thread; a call reads it when it starts.
     """
