@@ -3,17 +3,18 @@
 // parallel.h — the array calls of pgloss._core over several threads.
 //
 // The C core is single-threaded by design (no global state: its users thread it). The binding
-// splits one long array call into contiguous ranges of whole units (a unit is the loop's own
-// chunk: 128 direction pairs, or a slice of paints), one range per thread, with std::thread.
+// splits one long array call into contiguous blocks of whole units (a unit is the loop's own
+// chunk: 128 direction pairs, or a slice of paints) and runs them on std::threads started for
+// the call and joined before it returns (no pool: nothing outlives a call, so fork() is safe).
 // Each unit's outputs depend on that unit's inputs only, so the outputs are the same bits for
-// any thread count; what a range reports (its first failing element) is merged in range order,
+// any thread count; what a block reports (its first failing element) is merged in block order,
 // so the lowest failing index wins, as on one thread.
 //
-// The calling thread runs the first range itself and is the only one that touches Python:
-// it checks for signals (Ctrl-C) every kSignalStride elements of its range and, once done,
-// every kWaitPoll while it waits for the others; a signal sets an atomic flag that every
-// range checks before each unit. Workers never call the Python API. An exception in a range
-// sets the flag too, and the first in range order is rethrown to the caller after every
+// The calling thread works on blocks too and is the only one that touches Python: it checks
+// for signals (Ctrl-C) every kSignalStride elements of its work and, once the blocks are all
+// taken, every kWaitPoll while it waits for the others; a signal sets an atomic flag that
+// every thread checks before each unit. Workers never call the Python API. An exception in a
+// block sets the flag too, and the first in block order is rethrown to the caller after every
 // thread has been joined.
 
 #ifndef PGLOSS_PY_PARALLEL_H
@@ -68,7 +69,7 @@ inline std::atomic<std::size_t> &min_per_thread() {
 
 // Shared by the threads of one call.
 struct Interrupt {
-    std::atomic<bool> stop{false};  // a signal or an exception: every range stops at its next unit
+    std::atomic<bool> stop{false};  // a signal or an exception: every thread stops at its next unit
     bool signalled = false;         // written and read by the calling thread only
 
     // Calling thread, GIL released: takes the GIL for a moment and checks for signals.
@@ -86,21 +87,24 @@ struct Interrupt {
     }
 };
 
-// A range's "stop now?" test, called before each unit with the number of elements the range
-// has done: the flag; on the calling thread also the signals, every kSignalStride elements.
+// A thread's "stop now?" test, called before each unit with the number of elements the
+// current block has done: the flag; on the calling thread also the signals, every
+// kSignalStride elements of its work (counted across its blocks).
 class StopCheck {
   public:
     StopCheck(Interrupt &I, bool caller) : I_(I), caller_(caller) {}
     bool operator()(std::size_t done) {
         if (I_.stop.load(std::memory_order_relaxed)) return true;
-        if (!caller_ || done < next_) return false;
-        next_ = done + kSignalStride;
+        if (!caller_ || offset_ + done < next_) return false;
+        next_ = offset_ + done + kSignalStride;
         return I_.check_signals();
     }
+    void next_block(std::size_t elements) { offset_ += elements; }
 
   private:
     Interrupt &I_;
     bool caller_;
+    std::size_t offset_ = 0;
     std::size_t next_ = kSignalStride;
 };
 
@@ -118,56 +122,53 @@ inline std::size_t threads_for(std::size_t n, std::size_t units) {
     return std::max<std::size_t>(1, std::min({want, units, n / least}));
 }
 
-// Runs body(begin, end, stop) -> R over the units [0, units) split into contiguous ranges, one
-// per thread (the calling thread runs the first); returns the ranges' results in range order.
-// Call with the GIL released. n: the elements, times their cost (threads_for). After it returns, call
-// I.raise_if_signalled() with the GIL held.
+// Blocks per thread: a split call deals its units out in blocks (contiguous ranges of whole
+// units), kBlocksPerThread per thread, taken in turn from an atomic counter by whichever thread
+// is free. On a shared machine a thread that the OS deschedules then holds up the call by one
+// block at most, where equal ranges fixed in advance would make the call wait for it (measured
+// on this project's 2-core host with both cores busy: 2 threads with fixed halves took 1.4-2×
+// the time of one thread; with blocks about the same as one thread).
+constexpr std::size_t kBlocksPerThread = 16;
+
+// Runs body(begin, end, stop) -> R over the units [0, units) in contiguous blocks, on up to
+// num_threads() threads (the calling thread is one of them); returns the blocks' results in
+// block order, so that the first error in index order is the first block's that has one.
+// Call with the GIL released. n: the elements, times their cost (threads_for). After it
+// returns, call I.raise_if_signalled() with the GIL held.
 template <class R, class Body>
 std::vector<R> run_ranges(std::size_t n, std::size_t units, Interrupt &I, Body &&body) {
     const std::size_t T = threads_for(n, units);
-    std::vector<R> results(T);
     last_threads().store(T, std::memory_order_relaxed);
     if (T == 1) {  // today's single-thread loop, on the calling thread
         StopCheck stop(I, true);
-        results[0] = body(std::size_t(0), units, stop);
-        return results;
+        return std::vector<R>{body(std::size_t(0), units, stop)};
     }
-    std::vector<std::exception_ptr> errors(T);
+    const std::size_t blocks = std::min(units, T * kBlocksPerThread);
+    const std::size_t per_unit = units ? (n + units - 1) / units : 0;  // for the signal cadence
+    std::vector<R> results(blocks);
+    std::vector<std::exception_ptr> errors(blocks);
+    std::atomic<std::size_t> next{0};
+    auto work = [&](bool caller) {
+        StopCheck stop(I, caller);
+        for (;;) {
+            const std::size_t k = next.fetch_add(1, std::memory_order_relaxed);
+            if (k >= blocks || I.stop.load(std::memory_order_relaxed)) return;
+            const std::size_t u0 = units * k / blocks, u1 = units * (k + 1) / blocks;
+            try {
+                results[k] = body(u0, u1, stop);
+            } catch (...) {
+                errors[k] = std::current_exception();
+                I.stop.store(true, std::memory_order_relaxed);
+                return;
+            }
+            stop.next_block((u1 - u0) * per_unit);
+        }
+    };
     std::mutex mu;
     std::condition_variable cv;
     std::size_t running = 0;
-    auto range = [&](std::size_t k) { return std::make_pair(units * k / T, units * (k + 1) / T); };
-    auto work = [&](std::size_t k, bool caller) {
-        try {
-            StopCheck stop(I, caller);
-            const auto r = range(k);
-            results[k] = body(r.first, r.second, stop);
-        } catch (...) {
-            errors[k] = std::current_exception();
-            I.stop.store(true, std::memory_order_relaxed);
-        }
-    };
     std::vector<std::thread> pool;
-    std::vector<std::size_t> left;  // ranges no thread could be started for: the caller runs them
     pool.reserve(T - 1);
-    for (std::size_t k = 1; k < T; ++k) {
-        try {
-            {
-                std::lock_guard<std::mutex> lock(mu);
-                ++running;
-            }
-            pool.emplace_back([&, k] {
-                work(k, false);
-                std::lock_guard<std::mutex> lock(mu);
-                --running;
-                cv.notify_one();
-            });
-        } catch (...) {  // std::system_error (no more threads) or bad_alloc
-            std::lock_guard<std::mutex> lock(mu);
-            --running;
-            left.push_back(k);
-        }
-    }
     // RAII: every started thread is joined, whatever happens below.
     struct Join {
         std::vector<std::thread> &pool;
@@ -176,8 +177,26 @@ std::vector<R> run_ranges(std::size_t n, std::size_t units, Interrupt &I, Body &
                 if (t.joinable()) t.join();
         }
     } join{pool};
-    work(0, true);
-    for (std::size_t k : left) work(k, true);
+    for (std::size_t k = 1; k < T; ++k) {
+        {
+            std::lock_guard<std::mutex> lock(mu);
+            ++running;
+        }
+        try {
+            pool.emplace_back([&] {
+                work(false);
+                std::lock_guard<std::mutex> lock(mu);
+                --running;
+                cv.notify_one();
+            });
+        } catch (...) {  // std::system_error (no more threads): the threads there are do the work
+            std::lock_guard<std::mutex> lock(mu);
+            --running;
+            break;
+        }
+    }
+    work(true);
+    // The other threads finish their last block; the calling thread keeps Ctrl-C alive.
     for (;;) {
         std::unique_lock<std::mutex> lock(mu);
         if (cv.wait_for(lock, kWaitPoll, [&] { return running == 0; })) break;
