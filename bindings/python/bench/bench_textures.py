@@ -26,7 +26,8 @@ Threads: the rows above run pgloss on **one thread** (``pgloss.set_num_threads(1
 explicitly), like for like with numpy, whose element-wise functions run on one thread. Then, with
 ``--threads`` (default: every CPU this process may run on; 0 leaves them out), the same calls on
 that many threads: against numpy's same formula, and against the same call on one thread (the
-speed-up; paired, alternately, call by call).
+speed-up; paired, alternately, call by call), with the threaded call's CPU time over its wall
+time (the cores it got: on a host shared with other jobs, about 1 when they hold the other cores).
 
     python bindings/python/bench/bench_textures.py [--size 4096] [--repeat 5] [--only perceptual|brdf]
                                                    [--threads N] [--csv FILE]
@@ -79,6 +80,26 @@ def paired(fa: Callable[[], object], fb: Callable[[], object], repeat: int) -> T
         ta.append(t1 - t0)
         tb.append(t2 - t1)
     return statistics.median(ta), statistics.median(tb)
+
+
+def paired_cpu(fa: Callable[[], object], fb: Callable[[], object], repeat: int) -> Tuple[float, float, float]:
+    """As :func:`paired`, plus the median of ``fa``'s process CPU time over its wall time: the
+    cores it got (about the thread count on an idle machine, about 1 when the other cores are
+    busy with other jobs)."""
+    fa()
+    fb()
+    ta, tb, ca = [], [], []
+    for _ in range(repeat):
+        c0 = time.process_time()
+        t0 = time.perf_counter()
+        fa()
+        t1 = time.perf_counter()
+        ca.append((time.process_time() - c0) / (t1 - t0))
+        fb()
+        t2 = time.perf_counter()
+        ta.append(t1 - t0)
+        tb.append(t2 - t1)
+    return statistics.median(ta), statistics.median(tb), statistics.median(ca)
 
 
 def numpy_physical_from_perceptual(L, a, b, c, d):
@@ -224,8 +245,9 @@ def main(argv=None) -> int:
 
     if T > 1:
         for what, fn, ref, t_ref in threaded:
-            t_many, t_one = paired(on(T, fn), on(1, fn), rep)
-            row(what, f"on {T} threads", t_many, "the same on 1 thread", t_one, "speed-up ×{:.2f}".format(t_one / t_many))
+            t_many, t_one, cores = paired_cpu(on(T, fn), on(1, fn), rep)
+            row(what, f"on {T} threads", t_many, "the same on 1 thread", t_one,
+                f"speed-up ×{t_one / t_many:.2f} (CPU/wall {cores:.2f})")
             if ref:
                 row(what, f"on {T} threads", t_many, ref + " (1 thread)", t_ref, "≤ 1")
 

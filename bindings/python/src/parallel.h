@@ -125,9 +125,9 @@ inline std::size_t threads_for(std::size_t n, std::size_t units) {
 // Blocks per thread: a split call deals its units out in blocks (contiguous ranges of whole
 // units), kBlocksPerThread per thread, taken in turn from an atomic counter by whichever thread
 // is free. On a shared machine a thread that the OS deschedules then holds up the call by one
-// block at most, where equal ranges fixed in advance would make the call wait for it (measured
-// on this project's 2-core host with both cores busy: 2 threads with fixed halves took 1.4-2×
-// the time of one thread; with blocks about the same as one thread).
+// block at most, where equal ranges fixed in advance make the call wait for it (on this
+// project's 2-core host with both cores busy with other jobs, gloss_from_physical on 2^22 paints:
+// 2 threads with fixed halves took 1.4-2.0× the time of one thread, with blocks 1.05-1.35×).
 constexpr std::size_t kBlocksPerThread = 16;
 
 // Runs body(begin, end, stop) -> R over the units [0, units) in contiguous blocks, on up to
