@@ -376,6 +376,19 @@ def test_short_arrays_stay_on_the_calling_thread() -> None:
     assert _core._last_threads() == 1
 
 
+def test_ranges_cover_every_unit_once_and_carry_exceptions() -> None:
+    """parallel.h alone: every unit runs once, the results merge in index order, and an
+    exception thrown in any thread (first, middle or last unit) reaches the caller."""
+    for n in (1, 2, 3, 7, 16):
+        pgloss.set_num_threads(n)
+        for units in (1, 2, 5, 113, 1000):
+            assert _core._test_ranges(units, -1) == list(range(units))
+            for k in {0, units // 2, units - 1}:
+                with pytest.raises(RuntimeError, match=f"unit {k}$"):
+                    _core._test_ranges(units, k)
+        assert pgloss.get_num_threads() == n
+
+
 # ------------------------------------------------------------------------------------------------
 # The setting.
 
@@ -453,3 +466,18 @@ except KeyboardInterrupt:
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd="/", timeout=300)
     assert r.returncode == 0, r.stderr
     assert r.stdout.startswith("interrupted True"), r.stdout
+
+
+def test_benchmarks_run() -> None:
+    """The benchmarks are programs, not timed tests: only check that they run and print the
+    single-thread and threaded rows."""
+    bench = Path(__file__).resolve().parents[2] / "bindings" / "python" / "bench"
+    r = subprocess.run([sys.executable, str(bench / "bench_textures.py"), "--size", "128", "--repeat", "1",
+                        "--threads", "3"], capture_output=True, text=True, timeout=300)
+    assert r.returncode == 0, r.stderr
+    assert "| gloss_from_physical, 16,384 paints | gloss_from_physical (L, c, d + statuses) |" in r.stdout
+    assert "| gloss_from_physical, 16,384 paints | on 3 threads |" in r.stdout
+    r = subprocess.run([sys.executable, str(bench / "bench_threads.py"), "--repeat", "1", "--threads", "2"],
+                       capture_output=True, text=True, timeout=300)
+    assert r.returncode == 0, r.stderr
+    assert "| eval float32, one material |" in r.stdout

@@ -26,6 +26,7 @@ def set_num_threads(n: int) -> int: ...  # returns the previous count; pgloss.se
 def get_num_threads() -> int: ...
 def _set_min_elements_per_thread(n: int) -> int: ...  # tests and benchmarks only
 def _last_threads() -> int: ...  # tests only
+def _test_ranges(units: int, throw_at: int) -> List[int]: ...  # tests only
 
 class Material:
     """An evaluation-ready material (pgloss_material); build with pgloss.material_init."""

@@ -751,6 +751,30 @@ PYBIND11_MODULE(_core, mod) {
     });
     mod.def("_last_threads", [] { return pgloss_py::last_threads().load(); },
             "The threads the latest array call used (for the tests).");
+    // For the tests of parallel.h alone: runs `units` units of one element each and returns the
+    // units in the order of the merged results (each exactly once, ascending); a unit equal to
+    // throw_at throws std::runtime_error in whichever thread runs it.
+    mod.def("_test_ranges", [](size_t units, long long throw_at) {
+        Interrupt I;
+        std::vector<std::vector<size_t>> blocks;
+        {
+            py::gil_scoped_release nogil;
+            blocks = run_ranges<std::vector<size_t>>(units, units, I, [&](size_t u0, size_t u1, StopCheck &stop) {
+                std::vector<size_t> seen;
+                for (size_t u = u0; u < u1; ++u) {
+                    if (stop(u - u0)) break;
+                    if (static_cast<long long>(u) == throw_at)
+                        throw std::runtime_error("pgloss._core._test_ranges: unit " + std::to_string(u));
+                    seen.push_back(u);
+                }
+                return seen;
+            });
+        }
+        I.raise_if_signalled();
+        std::vector<size_t> all;
+        for (const auto &b : blocks) all.insert(all.end(), b.begin(), b.end());
+        return all;
+    });
 
     mod.def("status_string", [](int s) { return std::string(pgloss_status_string(static_cast<pgloss_status>(s))); });
     mod.def("status_name", [](int s) { return std::string(pgloss_status_name(static_cast<pgloss_status>(s))); });
