@@ -22,7 +22,15 @@ Rows (median of --repeat runs after a warm-up, time.perf_counter around the publ
 The eval and sample rows are paired: the two sides run alternately, call by call, and each
 side's median is reported, so that a loaded host slows both alike.
 
-    python bindings/python/bench/bench_textures.py [--size 4096] [--repeat 5] [--only perceptual|brdf] [--csv FILE]
+Threads: the rows above run pgloss on **one thread** (``pgloss.set_num_threads(1)``, set
+explicitly), like for like with numpy, whose element-wise functions run on one thread. Then, with
+``--threads`` (default: every CPU this process may run on; 0 leaves them out), the same calls on
+that many threads: against numpy's same formula, and against the same call on one thread (the
+speed-up; paired, alternately, call by call), with the threaded call's CPU time over its wall
+time (the cores it got: on a host shared with other jobs, about 1 when they hold the other cores).
+
+    python bindings/python/bench/bench_textures.py [--size 4096] [--repeat 5] [--only perceptual|brdf]
+                                                   [--threads N] [--csv FILE]
 """
 
 from __future__ import annotations
@@ -74,6 +82,26 @@ def paired(fa: Callable[[], object], fb: Callable[[], object], repeat: int) -> T
     return statistics.median(ta), statistics.median(tb)
 
 
+def paired_cpu(fa: Callable[[], object], fb: Callable[[], object], repeat: int) -> Tuple[float, float, float]:
+    """As :func:`paired`, plus the median of ``fa``'s process CPU time over its wall time: the
+    cores it got (about the thread count on an idle machine, about 1 when the other cores are
+    busy with other jobs)."""
+    fa()
+    fb()
+    ta, tb, ca = [], [], []
+    for _ in range(repeat):
+        c0 = time.process_time()
+        t0 = time.perf_counter()
+        fa()
+        t1 = time.perf_counter()
+        ca.append((time.process_time() - c0) / (t1 - t0))
+        fb()
+        t2 = time.perf_counter()
+        ta.append(t1 - t0)
+        tb.append(t2 - t1)
+    return statistics.median(ta), statistics.median(tb), statistics.median(ca)
+
+
 def numpy_physical_from_perceptual(L, a, b, c, d):
     fy = (L + 16.0) / 116.0
     fx = fy + a / 500.0
@@ -109,9 +137,26 @@ def main(argv=None) -> int:
     ap.add_argument("--size", type=int, default=4096, help="texture side N (N² texels; default 4096)")
     ap.add_argument("--repeat", type=int, default=5)
     ap.add_argument("--only", choices=("perceptual", "brdf"), help="only the conversion rows, or only eval/sample")
+    ap.add_argument("--threads", type=int, default=None,
+                    help="threads of the threaded rows (default: all CPUs of this process; 0: no threaded rows)")
     ap.add_argument("--csv", help="also write the rows as CSV")
     args = ap.parse_args(argv)
     N, rep = args.size, args.repeat
+    pgloss.set_num_threads(None)
+    T = pgloss.get_num_threads() if args.threads is None else args.threads
+    pgloss.set_num_threads(1)  # the like-for-like rows: one thread, as numpy
+
+    def on(threads: int, fn: Callable[[], object]) -> Callable[[], object]:
+        def call() -> object:
+            old = pgloss.set_num_threads(threads)
+            try:
+                return fn()
+            finally:
+                pgloss.set_num_threads(old)
+        return call
+
+    # (what, call, the numpy reference's label and time or None): the threaded rows, run last
+    threaded: List[Tuple[str, Callable[[], object], str, float]] = []
     n = N * N
     rng = np.random.default_rng(18)
     rows: List[Tuple[str, str, float, str, float, str]] = []
@@ -136,6 +181,8 @@ def main(argv=None) -> int:
             "numpy eqs. 6–7 + Lab→RGB, no checks", t_np, "≤ 1")
         row(f"physical_from_perceptual + check, {N}² texels", "to_physical + check() (full model check)", t_pg_check,
             "numpy eqs. 6–7 + Lab→RGB, no checks", t_np, "")
+        threaded.append((f"physical_from_perceptual, {N}² texels", lambda: tex.to_physical(errors="status"),
+                         "numpy eqs. 6–7 + Lab→RGB, no checks", t_np))
 
         rd = rng.uniform(0.0, 0.9, n)
         rs = rng.uniform(0.0, 0.1, n)
@@ -144,6 +191,8 @@ def main(argv=None) -> int:
         t_pg = timed(lambda: pgloss.gloss_from_physical(rd, rs, al, errors="status"), rep)
         row(f"gloss_from_physical, {n:,} paints", "gloss_from_physical (L, c, d + statuses)", t_pg,
             "numpy eq. 4 (c only)", t_np, "≤ 1")
+        threaded.append((f"gloss_from_physical, {n:,} paints",
+                         lambda: pgloss.gloss_from_physical(rd, rs, al, errors="status"), "numpy eq. 4 (c only)", t_np))
 
     if args.only != "perceptual":
         rng = np.random.default_rng([18, 1])  # its own stream: the same data with or without --only
@@ -186,13 +235,29 @@ def main(argv=None) -> int:
         u32, u64 = rng.random((m, 3), dtype=np.float32), rng.random((m, 3))
         t_s64, t_s32 = paired(lambda: pgloss.sample(uniform, wo64, u64), lambda: pgloss.sample(uniform, wo32, u32), rep)
         row(f"sample, {m:,} draws, one material", "float64 (vectorised double)", t_s64, "float32", t_s32, "≤ 2")
+        threaded += [
+            (f"eval, {m:,} pairs, one material, float32", ev(uniform, wo32, wi32, f32b), "", 0.0),
+            (f"eval, {m:,} pairs, per-pair materials, float32", ev(per, wo32, wi32, f32), "", 0.0),
+            (f"eval, {m:,} pairs, one material, float64", ev(uniform, wo64, wi64, f64), "", 0.0),
+            (f"eval, {m:,} pairs, per-pair materials, float64", ev(per, wo64, wi64, f64), "", 0.0),
+            (f"sample, {m:,} draws, one material, float64", lambda: pgloss.sample(uniform, wo64, u64), "", 0.0),
+        ]
+
+    if T > 1:
+        for what, fn, ref, t_ref in threaded:
+            t_many, t_one, cores = paired_cpu(on(T, fn), on(1, fn), rep)
+            row(what, f"on {T} threads", t_many, "the same on 1 thread", t_one,
+                f"speed-up ×{t_one / t_many:.2f} (CPU/wall {cores:.2f})")
+            if ref:
+                row(what, f"on {T} threads", t_many, ref + " (1 thread)", t_ref, "≤ 1")
 
     try:
         load = os.getloadavg()
         load_s = f"load average {load[0]:.2f}, {load[1]:.2f}, {load[2]:.2f}"
     except OSError:
         load_s = "load average unknown"
-    print(f"pgloss {pgloss.__version__}, numpy {np.__version__}, {load_s}; median of {rep} runs\n")
+    print(f"pgloss {pgloss.__version__}, numpy {np.__version__}, {load_s}; median of {rep} runs; "
+          f"pgloss on 1 thread but in the rows that say otherwise ({os.cpu_count()} CPUs)\n")
     print("| what | pgloss | time | reference | time | ratio | target |")
     print("|---|---|---:|---|---:|---:|---|")
     for what, ours, t1, ref, t2, target in rows:

@@ -32,6 +32,8 @@ D_WEIGHT: float
 ALPHA_TRUSTED_MAX: float
 BOUNDARY_TOLERANCE: float
 LUMA: Tuple[float, float, float]
+MAX_THREADS: int
+MIN_ELEMENTS_PER_THREAD: int
 
 _Float = Union[float, np.floating[Any], int]
 _Arr = npt.ArrayLike
@@ -95,6 +97,8 @@ class AlphaUntrustedWarning(PglossWarning): ...
 
 def status_string(status: int) -> str: ...
 def status_name(status: int) -> str: ...
+def set_num_threads(n: Optional[int]) -> int: ...
+def get_num_threads() -> int: ...
 
 # Fields are floats (tuples for rho_d) for one paint, read-only float64 arrays for an array of paints.
 _Field = Any

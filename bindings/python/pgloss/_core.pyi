@@ -20,6 +20,13 @@ D_WEIGHT: float
 ALPHA_TRUSTED_MAX: float
 BOUNDARY_TOLERANCE: float
 LUMA: Tuple[float, float, float]
+MIN_ELEMENTS_PER_THREAD: int
+
+def set_num_threads(n: int) -> int: ...  # returns the previous count; pgloss.set_num_threads validates
+def get_num_threads() -> int: ...
+def _set_min_elements_per_thread(n: int) -> int: ...  # tests and benchmarks only
+def _last_threads() -> int: ...  # tests only
+def _test_ranges(units: int, throw_at: int) -> List[int]: ...  # tests only
 
 class Material:
     """An evaluation-ready material (pgloss_material); build with pgloss.material_init."""

@@ -9,6 +9,9 @@
 // into exceptions and warnings, broadcasting, dtypes and docstrings for users live in
 // pgloss/__init__.py.
 //
+// Threads: a long array call is split over pgloss.get_num_threads() threads, in contiguous
+// ranges of whole chunks (parallel.h); the results are the same bits for any thread count.
+//
 // BRDF precision: float32 directions go through the vectorised batched entry points
 // (pgloss/batch.h), de-interleaved chunk by chunk from the (n, 3) layout into
 // structure-of-arrays buffers; float64 directions go through the scalar reference functions
@@ -26,6 +29,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -36,6 +40,7 @@
 #endif
 
 #include "pgloss/pgloss.h"
+#include "parallel.h"
 #include "shim.h"
 
 namespace py = pybind11;
@@ -53,24 +58,14 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // structure-of-arrays buffers stay in L1/L2, large enough to amortise the call.
 constexpr size_t kChunk = 128;
 
-// Long loops run without the GIL; every kSignalStride elements they take it back for a moment
-// so that Ctrl-C (SIGINT) and other signals get through: the loop stops and the call raises
-// KeyboardInterrupt instead of running to the end of a huge array.
-constexpr size_t kSignalStride = size_t(1) << 16;
-struct SignalCheck {
-    size_t next = kSignalStride;
-    bool interrupted = false;
-    bool stop(size_t done) {  // call with the GIL released
-        if (done < next) return false;
-        next = done + kSignalStride;
-        py::gil_scoped_acquire gil;
-        interrupted = PyErr_CheckSignals() != 0;
-        return interrupted;
-    }
-    void raise_if_interrupted() const {  // call with the GIL held
-        if (interrupted) throw py::error_already_set();
-    }
-};
+// The array calls run over several threads (parallel.h); their loops go in units: 128 direction
+// pairs (kChunk), or a slice of kSlice paints for the element-wise functions.
+using pgloss_py::Interrupt;
+using pgloss_py::run_ranges;
+using pgloss_py::StopCheck;
+constexpr size_t kSlice = size_t(1) << 13;
+
+inline size_t units_of(size_t n, size_t unit) { return (n + unit - 1) / unit; }
 
 // A status no core function returns: marks a status array the core left unwritten (a
 // whole-call error, e.g. an unknown normalisation: nothing is written).
@@ -97,21 +92,28 @@ py::tuple vmap(const std::array<darr, NI> &in, F f) {
     }
     py::array_t<std::int8_t> st(n);
     std::int8_t *sp = st.mutable_data();
-    SignalCheck sig;
+    const auto count = static_cast<size_t>(n);
+    Interrupt I;
     {
         py::gil_scoped_release nogil;
-        for (py::ssize_t i = 0; i < n; ++i) {
-            if (sig.stop(static_cast<size_t>(i))) break;
-            std::array<double, NI> x;
-            std::array<double, NO> y;
-            for (size_t k = 0; k < NI; ++k) x[k] = ip[k][i];
-            y.fill(kNaN);
-            const int s = f(x.data(), y.data());
-            for (size_t k = 0; k < NO; ++k) op[k][i] = y[k];
-            sp[i] = static_cast<std::int8_t>(s);
-        }
+        run_ranges<char>(count * pgloss_py::kScalarCost, units_of(count, kSlice), I, [&](size_t u0, size_t u1, StopCheck &stop) {
+            for (size_t u = u0; u < u1; ++u) {
+                if (stop((u - u0) * kSlice)) break;
+                const size_t end = std::min(count, (u + 1) * kSlice);
+                for (size_t i = u * kSlice; i < end; ++i) {
+                    std::array<double, NI> x;
+                    std::array<double, NO> y;
+                    for (size_t k = 0; k < NI; ++k) x[k] = ip[k][i];
+                    y.fill(kNaN);
+                    const int s = f(x.data(), y.data());
+                    for (size_t k = 0; k < NO; ++k) op[k][i] = y[k];
+                    sp[i] = static_cast<std::int8_t>(s);
+                }
+            }
+            return char(0);
+        });
     }
-    sig.raise_if_interrupted();
+    I.raise_if_signalled();
     py::tuple t(NO + 1);
     for (size_t k = 0; k < NO; ++k) t[k] = out[k];
     t[NO] = st;
@@ -121,7 +123,7 @@ py::tuple vmap(const std::array<darr, NI> &in, F f) {
 // ---------------------------------------------------------------------------------------
 // Element-wise map over a batched core function (pgloss/perceptual_batch.h): NI flat
 // inputs of equal length, NO outputs and the status of every element (int8), in slices of
-// kSignalStride elements (Ctrl-C between slices). batch(m, x, y, st) runs one slice. A
+// kSlice elements (Ctrl-C and the threads' ranges between slices). batch(m, x, y, st) runs one slice. A
 // whole-call error of the batch (an unknown colour space or normalisation: nothing written)
 // falls back to the scalar function, element by element, so that each element gets exactly
 // the scalar function's status (the order of its checks) and outputs.
@@ -141,31 +143,36 @@ py::tuple bmap(const std::array<darr, NI> &in, Batch batch, Scalar scalar) {
     for (size_t k = 0; k < NO; ++k) op[k] = block.mutable_data() + k * static_cast<size_t>(n);
     py::array_t<std::int8_t> st(n);
     auto *sp = reinterpret_cast<signed char *>(st.mutable_data());
-    SignalCheck sig;
+    const auto count = static_cast<size_t>(n);
+    Interrupt I;
     {
         py::gil_scoped_release nogil;
-        for (size_t base = 0; base < static_cast<size_t>(n); base += kSignalStride) {
-            if (base && sig.stop(base)) break;
-            const size_t m = std::min(kSignalStride, static_cast<size_t>(n) - base);
-            std::array<const double *, NI> x{};
-            std::array<double *, NO> y{};
-            for (size_t k = 0; k < NI; ++k) x[k] = ip[k] + base;
-            for (size_t k = 0; k < NO; ++k) y[k] = op[k] + base;
-            sp[base] = kUnwritten;
-            const int s = batch(m, x.data(), y.data(), sp + base);
-            if (s < 0 && sp[base] == kUnwritten) {
-                for (size_t j = 0; j < m; ++j) {
-                    std::array<double, NI> xs;
-                    std::array<double, NO> ys;
-                    for (size_t k = 0; k < NI; ++k) xs[k] = x[k][j];
-                    ys.fill(kNaN);
-                    sp[base + j] = static_cast<signed char>(scalar(xs.data(), ys.data()));
-                    for (size_t k = 0; k < NO; ++k) y[k][j] = ys[k];
+        run_ranges<char>(count, units_of(count, kSlice), I, [&](size_t u0, size_t u1, StopCheck &stop) {
+            for (size_t u = u0; u < u1; ++u) {
+                if (stop((u - u0) * kSlice)) break;
+                const size_t base = u * kSlice;
+                const size_t m = std::min(kSlice, count - base);
+                std::array<const double *, NI> x{};
+                std::array<double *, NO> y{};
+                for (size_t k = 0; k < NI; ++k) x[k] = ip[k] + base;
+                for (size_t k = 0; k < NO; ++k) y[k] = op[k] + base;
+                sp[base] = kUnwritten;
+                const int s = batch(m, x.data(), y.data(), sp + base);
+                if (s < 0 && sp[base] == kUnwritten) {
+                    for (size_t j = 0; j < m; ++j) {
+                        std::array<double, NI> xs;
+                        std::array<double, NO> ys;
+                        for (size_t k = 0; k < NI; ++k) xs[k] = x[k][j];
+                        ys.fill(kNaN);
+                        sp[base + j] = static_cast<signed char>(scalar(xs.data(), ys.data()));
+                        for (size_t k = 0; k < NO; ++k) y[k][j] = ys[k];
+                    }
                 }
             }
-        }
+            return char(0);
+        });
     }
-    sig.raise_if_interrupted();
+    I.raise_if_signalled();
     py::tuple t(NO + 2);  // the outputs (rows of the block), the statuses, the block
     for (size_t k = 0; k < NO; ++k) t[k] = block[py::int_(k)];
     t[NO] = st;
@@ -219,6 +226,13 @@ struct FirstError {
         }
     }
 };
+
+// The first error of the call: the ranges are in index order, so the first range with one.
+FirstError first_of(const std::vector<FirstError> &ranges) {
+    for (const FirstError &e : ranges)
+        if (e.status != PGLOSS_OK) return e;
+    return FirstError{};
+}
 
 // (n, 3) rows <-> three arrays, for one chunk. With SSE2 (every x86-64), four rows at a
 // time by shuffles (GCC only vectorises the stride-3 accesses with 8-byte vectors); the
@@ -380,27 +394,32 @@ py::tuple eval_uniform(const Material &M, unsigned lobes, const py::array_t<T, p
     auto pdf = output<T>(want_pdf ? p_out : py::none(), want_pdf ? N : 0, {want_pdf ? N : 0}, "pdf");
     const T *o = wo.data(), *i = wi.data();
     T *fp = want_f ? f.mutable_data() : nullptr, *pp = want_pdf ? pdf.mutable_data() : nullptr;
-    FirstError err;
-    SignalCheck sig;
+    Interrupt I;
+    std::vector<FirstError> errs;
     {
         py::gil_scoped_release nogil;
-        std::vector<T> buf(10 * kChunk);
-        T *ox = buf.data(), *oy = ox + kChunk, *oz = oy + kChunk, *ix = oz + kChunk, *iy = ix + kChunk,
-          *iz = iy + kChunk, *fr = iz + kChunk, *fg = fr + kChunk, *fb = fg + kChunk, *pd = fb + kChunk;
-        for (size_t base = 0; base < n; base += kChunk) {
-            if (sig.stop(base)) break;
-            const size_t m = n - base < kChunk ? n - base : kChunk;
-            deinterleave_any(m, o + 3 * base, ox, oy, oz);
-            deinterleave_any(m, i + 3 * base, ix, iy, iz);
-            const typename Soa<T>::in a{ox, oy, oz}, b{ix, iy, iz};
-            const int st = eval_chunk<T>(M, lobes, m, a, b, typename Soa<T>::rgb{fr, fg, fb}, pd, want_f, want_pdf);
-            if (want_f) interleave_any(m, fr, fg, fb, fp + 3 * base);
-            if (want_pdf) std::copy(pd, pd + m, pp + base);
-            if (st < 0 && err.status == PGLOSS_OK)
-                err.note(st, static_cast<py::ssize_t>(base) + first_bad_eval<T>(M, lobes, m, a, b));
-        }
+        errs = run_ranges<FirstError>(n, units_of(n, kChunk), I, [&](size_t c0, size_t c1, StopCheck &stop) {
+            FirstError err;
+            std::vector<T> buf(10 * kChunk);
+            T *ox = buf.data(), *oy = ox + kChunk, *oz = oy + kChunk, *ix = oz + kChunk, *iy = ix + kChunk,
+              *iz = iy + kChunk, *fr = iz + kChunk, *fg = fr + kChunk, *fb = fg + kChunk, *pd = fb + kChunk;
+            for (size_t base = c0 * kChunk; base < std::min(n, c1 * kChunk); base += kChunk) {
+                if (stop(base - c0 * kChunk)) break;
+                const size_t m = n - base < kChunk ? n - base : kChunk;
+                deinterleave_any(m, o + 3 * base, ox, oy, oz);
+                deinterleave_any(m, i + 3 * base, ix, iy, iz);
+                const typename Soa<T>::in a{ox, oy, oz}, b{ix, iy, iz};
+                const int st = eval_chunk<T>(M, lobes, m, a, b, typename Soa<T>::rgb{fr, fg, fb}, pd, want_f, want_pdf);
+                if (want_f) interleave_any(m, fr, fg, fb, fp + 3 * base);
+                if (want_pdf) std::copy(pd, pd + m, pp + base);
+                if (st < 0 && err.status == PGLOSS_OK)
+                    err.note(st, static_cast<py::ssize_t>(base) + first_bad_eval<T>(M, lobes, m, a, b));
+            }
+            return err;
+        });
     }
-    sig.raise_if_interrupted();
+    I.raise_if_signalled();
+    const FirstError err = first_of(errs);
     return py::make_tuple(f, pdf, err.status, err.index);
 }
 
@@ -435,17 +454,20 @@ py::array_t<float> material_columns(const std::array<darr, 6> &cols) {
     const auto count = static_cast<size_t>(n);
     py::array_t<float> block(std::vector<py::ssize_t>{6, n});
     float *dst = block.mutable_data();
-    SignalCheck sig;
+    Interrupt I;
     {
         py::gil_scoped_release nogil;
-        for (size_t base = 0; base < count; base += kSignalStride) {
-            if (base && sig.stop(base)) break;
-            const size_t end = std::min(count, base + kSignalStride);
-            for (size_t k = 0; k < 6; ++k)
-                for (size_t j = base; j < end; ++j) dst[k * count + j] = to_float(src[k][j]);
-        }
+        run_ranges<char>(count, units_of(count, kSlice), I, [&](size_t u0, size_t u1, StopCheck &stop) {
+            for (size_t u = u0; u < u1; ++u) {
+                if (stop((u - u0) * kSlice)) break;
+                const size_t base = u * kSlice, end = std::min(count, base + kSlice);
+                for (size_t k = 0; k < 6; ++k)
+                    for (size_t j = base; j < end; ++j) dst[k * count + j] = to_float(src[k][j]);
+            }
+            return char(0);
+        });
     }
-    sig.raise_if_interrupted();
+    I.raise_if_signalled();
     return block;
 }
 
@@ -469,12 +491,15 @@ std::array<const T *, 6> material_chunk(const Columns &C, size_t base, size_t m,
     return mc;
 }
 
-// The per-element status array, allocated at the first chunk with an error (the chunks before
-// it had none: their zeros are right). Writing statuses halves the loops' speed, and a
-// texture without errors needs none; pgloss/__init__.py gets None then.
+// The per-element status array, allocated (all zeros) at the first chunk with an error, in
+// whichever thread meets it first: every chunk without an error keeps its zeros, which are
+// right. Writing statuses halves the loops' speed, and a texture without errors needs none;
+// pgloss/__init__.py gets None then. The threads write disjoint ranges of it.
 struct LazyStatus {
     std::vector<signed char> v;
+    std::mutex mu;
     signed char *at(size_t n, size_t base) {  // GIL released: no Python objects
+        std::lock_guard<std::mutex> lock(mu);
         if (v.empty()) v.assign(n, 0);
         return v.data() + base;
     }
@@ -500,57 +525,62 @@ py::tuple eval_materials(const farr &block, int normalization, unsigned lobes,
     const T *o = wo.data(), *i = wi.data();
     T *fp = want_f ? f.mutable_data() : nullptr, *pp = want_pdf ? pdf.mutable_data() : nullptr;
     LazyStatus status;
-    FirstError err;
-    SignalCheck sig;
+    Interrupt I;
+    std::vector<FirstError> errs;
     {
         py::gil_scoped_release nogil;
-        std::vector<T> buf(10 * kChunk);
-        T *ox = buf.data(), *oy = ox + kChunk, *oz = oy + kChunk, *ix = oz + kChunk, *iy = ix + kChunk,
-          *iz = iy + kChunk, *fr = iz + kChunk, *fg = fr + kChunk, *fb = fg + kChunk, *pd = fb + kChunk;
-        std::vector<T> mbuf(std::is_same_v<T, float> ? 0 : 6 * kChunk);
-        for (size_t base = 0; base < n; base += kChunk) {
-            if (sig.stop(base)) break;
-            const size_t m = n - base < kChunk ? n - base : kChunk;
-            deinterleave_any(m, o + 3 * base, ox, oy, oz);
-            deinterleave_any(m, i + 3 * base, ix, iy, iz);
-            const auto mc = material_chunk<T>(C, base, m, mbuf.data());
-            auto call = [&](signed char *status_out) -> int {
-                if constexpr (std::is_same_v<T, float>)
-                    return pgloss_py_eval_pdf_batch_materials(
-                        mc.data(), normalization, lobes, m, pgloss_vec3_array{ox, oy, oz}, pgloss_vec3_array{ix, iy, iz},
-                        want_f ? pgloss_rgb_out{fr, fg, fb} : pgloss_rgb_out{nullptr, nullptr, nullptr},
-                        want_pdf ? pd : nullptr, status_out);
-                else
-                    return pgloss_py_eval_pdf_batch_materials_d(
-                        mc.data(), normalization, lobes, m, pgloss_vec3_array_d{ox, oy, oz},
-                        pgloss_vec3_array_d{ix, iy, iz},
-                        want_f ? pgloss_rgb_out_d{fr, fg, fb} : pgloss_rgb_out_d{nullptr, nullptr, nullptr},
-                        want_pdf ? pd : nullptr, status_out);
-            };
-            // Without the status array first; a chunk with an error runs again with it, for
-            // the statuses (the outputs are the same).
-            int st = call(nullptr);
-            if (st < 0) {
-                signed char *sp = status.at(n, base);
-                std::fill(sp, sp + m, kUnwritten);
-                st = call(sp);
-                if (st < 0 && m > 0 && sp[0] == kUnwritten) {
-                    // A whole-call error (nothing written): every element gets it.
-                    std::fill(sp, sp + m, static_cast<signed char>(st));
-                    std::fill(fr, fr + 3 * kChunk + kChunk, T(0));
+        errs = run_ranges<FirstError>(n, units_of(n, kChunk), I, [&](size_t c0, size_t c1, StopCheck &stop) {
+            FirstError err;
+            std::vector<T> buf(10 * kChunk);
+            T *ox = buf.data(), *oy = ox + kChunk, *oz = oy + kChunk, *ix = oz + kChunk, *iy = ix + kChunk,
+              *iz = iy + kChunk, *fr = iz + kChunk, *fg = fr + kChunk, *fb = fg + kChunk, *pd = fb + kChunk;
+            std::vector<T> mbuf(std::is_same_v<T, float> ? 0 : 6 * kChunk);
+            for (size_t base = c0 * kChunk; base < std::min(n, c1 * kChunk); base += kChunk) {
+                if (stop(base - c0 * kChunk)) break;
+                const size_t m = n - base < kChunk ? n - base : kChunk;
+                deinterleave_any(m, o + 3 * base, ox, oy, oz);
+                deinterleave_any(m, i + 3 * base, ix, iy, iz);
+                const auto mc = material_chunk<T>(C, base, m, mbuf.data());
+                auto call = [&](signed char *status_out) -> int {
+                    if constexpr (std::is_same_v<T, float>)
+                        return pgloss_py_eval_pdf_batch_materials(
+                            mc.data(), normalization, lobes, m, pgloss_vec3_array{ox, oy, oz}, pgloss_vec3_array{ix, iy, iz},
+                            want_f ? pgloss_rgb_out{fr, fg, fb} : pgloss_rgb_out{nullptr, nullptr, nullptr},
+                            want_pdf ? pd : nullptr, status_out);
+                    else
+                        return pgloss_py_eval_pdf_batch_materials_d(
+                            mc.data(), normalization, lobes, m, pgloss_vec3_array_d{ox, oy, oz},
+                            pgloss_vec3_array_d{ix, iy, iz},
+                            want_f ? pgloss_rgb_out_d{fr, fg, fb} : pgloss_rgb_out_d{nullptr, nullptr, nullptr},
+                            want_pdf ? pd : nullptr, status_out);
+                };
+                // Without the status array first; a chunk with an error runs again with it, for
+                // the statuses (the outputs are the same).
+                int st = call(nullptr);
+                if (st < 0) {
+                    signed char *sp = status.at(n, base);
+                    std::fill(sp, sp + m, kUnwritten);
+                    st = call(sp);
+                    if (st < 0 && m > 0 && sp[0] == kUnwritten) {
+                        // A whole-call error (nothing written): every element gets it.
+                        std::fill(sp, sp + m, static_cast<signed char>(st));
+                        std::fill(fr, fr + 3 * kChunk + kChunk, T(0));
+                    }
+                    if (st < 0 && err.status == PGLOSS_OK)
+                        for (size_t j = 0; j < m; ++j)
+                            if (sp[j] < 0) {
+                                err.note(sp[j], static_cast<py::ssize_t>(base + j));
+                                break;
+                            }
                 }
-                if (st < 0 && err.status == PGLOSS_OK)
-                    for (size_t j = 0; j < m; ++j)
-                        if (sp[j] < 0) {
-                            err.note(sp[j], static_cast<py::ssize_t>(base + j));
-                            break;
-                        }
+                if (want_f) interleave_any(m, fr, fg, fb, fp + 3 * base);
+                if (want_pdf) std::copy(pd, pd + m, pp + base);
             }
-            if (want_f) interleave_any(m, fr, fg, fb, fp + 3 * base);
-            if (want_pdf) std::copy(pd, pd + m, pp + base);
-        }
+            return err;
+        });
     }
-    sig.raise_if_interrupted();
+    I.raise_if_signalled();
+    const FirstError err = first_of(errs);
     return py::make_tuple(f, pdf, status.array(), err.status, err.index);
 }
 
@@ -573,86 +603,91 @@ py::tuple sample_any(const Material *M, const Columns *C, int normalization, uns
     const T *o = wo.data(), *uu = u.data();
     T *wp = wi.mutable_data(), *gp = weight.mutable_data(), *pp = pdf.mutable_data();
     std::uint8_t *lp = lobe.mutable_data();
-    FirstError err;
-    SignalCheck sig;
+    Interrupt I;
+    std::vector<FirstError> errs;
     {
         py::gil_scoped_release nogil;
-        std::vector<T> buf(13 * kChunk);
-        T *ox = buf.data(), *oy = ox + kChunk, *oz = oy + kChunk, *u0 = oz + kChunk, *u1 = u0 + kChunk,
-          *u2 = u1 + kChunk, *wx = u2 + kChunk, *wy = wx + kChunk, *wz = wy + kChunk, *pd = wz + kChunk,
-          *gr = pd + kChunk, *gg = gr + kChunk, *gb = gg + kChunk;
-        std::vector<T> mbuf(C && !std::is_same_v<T, float> ? 6 * kChunk : 0);
-        std::vector<signed char> chunk_status(C ? 0 : kChunk);
-        for (size_t base = 0; base < n; base += kChunk) {
-            if (sig.stop(base)) break;
-            const size_t m = n - base < kChunk ? n - base : kChunk;
-            deinterleave_any(m, o + 3 * base, ox, oy, oz);
-            deinterleave_any(m, uu + 3 * base, u0, u1, u2);
-            const T *uc[3] = {u0, u1, u2};
-            std::array<const T *, 6> mc{};
-            if (C) mc = material_chunk<T>(*C, base, m, mbuf.data());
-            // As eval_materials: without the status array first, again with it on an error.
-            auto call = [&](signed char *status_out) -> int {
-                if constexpr (std::is_same_v<T, float>) {
-                    const pgloss_vec3_array a{ox, oy, oz};
-                    const pgloss_vec3_out wo_{wx, wy, wz};
-                    const pgloss_rgb_out go{gr, gg, gb};
-                    if (C)
-                        return pgloss_py_sample_batch_materials(mc.data(), normalization, lobes, m, a, uc, wo_, pd, go,
-                                                                lp + base, status_out);
-                    const int r = pgloss_sample_batch(&M->m, lobes, m, a, u0, u1, u2, wo_, pd, go, lp + base);
-                    if (r < 0 && status_out) {  // which element? the scalar function, on the error path only
-                        std::fill(status_out, status_out + m, 0);
-                        for (size_t j = 0; j < m; ++j) {
-                            pgloss_sample_record rec;
-                            const float uj[3] = {u0[j], u1[j], u2[j]};
-                            status_out[j] = static_cast<signed char>(
-                                pgloss_sample(&M->m, pgloss_vec3{ox[j], oy[j], oz[j]}, uj, lobes, &rec));
-                            if (status_out[j] < 0) break;
+        errs = run_ranges<FirstError>(n, units_of(n, kChunk), I, [&](size_t c0, size_t c1, StopCheck &stop) {
+            FirstError err;
+            std::vector<T> buf(13 * kChunk);
+            T *ox = buf.data(), *oy = ox + kChunk, *oz = oy + kChunk, *u0 = oz + kChunk, *u1 = u0 + kChunk,
+              *u2 = u1 + kChunk, *wx = u2 + kChunk, *wy = wx + kChunk, *wz = wy + kChunk, *pd = wz + kChunk,
+              *gr = pd + kChunk, *gg = gr + kChunk, *gb = gg + kChunk;
+            std::vector<T> mbuf(C && !std::is_same_v<T, float> ? 6 * kChunk : 0);
+            std::vector<signed char> chunk_status(C ? 0 : kChunk);
+            for (size_t base = c0 * kChunk; base < std::min(n, c1 * kChunk); base += kChunk) {
+                if (stop(base - c0 * kChunk)) break;
+                const size_t m = n - base < kChunk ? n - base : kChunk;
+                deinterleave_any(m, o + 3 * base, ox, oy, oz);
+                deinterleave_any(m, uu + 3 * base, u0, u1, u2);
+                const T *uc[3] = {u0, u1, u2};
+                std::array<const T *, 6> mc{};
+                if (C) mc = material_chunk<T>(*C, base, m, mbuf.data());
+                // As eval_materials: without the status array first, again with it on an error.
+                auto call = [&](signed char *status_out) -> int {
+                    if constexpr (std::is_same_v<T, float>) {
+                        const pgloss_vec3_array a{ox, oy, oz};
+                        const pgloss_vec3_out wo_{wx, wy, wz};
+                        const pgloss_rgb_out go{gr, gg, gb};
+                        if (C)
+                            return pgloss_py_sample_batch_materials(mc.data(), normalization, lobes, m, a, uc, wo_, pd, go,
+                                                                    lp + base, status_out);
+                        const int r = pgloss_sample_batch(&M->m, lobes, m, a, u0, u1, u2, wo_, pd, go, lp + base);
+                        if (r < 0 && status_out) {  // which element? the scalar function, on the error path only
+                            std::fill(status_out, status_out + m, 0);
+                            for (size_t j = 0; j < m; ++j) {
+                                pgloss_sample_record rec;
+                                const float uj[3] = {u0[j], u1[j], u2[j]};
+                                status_out[j] = static_cast<signed char>(
+                                    pgloss_sample(&M->m, pgloss_vec3{ox[j], oy[j], oz[j]}, uj, lobes, &rec));
+                                if (status_out[j] < 0) break;
+                            }
                         }
+                        return r;
+                    } else {
+                        const pgloss_vec3_array_d a{ox, oy, oz};
+                        const pgloss_vec3_out_d wo_{wx, wy, wz};
+                        const pgloss_rgb_out_d go{gr, gg, gb};
+                        if (C)
+                            return pgloss_py_sample_batch_materials_d(mc.data(), normalization, lobes, m, a, uc, wo_, pd,
+                                                                      go, lp + base, status_out);
+                        if (!status_out) return pgloss_sample_batch_d(&M->m, lobes, m, a, u0, u1, u2, wo_, pd, go, lp + base);
+                        return pgloss_sample_batch_d_ex(nullptr, &M->m, lobes, m, a, u0, u1, u2, wo_, pd, go, lp + base,
+                                                        status_out);
                     }
-                    return r;
-                } else {
-                    const pgloss_vec3_array_d a{ox, oy, oz};
-                    const pgloss_vec3_out_d wo_{wx, wy, wz};
-                    const pgloss_rgb_out_d go{gr, gg, gb};
-                    if (C)
-                        return pgloss_py_sample_batch_materials_d(mc.data(), normalization, lobes, m, a, uc, wo_, pd,
-                                                                  go, lp + base, status_out);
-                    if (!status_out) return pgloss_sample_batch_d(&M->m, lobes, m, a, u0, u1, u2, wo_, pd, go, lp + base);
-                    return pgloss_sample_batch_d_ex(nullptr, &M->m, lobes, m, a, u0, u1, u2, wo_, pd, go, lp + base,
-                                                    status_out);
+                };
+                int st = call(nullptr);
+                signed char *cs = nullptr;  // this chunk's statuses, on an error only
+                if (st < 0) {
+                    cs = C ? status.at(n, base) : chunk_status.data();
+                    std::fill(cs, cs + m, kUnwritten);
+                    st = call(cs);
                 }
-            };
-            int st = call(nullptr);
-            signed char *cs = nullptr;  // this chunk's statuses, on an error only
-            if (st < 0) {
-                cs = C ? status.at(n, base) : chunk_status.data();
-                std::fill(cs, cs + m, kUnwritten);
-                st = call(cs);
+                if (st < 0 && m > 0 && cs[0] == kUnwritten) {
+                    std::fill(cs, cs + m, static_cast<signed char>(st));  // a whole-call error: nothing was written
+                    std::fill(wx, wx + m, T(0));
+                    std::fill(wy, wy + m, T(0));
+                    std::fill(wz, wz + m, T(1));
+                    std::fill(pd, pd + m, T(0));
+                    std::fill(gr, gr + 3 * kChunk, T(0));
+                    std::fill(lp + base, lp + base + m, std::uint8_t(0));
+                }
+                interleave_any(m, wx, wy, wz, wp + 3 * base);
+                interleave_any(m, gr, gg, gb, gp + 3 * base);
+                std::copy(pd, pd + m, pp + base);
+                if (st < 0 && err.status == PGLOSS_OK)
+                    for (size_t j = 0; j < m; ++j)
+                        if (cs[j] < 0) {
+                            err.note(cs[j], static_cast<py::ssize_t>(base + j));
+                            break;
+                        }
+                if (st < 0 && err.status == PGLOSS_OK) err.note(st, static_cast<py::ssize_t>(base));
             }
-            if (st < 0 && m > 0 && cs[0] == kUnwritten) {
-                std::fill(cs, cs + m, static_cast<signed char>(st));  // a whole-call error: nothing was written
-                std::fill(wx, wx + m, T(0));
-                std::fill(wy, wy + m, T(0));
-                std::fill(wz, wz + m, T(1));
-                std::fill(pd, pd + m, T(0));
-                std::fill(gr, gr + 3 * kChunk, T(0));
-                std::fill(lp + base, lp + base + m, std::uint8_t(0));
-            }
-            interleave_any(m, wx, wy, wz, wp + 3 * base);
-            interleave_any(m, gr, gg, gb, gp + 3 * base);
-            std::copy(pd, pd + m, pp + base);
-            if (st < 0 && err.status == PGLOSS_OK)
-                for (size_t j = 0; j < m; ++j)
-                    if (cs[j] < 0) {
-                        err.note(cs[j], static_cast<py::ssize_t>(base + j));
-                        break;
-                    }
-            if (st < 0 && err.status == PGLOSS_OK) err.note(st, static_cast<py::ssize_t>(base));
-        }
+            return err;
+        });
     }
-    sig.raise_if_interrupted();
+    I.raise_if_signalled();
+    const FirstError err = first_of(errs);
     if (C) return py::make_tuple(wi, pdf, weight, lobe, status.array(), err.status, err.index);
     return py::make_tuple(wi, pdf, weight, lobe, err.status, err.index);
 }
@@ -700,6 +735,46 @@ PYBIND11_MODULE(_core, mod) {
     mod.attr("ALPHA_TRUSTED_MAX") = PGLOSS_ALPHA_TRUSTED_MAX;
     mod.attr("BOUNDARY_TOLERANCE") = PGLOSS_BOUNDARY_TOLERANCE;
     mod.attr("LUMA") = py::make_tuple(PGLOSS_LUMA_R, PGLOSS_LUMA_G, PGLOSS_LUMA_B);
+
+    // The thread count of the array calls; pgloss.set_num_threads validates it and reads
+    // PGLOSS_NUM_THREADS at import (parallel.h).
+    mod.def("set_num_threads", [](int n) {
+        if (n < 1) throw py::value_error("pgloss._core.set_num_threads: n must be at least 1");
+        return pgloss_py::num_threads().exchange(n);
+    });
+    mod.def("get_num_threads", [] { return pgloss_py::num_threads().load(); });
+    mod.attr("MIN_ELEMENTS_PER_THREAD") = pgloss_py::kMinPerThread;
+    // For the tests and the benchmark only: the threshold above (1 splits any array of two
+    // chunks or more); returns the previous value.
+    mod.def("_set_min_elements_per_thread", [](size_t n) {
+        return pgloss_py::min_per_thread().exchange(std::max<size_t>(1, n));
+    });
+    mod.def("_last_threads", [] { return pgloss_py::last_threads().load(); },
+            "The threads the latest array call used (for the tests).");
+    // For the tests of parallel.h alone: runs `units` units of one element each and returns the
+    // units in the order of the merged results (each exactly once, ascending); a unit equal to
+    // throw_at throws std::runtime_error in whichever thread runs it.
+    mod.def("_test_ranges", [](size_t units, long long throw_at) {
+        Interrupt I;
+        std::vector<std::vector<size_t>> blocks;
+        {
+            py::gil_scoped_release nogil;
+            blocks = run_ranges<std::vector<size_t>>(units, units, I, [&](size_t u0, size_t u1, StopCheck &stop) {
+                std::vector<size_t> seen;
+                for (size_t u = u0; u < u1; ++u) {
+                    if (stop(u - u0)) break;
+                    if (static_cast<long long>(u) == throw_at)
+                        throw std::runtime_error("pgloss._core._test_ranges: unit " + std::to_string(u));
+                    seen.push_back(u);
+                }
+                return seen;
+            });
+        }
+        I.raise_if_signalled();
+        std::vector<size_t> all;
+        for (const auto &b : blocks) all.insert(all.end(), b.begin(), b.end());
+        return all;
+    });
 
     mod.def("status_string", [](int s) { return std::string(pgloss_status_string(static_cast<pgloss_status>(s))); });
     mod.def("status_name", [](int s) { return std::string(pgloss_status_name(static_cast<pgloss_status>(s))); });
