@@ -66,8 +66,8 @@ _XYZ_TO_RGB = np.array([[3.2404542, -1.5371385, -0.4985314],
 _EPS_CBRT = 6.0 / 29.0
 
 
-def paired(fa: Callable[[], object], fb: Callable[[], object], repeat: int) -> Tuple[float, float]:
-    """Medians of ``fa`` and ``fb`` run alternately ``repeat`` times each, after a warm-up call each."""
+def alternate(fa: Callable[[], object], fb: Callable[[], object], repeat: int) -> Tuple[List[float], List[float]]:
+    """Wall times of ``fa`` and ``fb`` run alternately ``repeat`` times each, after a warm-up call each."""
     fa()
     fb()
     ta, tb = [], []
@@ -79,6 +79,12 @@ def paired(fa: Callable[[], object], fb: Callable[[], object], repeat: int) -> T
         t2 = time.perf_counter()
         ta.append(t1 - t0)
         tb.append(t2 - t1)
+    return ta, tb
+
+
+def paired(fa: Callable[[], object], fb: Callable[[], object], repeat: int) -> Tuple[float, float]:
+    """Medians of ``fa`` and ``fb`` run alternately ``repeat`` times each (:func:`alternate`)."""
+    ta, tb = alternate(fa, fb, repeat)
     return statistics.median(ta), statistics.median(tb)
 
 
