@@ -18,6 +18,8 @@ Rows (median of --repeat runs after a warm-up, time.perf_counter around the publ
   compiled once and kept (one paint's ``Material``; an array's float block): the first call on
   a new texture, which rounds it to float, is a row of its own.
 * float64 against float32, uniform and per-element materials. Target: float64 ≤ 2× float32.
+* The eval ratios again on the first 65,536 pairs, whose arrays stay in the caches: the cost of
+  the arithmetic, where the N²/16 rows are also bound by memory.
 
 The eval and sample rows are paired: the two sides run alternately, call by call, and each
 side's median is reported, so that a loaded host slows both alike.
@@ -238,6 +240,20 @@ def main(argv=None) -> int:
             statistics.median(t_first), "one material for all", statistics.median(t_u32c), "")
         row(f"eval, {m:,} pairs, one material", "float64 (vectorised double)", t_u64, "float32", t_u32b, "≤ 2")
         row(f"eval, {m:,} pairs, per-pair materials", "float64 (vectorised double)", t_p64, "float32", t_p32b, "≤ 2")
+        k = 1 << 16
+        if m > k:
+            # The same ratios on the first 65,536 pairs, whose arrays (4.5 MB in float64) stay in
+            # the caches: the cost of the arithmetic, where the rows above are bound by memory too.
+            wo32k, wi32k, wo64k, wi64k = wo32[:k], wi32[:k], wo64[:k], wi64[:k]
+            per_k = pgloss.Physical(fields[0][:k], fields[1][:k], alpha_x=fields[2][:k], alpha_y=fields[3][:k])
+            rk = 20 * rep
+            a, b = paired(ev(per_k, wo32k, wi32k, f32[:k]), ev(uniform, wo32k, wi32k, f32b[:k]), rk)
+            row(f"eval, {k:,} pairs (in cache), float32", "one material per pair", a, "one material for all", b, "≤ 2")
+            a, b = paired(ev(uniform, wo64k, wi64k, f64[:k]), ev(uniform, wo32k, wi32k, f32[:k]), rk)
+            row(f"eval, {k:,} pairs (in cache), one material", "float64 (vectorised double)", a, "float32", b, "≤ 2")
+            a, b = paired(ev(per_k, wo64k, wi64k, f64[:k]), ev(per_k, wo32k, wi32k, f32[:k]), rk)
+            row(f"eval, {k:,} pairs (in cache), per-pair materials", "float64 (vectorised double)", a, "float32", b,
+                "≤ 2")
         u32, u64 = rng.random((m, 3), dtype=np.float32), rng.random((m, 3))
         t_s64, t_s32 = paired(lambda: pgloss.sample(uniform, wo64, u64), lambda: pgloss.sample(uniform, wo32, u32), rep)
         row(f"sample, {m:,} draws, one material", "float64 (vectorised double)", t_s64, "float32", t_s32, "≤ 2")
