@@ -449,6 +449,9 @@ def test_interrupt_stops_a_threaded_call() -> None:
     code = r"""
 import os, signal, threading, time
 import numpy as np, pgloss
+# Python installs its Ctrl-C handler only where SIGINT is not ignored, and a CI job started in
+# the background (`cmd &` in a script) inherits SIGINT ignored: install it, as test_arrays.py does.
+signal.signal(signal.SIGINT, signal.default_int_handler)
 pgloss.set_num_threads(3)
 n = 1 << 24
 rd = np.full(n, 0.5); rs = np.full(n, 0.05)
