@@ -8,6 +8,9 @@
  * (the exponential's table becomes a gather on AVX2 and AVX-512); so does the sampler, chunk
  * by chunk (its maps in lobe_d.h are branch-free, log1p included). */
 #include "batch_internal.h"
+#if defined(__FMA__)
+#define PGLOSS__D_FUSED 1 /* lobe_d.h: PGLOSS__D_MADD is one fma */
+#endif
 #include "lobe_d.h"
 
 #ifndef PGLOSS_ISA
@@ -25,6 +28,12 @@
  * > 0 exactly for a valid vector: validity as a single comparison of a double is what GCC 12
  * vectorises next to double arithmetic (ints combined from several double comparisons stop
  * it). */
+/* 1/sqrt(1 + e) for |e| <= 2^-20 (unit_d, unit_chunk_d) */
+PGLOSS__D_FN double near_unit_inv(double e)
+{
+    return PGLOSS__D_MADD(e, PGLOSS__D_MADD(e, PGLOSS__D_MADD(-0.3125, e, 0.375), -0.5), 1.0);
+}
+
 PGLOSS__D_FN double unit_d(double *x, double *y, double *z)
 {
     const double ax = fabs(*x), ay = fabs(*y), az = fabs(*z);
@@ -34,11 +43,10 @@ PGLOSS__D_FN double unit_d(double *x, double *y, double *z)
     /* exact powers of two: the squares of m s stay within [2^-1000, 2^1000] */
     const double s = m > 0x1p500 ? 0x1p-600 : (m < 0x1p-500 ? 0x1p600 : 1.0);
     const double a = *x * s, b = *y * s, c = *z * s;
-    const double l2 = (a * a + b * b + c * c) + t; /* NaN if not finite, 0 for zero */
+    const double l2 = PGLOSS__D_MADD(c, c, PGLOSS__D_MADD(b, b, a * a)) + t; /* NaN if not finite, 0 for zero */
     /* near-unit (s = 1 there): unit_chunk_d's polynomial, bit for bit */
     const double e = l2 - 1.0;
-    const double inv = fabs(e) <= 0x1p-20 ? 1.0 + e * (-0.5 + e * (0.375 - 0.3125 * e))
-                                          : 1.0 / sqrt(l2 > 0.0 ? l2 : 1.0);
+    const double inv = fabs(e) <= 0x1p-20 ? near_unit_inv(e) : 1.0 / sqrt(l2 > 0.0 ? l2 : 1.0);
     *x = l2 > 0.0 ? a * inv : 0.0;
     *y = l2 > 0.0 ? b * inv : 0.0;
     *z = l2 > 0.0 ? c * inv : 0.0;
@@ -61,8 +69,8 @@ PGLOSS__D_FN int unit_chunk_d(size_t m, const double *restrict xs, const double 
     int64_t far = 0;
     for (size_t j = 0; j < m; ++j) {
         const double x = xs[j], y = ys[j], z = zs[j];
-        const double e = (x * x + y * y + z * z) - 1.0;
-        const double inv = 1.0 + e * (-0.5 + e * (0.375 - 0.3125 * e));
+        const double e = PGLOSS__D_MADD(z, z, PGLOSS__D_MADD(y, y, x * x)) - 1.0;
+        const double inv = near_unit_inv(e);
         nx[j] = x * inv;
         ny[j] = y * inv;
         nz[j] = z * inv;

@@ -30,6 +30,17 @@
 #define PGLOSS__D_MAX(x, lo) ((x) > (lo) ? (x) : (lo))
 #endif
 
+/* a·b + c: one fused multiply-add (one rounding) in the double loops compiled for an ISA with
+ * FMA (PGLOSS__D_FUSED, set by batch_d_isa.c), a product and a sum elsewhere. Written out
+ * where it applies, never left to the compiler's contraction (-ffp-contract=off everywhere):
+ * which of a·b + c·d to fuse would then depend on the code around it, and one material per
+ * element would stop giving what one material per call gives, bit for bit. */
+#if defined(PGLOSS__D_FUSED) && PGLOSS__D_FUSED
+#define PGLOSS__D_MADD(a, b, c) fma(a, b, c)
+#else
+#define PGLOSS__D_MADD(a, b, c) ((a) * (b) + (c))
+#endif
+
 #define PGLOSS__D_PI 3.14159265358979323846
 #define PGLOSS__D_INV_PI 0.31830988618379067154
 
@@ -91,9 +102,9 @@ PGLOSS__D_FN double pgloss__exp_neg_d(double t)
     double y = low ? t - 707.70327135170422 : t; /* − 1021 ln2 */
     y = PGLOSS__D_MINP(y, 708.0);
     const double shift = 0x1.8p52; /* (v + shift) - shift = round(v) */
-    const double md = y * 0x1.71547652b82fep0 + shift;
+    const double md = PGLOSS__D_MADD(y, 0x1.71547652b82fep0, shift);
     const double m = md - shift;
-    const double s = (y - m * 0x1.62e42feep-1) - m * 0x1.a39ef35793c76p-33;
+    const double s = PGLOSS__D_MADD(-m, 0x1.a39ef35793c76p-33, y - m * 0x1.62e42feep-1);
     uint64_t mbits, sbits_shift;
     memcpy(&mbits, &md, sizeof mbits);
     memcpy(&sbits_shift, &shift, sizeof sbits_shift);
@@ -102,12 +113,14 @@ PGLOSS__D_FN double pgloss__exp_neg_d(double t)
     memcpy(&scale, &sbits, sizeof scale);
     /* e^r at r = −s: the odd coefficients negated */
     const double s2 = s * s, s4 = s2 * s2, s8 = s4 * s4;
-    const double p01 = 1.0 - s, p23 = 0x1.000000000000ap-1 - s * 0x1.55555555554fap-3;
-    const double p45 = 0x1.5555555550880p-5 - s * 0x1.1111111127bd4p-7;
-    const double p67 = 0x1.6c16c18429335p-10 - s * 0x1.a01a012a5c042p-13;
-    const double p89 = 0x1.a0199a0ee7035p-16 - s * 0x1.71df254c77156p-19;
-    const double pab = 0x1.28ad706015ad7p-22 - s * 0x1.ad7f71e4d6022p-26;
-    const double p = ((p01 + s2 * p23) + s4 * (p45 + s2 * p67)) + s8 * (p89 + s2 * pab);
+    const double p01 = 1.0 - s, p23 = PGLOSS__D_MADD(-s, 0x1.55555555554fap-3, 0x1.000000000000ap-1);
+    const double p45 = PGLOSS__D_MADD(-s, 0x1.1111111127bd4p-7, 0x1.5555555550880p-5);
+    const double p67 = PGLOSS__D_MADD(-s, 0x1.a01a012a5c042p-13, 0x1.6c16c18429335p-10);
+    const double p89 = PGLOSS__D_MADD(-s, 0x1.71df254c77156p-19, 0x1.a0199a0ee7035p-16);
+    const double pab = PGLOSS__D_MADD(-s, 0x1.ad7f71e4d6022p-26, 0x1.28ad706015ad7p-22);
+    const double p = PGLOSS__D_MADD(s8, PGLOSS__D_MADD(s2, pab, p89),
+                                    PGLOSS__D_MADD(s4, PGLOSS__D_MADD(s2, p67, p45),
+                                                   PGLOSS__D_MADD(s2, p23, p01)));
     return (p * scale) * (low ? 0x1p-1021 : 1.0);
 }
 
@@ -213,8 +226,8 @@ PGLOSS__D_FN void pgloss__lobe_d(const pgloss__consts_d *k, const unsigned activ
         const double r = 1.0 / ((hzt * hzc) * w);
         const double inv_hz = (r * hzc) * w, inv_hzc = (r * hzt) * w;
         /* ((t · 1/hz) · 1/hz): t = 0 never meets an infinite factor */
-        const double e = pgloss__exp_neg_d(((ex * ex + ey * ey) * inv_hz) * inv_hz);
-        const double hh = hx * hx + hy * hy + hz * hz;
+        const double e = pgloss__exp_neg_d((PGLOSS__D_MADD(ex, ex, ey * ey) * inv_hz) * inv_hz);
+        const double hh = PGLOSS__D_MADD(hz, hz, PGLOSS__D_MADD(hy, hy, hx * hx));
         const double inv_hzc3 = (inv_hzc * inv_hzc) * inv_hzc;
         if (want_f) {
             double n;
@@ -225,7 +238,7 @@ PGLOSS__D_FN void pgloss__lobe_d(const pgloss__consts_d *k, const unsigned activ
             fs = k->spec_scale * e * n;
         }
         if (want_p)
-            p += k->ps * 2.0 * k->pdf_scale * e * (hh * inv_hzc3);
+            p = PGLOSS__D_MADD(k->ps * 2.0 * k->pdf_scale * e, hh * inv_hzc3, p);
     }
     if (want_f) {
         f[0] = upper ? fd0 + fs : 0.0;
@@ -276,10 +289,9 @@ PGLOSS__D_FN double pgloss__log1p_d(double x)
     /* c/u = (c − c f/m) 2^-k: the quotient's error stays in the small term c f/m */
     const double c = kd < 54.0 ? (c_err - c_err * ((f * two_f) * q)) * inv_2k : 0.0;
     const double z = s * s, w = z * z;
-    const double t1 = w * (0x1.999999997fa04p-2 + w * (0x1.c71c51d8e78afp-3 + w * 0x1.39a09d078c69fp-3));
-    const double t2 = z * (0x1.5555555555593p-1 +
-                           w * (0x1.2492494229359p-2 + w * (0x1.7466496cb03dep-3 +
-                                                             w * 0x1.2f112df3e5244p-3)));
+    const double t1 = w * PGLOSS__D_MADD(w, PGLOSS__D_MADD(w, 0x1.39a09d078c69fp-3, 0x1.c71c51d8e78afp-3), 0x1.999999997fa04p-2);
+    const double t2 = z * PGLOSS__D_MADD(w, PGLOSS__D_MADD(w, PGLOSS__D_MADD(w, 0x1.2f112df3e5244p-3, 0x1.7466496cb03dep-3), 0x1.2492494229359p-2),
+                            0x1.5555555555593p-1);
     const double hfsq = 0.5 * f * f;
     return s * (hfsq + (t1 + t2)) + (kd * 0x1.a39ef35793c76p-33 + c) - hfsq + f +
            kd * 0x1.62e42feep-1;
@@ -290,14 +302,14 @@ PGLOSS__D_FN double pgloss__log1p_d(double x)
 PGLOSS__D_FN void pgloss__sincos_quarter(double u, double *s, double *c)
 {
     const double v = u * u, v2 = v * v, v4 = v2 * v2;
-    const double s01 = 1.0 - v * (1.0 / 6.0), s23 = 1.0 / 120.0 - v * (1.0 / 5040.0),
-                 s45 = 1.0 / 362880.0 - v * (1.0 / 39916800.0),
-                 s67 = 1.0 / 6227020800.0 - v * (1.0 / 1307674368000.0);
-    *s = u * ((s01 + v2 * s23) + v4 * (s45 + v2 * s67));
-    const double c01 = 1.0 - v * 0.5, c23 = 1.0 / 24.0 - v * (1.0 / 720.0),
-                 c45 = 1.0 / 40320.0 - v * (1.0 / 3628800.0),
-                 c67 = 1.0 / 479001600.0 - v * (1.0 / 87178291200.0);
-    *c = (c01 + v2 * c23) + v4 * ((c45 + v2 * c67) + v4 * (1.0 / 20922789888000.0));
+    const double s01 = PGLOSS__D_MADD(-v, 1.0 / 6.0, 1.0), s23 = PGLOSS__D_MADD(-v, 1.0 / 5040.0, 1.0 / 120.0),
+                 s45 = PGLOSS__D_MADD(-v, 1.0 / 39916800.0, 1.0 / 362880.0),
+                 s67 = PGLOSS__D_MADD(-v, 1.0 / 1307674368000.0, 1.0 / 6227020800.0);
+    *s = u * PGLOSS__D_MADD(v4, PGLOSS__D_MADD(v2, s67, s45), PGLOSS__D_MADD(v2, s23, s01));
+    const double c01 = PGLOSS__D_MADD(-v, 0.5, 1.0), c23 = PGLOSS__D_MADD(-v, 1.0 / 720.0, 1.0 / 24.0),
+                 c45 = PGLOSS__D_MADD(-v, 1.0 / 3628800.0, 1.0 / 40320.0),
+                 c67 = PGLOSS__D_MADD(-v, 1.0 / 87178291200.0, 1.0 / 479001600.0);
+    *c = PGLOSS__D_MADD(v4, PGLOSS__D_MADD(v4, 1.0 / 20922789888000.0, PGLOSS__D_MADD(v2, c67, c45)), PGLOSS__D_MADD(v2, c23, c01));
 }
 
 /* Shirley & Chiu's concentric map of [0,1)² onto the unit disk, lifted to the hemisphere
@@ -313,7 +325,10 @@ PGLOSS__D_FN void pgloss__sample_cosine_d(double u1, double u2, double w[3])
     pgloss__sincos_quarter((PGLOSS__D_PI / 4.0) * (small / (big != 0.0 ? big : 1.0)), &sn, &cs);
     /* |a| > |b|: φ = (π/4)(b/a); else φ = π/2 − (π/4)(a/b), cos φ = sin, sin φ = cos */
     const double x = big * (a_major ? cs : sn), y = big * (a_major ? sn : cs);
-    const double z2 = 1.0 - x * x - y * y;
+    /* z² = 1 − x² − y² = 1 − big² (cos² + sin² = 1), as (1 − |big|)(1 + |big|): near the rim
+     * 1 − x² − y² cancels to the sine and cosine's last bits, which sqrt then magnifies (an
+     * error of 1e-8 in z at z² ~ 1e-16); this form has one rounding and no cancellation */
+    const double z2 = (1.0 - fabs(big)) * (1.0 + fabs(big));
     w[0] = x;
     w[1] = y;
     w[2] = sqrt(z2 > 0.0 ? z2 : 0.0);
@@ -347,8 +362,8 @@ PGLOSS__D_FN double pgloss__sample_specular_d(double ax, double ay, double ox, d
     double ct, st;
     pgloss__cos_sin_turn(u2, &ct, &st);
     const double gx = ax * sq * ct, gy = ay * sq * st;
-    const double gg = gx * gx + gy * gy + 1.0;
-    const double og = ox * gx + oy * gy + oz;
+    const double gg = PGLOSS__D_MADD(gy, gy, gx * gx) + 1.0;
+    const double og = PGLOSS__D_MADD(oy, gy, ox * gx) + oz;
     const double inv = 1.0 / (gg * sqrt(l2o));
     const double two_og = 2.0 * og;
     w[0] = (two_og * gx - gg * ox) * inv;

@@ -29,7 +29,10 @@
  * functions element by element.
  * Double (the _d functions): every tier runs the double loops (options select the ISA; the
  * precision is validated but the double lobe is already the reference formula: the per-point
- * code of the scalar pgloss_eval_pdf, shared with brdf.c). f and pdf agree with the scalar
+ * code of the scalar pgloss_eval_pdf, shared with brdf.c). On AVX2 and AVX-512 those loops
+ * fuse the formula's multiply-adds (FMA), so their bits differ from the baseline ISA's within
+ * the bound below; per element and one material per call still agree bit for bit on each
+ * ISA. f and pdf agree with the scalar
  * double reference within 1e-12 relative times the conditioning of exp (the shared vectors'
  * double tolerance); samples within the same bound, wi within 1e-12 absolute. Outputs are
  * clamped to at most FLT_MAX as in every precision (brdf.h), and tails of the lobe go on into
