@@ -348,7 +348,9 @@ static void run_match_gloss(void *ctx)
 int main(int argc, char **argv)
 {
     for (int k = 1; k < argc; ++k)
-        if (!strcmp(argv[k], "--quick")) {
+        if (!strcmp(argv[k], "--n") && k + 1 < argc) {
+            g_n = (size_t)strtoull(argv[++k], NULL, 10);
+        } else if (!strcmp(argv[k], "--quick")) {
             g_reps = 5;
             g_n = (size_t)1 << 14;
         }
