@@ -37,6 +37,7 @@
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
+#include <xmmintrin.h>
 #endif
 
 #include "pgloss/pgloss.h"
@@ -304,12 +305,19 @@ py::array_t<T> output(const py::object &given, py::ssize_t count, const std::vec
 // The same for double rows, two at a time with SSE2: three loads or stores of two doubles
 // and three shuffles for two rows, where GCC leaves the stride-3 loop scalar (six loads
 // and six stores): a chunk's wo, wi and f cost 1.7–1.8 ns a pair instead of 2.6–2.9 in
-// cache (BENCHMARKS.md).
+// cache. The rows two chunks ahead are prefetched as these are read: a double chunk's
+// arithmetic takes long enough for the hardware's stream prefetcher to fall behind, and the
+// next chunk's loads then wait on DRAM (perf: 57 % of the copy's time at two loads); with the
+// prefetch, float64 eval on 2^20 pairs took 10.7–11.0 ns a pair instead of 12.5–12.8. The
+// float rows gain nothing from it (their chunk is short; 3.5–3.7 ns a pair without,
+// 3.8–4.0 with): BENCHMARKS.md.
 inline void deinterleave(size_t m, const double *__restrict__ src, double *__restrict__ x,
                          double *__restrict__ y, double *__restrict__ z) {
     size_t j = 0;
 #if defined(__SSE2__)
+    const char *ahead = reinterpret_cast<const char *>(src) + 2 * kChunk * 3 * sizeof(double);
     for (; j + 2 <= m; j += 2) {
+        _mm_prefetch(ahead + 3 * sizeof(double) * j, _MM_HINT_T0);  // never faults
         const __m128d a = _mm_loadu_pd(src + 3 * j);      // x0 y0
         const __m128d b = _mm_loadu_pd(src + 3 * j + 2);  // z0 x1
         const __m128d c = _mm_loadu_pd(src + 3 * j + 4);  // y1 z1
