@@ -235,14 +235,48 @@ FirstError first_of(const std::vector<FirstError> &ranges) {
     return FirstError{};
 }
 
+// Whether a chunk's input rows are read with the rows two chunks ahead prefetched. Where the
+// C loop's work on a chunk is long (float64; one material per element; sampling), the
+// hardware's stream prefetcher stops running ahead during it, and the next chunk's first loads
+// wait on DRAM (perf: 57 % of the float64 copy's time at two loads); prefetching as the rows
+// are read took float64 eval on 2^20 pairs from 12.5–12.8 to 10.7–11.0 ns a pair and float32
+// per-element eval from 8.4–8.8 to 7.7–8.1. float32 with one material has the shortest chunk
+// and is at the memory's speed already; it was 7 % slower with the prefetch, so it goes
+// without (BENCHMARKS.md). Prefetches never fault, past the array's end included.
+enum class Ahead : bool { no = false, yes = true };
+
+// Rows j to m − 1 of (n, 3) rows <-> three arrays, one at a time: the SSE2 loops' tails below,
+// and every other target.
+template <class T>
+inline void rows_to_arrays(size_t j, size_t m, const T *__restrict__ src, T *__restrict__ x, T *__restrict__ y,
+                           T *__restrict__ z) {
+    for (; j < m; ++j) {
+        x[j] = src[3 * j];
+        y[j] = src[3 * j + 1];
+        z[j] = src[3 * j + 2];
+    }
+}
+
+template <class T>
+inline void arrays_to_rows(size_t j, size_t m, const T *__restrict__ x, const T *__restrict__ y,
+                           const T *__restrict__ z, T *__restrict__ dst) {
+    for (; j < m; ++j) {
+        dst[3 * j] = x[j];
+        dst[3 * j + 1] = y[j];
+        dst[3 * j + 2] = z[j];
+    }
+}
+
 // (n, 3) rows <-> three arrays, for one chunk. With SSE2 (every x86-64), four rows at a
 // time by shuffles (GCC only vectorises the stride-3 accesses with 8-byte vectors); the
 // portable loop does the rest and every other target.
 inline void deinterleave(size_t m, const float *__restrict__ src, float *__restrict__ x, float *__restrict__ y,
-                         float *__restrict__ z) {
+                         float *__restrict__ z, Ahead prefetch = Ahead::yes) {
     size_t j = 0;
 #if defined(__SSE2__)
+    const char *ahead = reinterpret_cast<const char *>(src) + 2 * kChunk * 3 * sizeof(float);
     for (; j + 4 <= m; j += 4) {
+        if (prefetch == Ahead::yes) _mm_prefetch(ahead + 3 * sizeof(float) * j, _MM_HINT_T0);
         const __m128 a = _mm_loadu_ps(src + 3 * j);      // x0 y0 z0 x1
         const __m128 b = _mm_loadu_ps(src + 3 * j + 4);  // y1 z1 x2 y2
         const __m128 c = _mm_loadu_ps(src + 3 * j + 8);  // z2 x3 y3 z3
@@ -255,11 +289,7 @@ inline void deinterleave(size_t m, const float *__restrict__ src, float *__restr
         _mm_storeu_ps(z + j, _mm_shuffle_ps(ab2, c, _MM_SHUFFLE(3, 0, 2, 0)));  // z0 z1 z2 z3
     }
 #endif
-    for (; j < m; ++j) {
-        x[j] = src[3 * j];
-        y[j] = src[3 * j + 1];
-        z[j] = src[3 * j + 2];
-    }
+    rows_to_arrays(j, m, src, x, y, z);
 }
 
 inline void interleave(size_t m, const float *__restrict__ x, const float *__restrict__ y,
@@ -278,11 +308,7 @@ inline void interleave(size_t m, const float *__restrict__ x, const float *__res
         _mm_storeu_ps(dst + 3 * j + 8, _mm_shuffle_ps(u, u, _MM_SHUFFLE(3, 1, 0, 2)));    // z2 x3 y3 z3
     }
 #endif
-    for (; j < m; ++j) {
-        dst[3 * j] = x[j];
-        dst[3 * j + 1] = y[j];
-        dst[3 * j + 2] = z[j];
-    }
+    arrays_to_rows(j, m, x, y, z, dst);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -305,19 +331,14 @@ py::array_t<T> output(const py::object &given, py::ssize_t count, const std::vec
 // The same for double rows, two at a time with SSE2: three loads or stores of two doubles
 // and three shuffles for two rows, where GCC leaves the stride-3 loop scalar (six loads
 // and six stores): a chunk's wo, wi and f cost 1.7–1.8 ns a pair instead of 2.6–2.9 in
-// cache. The rows two chunks ahead are prefetched as these are read: a double chunk's
-// arithmetic takes long enough for the hardware's stream prefetcher to fall behind, and the
-// next chunk's loads then wait on DRAM (perf: 57 % of the copy's time at two loads); with the
-// prefetch, float64 eval on 2^20 pairs took 10.7–11.0 ns a pair instead of 12.5–12.8. The
-// float rows gain nothing from it (their chunk is short; 3.5–3.7 ns a pair without,
-// 3.8–4.0 with): BENCHMARKS.md.
+// cache (BENCHMARKS.md). Always with the prefetch (Ahead above).
 inline void deinterleave(size_t m, const double *__restrict__ src, double *__restrict__ x,
                          double *__restrict__ y, double *__restrict__ z) {
     size_t j = 0;
 #if defined(__SSE2__)
     const char *ahead = reinterpret_cast<const char *>(src) + 2 * kChunk * 3 * sizeof(double);
     for (; j + 2 <= m; j += 2) {
-        _mm_prefetch(ahead + 3 * sizeof(double) * j, _MM_HINT_T0);  // never faults
+        _mm_prefetch(ahead + 3 * sizeof(double) * j, _MM_HINT_T0);
         const __m128d a = _mm_loadu_pd(src + 3 * j);      // x0 y0
         const __m128d b = _mm_loadu_pd(src + 3 * j + 2);  // z0 x1
         const __m128d c = _mm_loadu_pd(src + 3 * j + 4);  // y1 z1
@@ -326,11 +347,7 @@ inline void deinterleave(size_t m, const double *__restrict__ src, double *__res
         _mm_storeu_pd(z + j, _mm_shuffle_pd(b, c, 2));    // z0 z1
     }
 #endif
-    for (; j < m; ++j) {
-        x[j] = src[3 * j];
-        y[j] = src[3 * j + 1];
-        z[j] = src[3 * j + 2];
-    }
+    rows_to_arrays(j, m, src, x, y, z);
 }
 
 inline void interleave(size_t m, const double *__restrict__ x, const double *__restrict__ y,
@@ -344,11 +361,7 @@ inline void interleave(size_t m, const double *__restrict__ x, const double *__r
         _mm_storeu_pd(dst + 3 * j + 4, _mm_unpackhi_pd(Y, Z));  // y1 z1
     }
 #endif
-    for (; j < m; ++j) {
-        dst[3 * j] = x[j];
-        dst[3 * j + 1] = y[j];
-        dst[3 * j + 2] = z[j];
-    }
+    arrays_to_rows(j, m, x, y, z, dst);
 }
 
 // The C structs of one precision: float (pgloss/batch.h) or double (pgloss/batch_materials.h).
@@ -428,8 +441,13 @@ py::tuple eval_uniform(const Material &M, unsigned lobes, const py::array_t<T, p
             for (size_t base = c0 * kChunk; base < std::min(n, c1 * kChunk); base += kChunk) {
                 if (stop(base - c0 * kChunk)) break;
                 const size_t m = n - base < kChunk ? n - base : kChunk;
-                deinterleave(m, o + 3 * base, ox, oy, oz);
-                deinterleave(m, i + 3 * base, ix, iy, iz);
+                if constexpr (std::is_same_v<T, float>) {
+                    deinterleave(m, o + 3 * base, ox, oy, oz, Ahead::no);
+                    deinterleave(m, i + 3 * base, ix, iy, iz, Ahead::no);
+                } else {
+                    deinterleave(m, o + 3 * base, ox, oy, oz);
+                    deinterleave(m, i + 3 * base, ix, iy, iz);
+                }
                 const typename Soa<T>::in a{ox, oy, oz}, b{ix, iy, iz};
                 const int st = eval_chunk<T>(M, lobes, m, a, b, typename Soa<T>::rgb{fr, fg, fb}, pd, want_f, want_pdf);
                 if (want_f) interleave(m, fr, fg, fb, fp + 3 * base);
