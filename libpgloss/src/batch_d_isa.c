@@ -22,18 +22,19 @@
 #define EVAL_PDF_D_FN PGLOSS__NAME2(pgloss__eval_pdf_batch_d, PGLOSS_ISA)
 #define SAMPLE_D_FN PGLOSS__NAME2(pgloss__sample_batch_d, PGLOSS_ISA)
 
-/* Normalises (x, y, z) after an exact power-of-two scaling chosen by the largest component
- * (so no square overflows or underflows; for float-valued inputs the result is bit for bit
- * that of pgloss__normalize); zeros for a zero or non-finite vector. Returns a double that is
- * > 0 exactly for a valid vector: validity as a single comparison of a double is what GCC 12
- * vectorises next to double arithmetic (ints combined from several double comparisons stop
- * it). */
 /* 1/sqrt(1 + e) for |e| <= 2^-20 (unit_d, unit_chunk_d) */
 PGLOSS__D_FN double near_unit_inv(double e)
 {
     return PGLOSS__D_MADD(e, PGLOSS__D_MADD(e, PGLOSS__D_MADD(-0.3125, e, 0.375), -0.5), 1.0);
 }
 
+/* Normalises (x, y, z) after an exact power-of-two scaling chosen by the largest component
+ * (so no square overflows or underflows; for float-valued inputs the result is bit for bit
+ * that of pgloss__normalize where PGLOSS__D_MADD is not fused, within an ulp where it is);
+ * zeros for a zero or non-finite vector. Returns a double that is
+ * > 0 exactly for a valid vector: validity as a single comparison of a double is what GCC 12
+ * vectorises next to double arithmetic (ints combined from several double comparisons stop
+ * it). */
 PGLOSS__D_FN double unit_d(double *x, double *y, double *z)
 {
     const double ax = fabs(*x), ay = fabs(*y), az = fabs(*z);
