@@ -331,14 +331,14 @@ py::array_t<T> output(const py::object &given, py::ssize_t count, const std::vec
 // The same for double rows, two at a time with SSE2: three loads or stores of two doubles
 // and three shuffles for two rows, where GCC leaves the stride-3 loop scalar (six loads
 // and six stores): a chunk's wo, wi and f cost 1.7–1.8 ns a pair instead of 2.6–2.9 in
-// cache (BENCHMARKS.md). Always with the prefetch (Ahead above).
+// cache (BENCHMARKS.md).
 inline void deinterleave(size_t m, const double *__restrict__ src, double *__restrict__ x,
-                         double *__restrict__ y, double *__restrict__ z) {
+                         double *__restrict__ y, double *__restrict__ z, Ahead prefetch = Ahead::yes) {
     size_t j = 0;
 #if defined(__SSE2__)
     const char *ahead = reinterpret_cast<const char *>(src) + 2 * kChunk * 3 * sizeof(double);
     for (; j + 2 <= m; j += 2) {
-        _mm_prefetch(ahead + 3 * sizeof(double) * j, _MM_HINT_T0);
+        if (prefetch == Ahead::yes) _mm_prefetch(ahead + 3 * sizeof(double) * j, _MM_HINT_T0);
         const __m128d a = _mm_loadu_pd(src + 3 * j);      // x0 y0
         const __m128d b = _mm_loadu_pd(src + 3 * j + 2);  // z0 x1
         const __m128d c = _mm_loadu_pd(src + 3 * j + 4);  // y1 z1
@@ -441,13 +441,9 @@ py::tuple eval_uniform(const Material &M, unsigned lobes, const py::array_t<T, p
             for (size_t base = c0 * kChunk; base < std::min(n, c1 * kChunk); base += kChunk) {
                 if (stop(base - c0 * kChunk)) break;
                 const size_t m = n - base < kChunk ? n - base : kChunk;
-                if constexpr (std::is_same_v<T, float>) {
-                    deinterleave(m, o + 3 * base, ox, oy, oz, Ahead::no);
-                    deinterleave(m, i + 3 * base, ix, iy, iz, Ahead::no);
-                } else {
-                    deinterleave(m, o + 3 * base, ox, oy, oz);
-                    deinterleave(m, i + 3 * base, ix, iy, iz);
-                }
+                constexpr Ahead ahead = std::is_same_v<T, float> ? Ahead::no : Ahead::yes;
+                deinterleave(m, o + 3 * base, ox, oy, oz, ahead);
+                deinterleave(m, i + 3 * base, ix, iy, iz, ahead);
                 const typename Soa<T>::in a{ox, oy, oz}, b{ix, iy, iz};
                 const int st = eval_chunk<T>(M, lobes, m, a, b, typename Soa<T>::rgb{fr, fg, fb}, pd, want_f, want_pdf);
                 if (want_f) interleave(m, fr, fg, fb, fp + 3 * base);
