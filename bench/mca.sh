@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-FileCopyrightText: 2026 The pgloss authors
 # SPDX-License-Identifier: Apache-2.0
-# Static throughput of the FAST tier's AVX-512 eval block on AMD Zen 4 (llvm-mca 19): the
+# Static throughput of the float lobe's FAST tier on AVX-512 (a block of 16) on AMD Zen 4 (llvm-mca 19): the
 # operation count and FP-pipe bound quoted in BENCHMARKS.md. Informational; not part of
 # bench/run.sh or the tests (it installs Debian's llvm-19 for llvm-mca).
 #   bash bench/mca.sh [CPU]            (default znver4)

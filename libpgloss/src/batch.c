@@ -11,28 +11,6 @@
 
 #define B PGLOSS__BLOCK
 
-/* The loops' constants for one float material and its active lobes. */
-static pgloss__batch_consts make_consts(const pgloss_material *m, unsigned active)
-{
-    pgloss__batch_consts k;
-    k.lobe = pgloss_inl_consts_of(m, active);
-    k.alpha_x = m->alpha_x;
-    k.alpha_y = m->alpha_y;
-    const double ax2 = (double)m->alpha_x * m->alpha_x, ay2 = (double)m->alpha_y * m->alpha_y;
-    k.inv_ax2_log2 = (float)(1.4426950408889634 / ax2); /* log2 e */
-    k.inv_ay2_log2 = (float)(1.4426950408889634 / ay2);
-    /* The largest f and pdf over all directions: e <= 1, h·h <= 4, cosines >= COS_MIN. */
-    const pgloss_inl_consts *l = &k.lobe;
-    const double cm = PGLOSS_COS_MIN, cm2 = cm * cm;
-    const double nn_max = m->normalization == PGLOSS_NORM_WARD_DUR ? 1.0 / cm2
-                          : m->normalization == PGLOSS_NORM_BOUNDED ? 0.25 / (cm2 * cm2) /* 4/(2cm)⁴ */
-                                                                    : 1.0 / cm;
-    const double f_max = fmax(l->fd[0], fmax(l->fd[1], l->fd[2])) + (double)l->spec_scale * nn_max;
-    const double pdf_max = l->pdf_d + (double)l->pdf_s * (0.5 / (cm2 * cm)); /* 4/(2cm)³ */
-    k.may_overflow = !(f_max <= 0.5 * FLT_MAX && pdf_max <= 0.5 * FLT_MAX);
-    return k;
-}
-
 /* ---- arguments ----------------------------------------------------------------------------- */
 
 static int in3_ok(pgloss_strided3 v) { return v.ptr[0] && v.ptr[1] && v.ptr[2]; }
@@ -190,32 +168,31 @@ static void material_at(const chunk *c, size_t j, int norm, pgloss_material *out
     (void)pgloss_material_init(out, &p);
 }
 
-/* One material's constants, once per call: the float loops' (k) or the double ones' (kd);
- * *active becomes the lobes that the loops are specialised on. */
+/* A call's set-up, once: the lobes the loops are specialised on and the normalisation, and
+ * for one material in float64 its constants formed again in double (its parameters widened
+ * exactly). */
 typedef struct setup {
-    pgloss__batch_consts k;
+    pgloss__call_f c;
     pgloss__consts_d kd;
-    unsigned active;
-    int norm;
 } setup;
 
 static void set_up(const pgloss_material *m, const pgloss_physical_array *ms, unsigned lobes,
                    int f64, setup *s)
 {
-    s->active = lobes & PGLOSS_LOBE_ALL;
+    s->c.m = m;
+    s->c.ms = NULL;
+    s->c.active = lobes & PGLOSS_LOBE_ALL;
     if (!m) {
-        s->norm = (int)ms->normalization;
+        s->c.norm = (int)ms->normalization;
         return;
     }
-    s->norm = (int)m->normalization;
+    s->c.norm = (int)m->normalization;
     if (f64) {
-        /* m's parameters widened exactly, its constants formed again in double */
         s->kd = pgloss__consts_d_of(m->rho_d[0], m->rho_d[1], m->rho_d[2], m->rho_s, m->alpha_x,
-                                    m->alpha_y, s->norm, s->active);
-        s->active = s->kd.active;
+                                    m->alpha_y, s->c.norm, s->c.active);
+        s->c.active = s->kd.active;
     } else {
-        s->active &= m->lobes;
-        s->k = make_consts(m, s->active);
+        s->c.active &= m->lobes;
     }
 }
 
@@ -288,19 +265,17 @@ pgloss_status pgloss_eval_pdf_batch(const pgloss_batch_options *options,
         if (f64) {
             const pgloss__vec3_d vo = {c.o[0], c.o[1], c.o[2]}, vi = {c.x[0], c.x[1], c.x[2]};
             const pgloss__rgb_out_d vf = {c.y[0], c.y[1], c.y[2]};
-            const pgloss__materials_d md = materials_d(&c, s.norm);
-            bad += L->eval_pdf_d(m ? &s.kd : NULL, m ? NULL : &md, s.active, s.norm, cnt, vo, vi,
-                                 vf, c.y[3]);
+            const pgloss__materials_d md = materials_d(&c, s.c.norm);
+            bad += L->eval_pdf_d(m ? &s.kd : NULL, m ? NULL : &md, s.c.active, s.c.norm, cnt, vo,
+                                 vi, vf, c.y[3]);
         } else if (o.precision == PGLOSS_PRECISION_REFERENCE) {
-            bad += eval_reference(m, &c, s.norm, lobes, cnt, want_f, want_p);
+            bad += eval_reference(m, &c, s.c.norm, lobes, cnt, want_f, want_p);
         } else {
             const pgloss__vec3_f vo = {c.o[0], c.o[1], c.o[2]}, vi = {c.x[0], c.x[1], c.x[2]};
             const pgloss__rgb_out_f vf = {c.y[0], c.y[1], c.y[2]};
-            const pgloss__materials_f mf = materials_f(&c, s.norm);
-            /* per-element materials: the FLOAT loops in every tier */
-            bad += m ? L->eval_pdf[o.precision == PGLOSS_PRECISION_FAST](&s.k, s.active, s.norm,
-                                                                        cnt, vo, vi, vf, c.y[3])
-                     : L->eval_pdf_materials(&mf, s.active, cnt, vo, vi, vf, c.y[3]);
+            const pgloss__materials_f mf = materials_f(&c, s.c.norm);
+            s.c.ms = m ? NULL : &mf;
+            bad += L->eval_pdf[o.precision == PGLOSS_PRECISION_FAST](&s.c, cnt, vo, vi, vf, c.y[3]);
         }
         if (want_f)
             scatter3(f, size, base, cnt, c.y);
@@ -366,6 +341,7 @@ pgloss_status pgloss_sample_batch(const pgloss_batch_options *options, const pgl
     const size_t size = f64 ? 8 : 4;
     setup s;
     set_up(m, ms, lobes, f64, &s);
+    size_t bad = 0;
     chunk c;
     for (size_t base = 0; base < n; base += B) {
         const size_t cnt = n - base < B ? n - base : B;
@@ -381,28 +357,28 @@ pgloss_status pgloss_sample_batch(const pgloss_batch_options *options, const pgl
             const pgloss__vec3_d vo = {c.o[0], c.o[1], c.o[2]};
             const pgloss__vec3_out_d vw = {c.y[0], c.y[1], c.y[2]};
             const pgloss__rgb_out_d vg = {c.y[4], c.y[5], c.y[6]};
-            const pgloss__materials_d md = materials_d(&c, s.norm);
-            L->sample_d(m ? &s.kd : NULL, m ? NULL : &md, s.active, s.norm, cnt, vo, c.x[0],
+            const pgloss__materials_d md = materials_d(&c, s.c.norm);
+            L->sample_d(m ? &s.kd : NULL, m ? NULL : &md, s.c.active, s.c.norm, cnt, vo, c.x[0],
                         c.x[1], c.x[2], vw, c.y[3], vg, lb);
+            bad = 1; /* the status pass finds the invalid elements */
         } else if (o.precision == PGLOSS_PRECISION_REFERENCE) {
-            sample_reference(m, &c, s.norm, lobes, cnt, lb);
+            sample_reference(m, &c, s.c.norm, lobes, cnt, lb);
+            bad = 1;
         } else {
             const pgloss__vec3_f vo = {c.o[0], c.o[1], c.o[2]};
             const pgloss__vec3_out_f vw = {c.y[0], c.y[1], c.y[2]};
             const pgloss__rgb_out_f vg = {c.y[4], c.y[5], c.y[6]};
-            const pgloss__materials_f mf = materials_f(&c, s.norm);
-            if (m)
-                L->sample[o.precision == PGLOSS_PRECISION_FAST](&s.k, s.active, s.norm, cnt, vo,
-                                                                c.x[0], c.x[1], c.x[2], vw,
-                                                                c.y[3], vg, lb);
-            else
-                L->sample_materials(&mf, s.active, cnt, vo, c.x[0], c.x[1], c.x[2], vw, c.y[3],
-                                    vg, lb);
+            const pgloss__materials_f mf = materials_f(&c, s.c.norm);
+            s.c.ms = m ? NULL : &mf;
+            bad += L->sample[o.precision == PGLOSS_PRECISION_FAST](&s.c, cnt, vo, c.x[0], c.x[1],
+                                                                    c.x[2], vw, c.y[3], vg, lb);
         }
         scatter3(wi, size, base, cnt, c.y);
         pgloss__scatter(pdf.ptr, pdf.stride, size, base, cnt, c.y[3]);
         scatter3(weight, size, base, cnt, c.y + 4);
     }
+    if (!bad && !status)
+        return PGLOSS_OK;
     const inputs a = {size, ms, wo, u, 1};
     return statuses(&a, n, status);
 }

@@ -29,34 +29,40 @@ typedef struct pgloss__materials_d {
     pgloss_normalization normalization;
 } pgloss__materials_d;
 
-/* Per-call constants of the loops, derived from the material and the active lobes. */
-typedef struct pgloss__batch_consts {
-    pgloss_inl_consts lobe;           /* what the inline functions take (pgloss/inline.h) */
-    float alpha_x, alpha_y;           /* for the sampler */
-    float inv_ax2_log2, inv_ay2_log2; /* log2(e)/α²: eq. 2's exponent in base 2 (FAST blocks) */
-    int may_overflow;       /* f or pdf can exceed FLT_MAX/2 at some direction (FAST blocks) */
-} pgloss__batch_consts;
+/* LOOP(lobes, normalisation) with both as compile-time constants, chosen from the run-time
+ * `active` and `norm` (the float and the double loops): absent lobes and unused
+ * normalisations compile away. */
+#define PGLOSS__BY_NORM(LOOP, A, norm)                                                             \
+    ((norm) == PGLOSS_NORM_WARD_DUR                                                                \
+         ? LOOP(A, PGLOSS_NORM_WARD_DUR)                                                           \
+         : ((norm) == PGLOSS_NORM_BOUNDED ? LOOP(A, PGLOSS_NORM_BOUNDED)                           \
+                                          : LOOP(A, PGLOSS_NORM_WARD)))
+#define PGLOSS__BY_LOBES(LOOP, active, norm)                                                       \
+    ((active) == PGLOSS_LOBE_DIFFUSE    ? LOOP(PGLOSS_LOBE_DIFFUSE, PGLOSS_NORM_WARD)              \
+     : (active) == PGLOSS_LOBE_SPECULAR ? PGLOSS__BY_NORM(LOOP, PGLOSS_LOBE_SPECULAR, norm)       \
+     : (active) == PGLOSS_LOBE_ALL      ? PGLOSS__BY_NORM(LOOP, PGLOSS_LOBE_ALL, norm)            \
+                                        : LOOP(PGLOSS_LOBE_NONE, PGLOSS_NORM_WARD))
+
+/* A float call as the loops take it. */
+typedef struct pgloss__call_f {
+    const pgloss_material *m;      /* one material, or NULL: */
+    const pgloss__materials_f *ms; /* one per element */
+    unsigned active;               /* m: lobes & m->lobes; ms: the call's lobes (each element
+                                      narrows them to those it has) */
+    int norm;
+} pgloss__call_f;
 struct pgloss__consts_d;
 
-/* The loops, over n contiguous elements; f.r == NULL / pdf == NULL: output not wanted.
- * eval_pdf returns the number of invalid elements met (for one material: invalid directions,
- * wo and wi counted separately). One material: k, with `active` its active lobes; per
- * element: the materials, with `active` the call's mask & PGLOSS_LOBE_ALL. The double loops
- * take one of k (NULL) and pa (NULL). */
-typedef size_t (*pgloss__eval_pdf_fn)(const pgloss__batch_consts *k, unsigned active, int norm,
-                                      size_t n, pgloss__vec3_f wo, pgloss__vec3_f wi,
-                                      pgloss__rgb_out_f f, float *pdf);
-typedef void (*pgloss__sample_fn)(const pgloss__batch_consts *k, unsigned active, int norm,
-                                  size_t n, pgloss__vec3_f wo, const float *u0,
-                                  const float *u1, const float *u2, pgloss__vec3_out_f wi,
-                                  float *pdf, pgloss__rgb_out_f weight, unsigned char *lobe);
-typedef size_t (*pgloss__eval_pdf_materials_fn)(const pgloss__materials_f *, unsigned, size_t,
-                                                pgloss__vec3_f, pgloss__vec3_f,
-                                                pgloss__rgb_out_f, float *);
-typedef void (*pgloss__sample_materials_fn)(const pgloss__materials_f *, unsigned, size_t,
-                                            pgloss__vec3_f, const float *, const float *,
-                                            const float *, pgloss__vec3_out_f, float *,
-                                            pgloss__rgb_out_f, unsigned char *);
+/* The loops, over n contiguous elements; f.r == NULL / pdf == NULL: output not wanted. They
+ * return the number of invalid elements met (for the float eval_pdf with one material:
+ * invalid directions, wo and wi counted separately). The double loops take one of k (NULL)
+ * and pa (NULL). */
+typedef size_t (*pgloss__eval_pdf_fn)(const pgloss__call_f *c, size_t n, pgloss__vec3_f wo,
+                                      pgloss__vec3_f wi, pgloss__rgb_out_f f, float *pdf);
+typedef size_t (*pgloss__sample_fn)(const pgloss__call_f *c, size_t n, pgloss__vec3_f wo,
+                                    const float *u0, const float *u1, const float *u2,
+                                    pgloss__vec3_out_f wi, float *pdf, pgloss__rgb_out_f weight,
+                                    unsigned char *lobe);
 typedef size_t (*pgloss__eval_pdf_d_fn)(const struct pgloss__consts_d *,
                                         const pgloss__materials_d *, unsigned, int, size_t,
                                         pgloss__vec3_d, pgloss__vec3_d, pgloss__rgb_out_d,
@@ -70,8 +76,6 @@ typedef void (*pgloss__sample_d_fn)(const struct pgloss__consts_d *, const pglos
 typedef struct pgloss__loops {
     pgloss__eval_pdf_fn eval_pdf[2]; /* [FAST tier] */
     pgloss__sample_fn sample[2];
-    pgloss__eval_pdf_materials_fn eval_pdf_materials;
-    pgloss__sample_materials_fn sample_materials;
     pgloss__eval_pdf_d_fn eval_pdf_d;
     pgloss__sample_d_fn sample_d;
 #define PGLOSS__LOOP_FIELD(name) pgloss__perceptual_loop name;
@@ -84,33 +88,5 @@ typedef struct pgloss__loops {
  * receives the options with AUTO resolved. */
 const pgloss__loops *pgloss__dispatch(const pgloss_batch_options *opt,
                                       pgloss_batch_options *opt_out);
-
-/* Whether a float material parameter set passes pgloss_material_init's checks: finite (for a
- * float, |v| <= FLT_MAX), ρ >= 0, α > 0. */
-PGLOSS_INLINE_FN int pgloss__material_valid_f(float r, float g, float b, float s, float ax,
-                                               float ay)
-{
-    const int finite = pgloss_inl_finite(r) & pgloss_inl_finite(g) & pgloss_inl_finite(b) &
-                       pgloss_inl_finite(s) & pgloss_inl_finite(ax) & pgloss_inl_finite(ay);
-    return finite & (r >= 0.0f) & (g >= 0.0f) & (b >= 0.0f) & (s >= 0.0f) & (ax > 0.0f) &
-           (ay > 0.0f);
-}
-
-/* Element j of a float batch's sample outputs from the scalar pgloss_sample's record (the
- * reference tier of both batch families); lobe may be NULL. */
-PGLOSS_INLINE_FN void pgloss__put_sample_record(const pgloss_sample_record *s, size_t j,
-                                                pgloss__vec3_out_f wi, float *pdf,
-                                                pgloss__rgb_out_f weight, unsigned char *lobe)
-{
-    wi.x[j] = s->wi.x;
-    wi.y[j] = s->wi.y;
-    wi.z[j] = s->wi.z;
-    pdf[j] = s->pdf;
-    weight.r[j] = s->weight.r;
-    weight.g[j] = s->weight.g;
-    weight.b[j] = s->weight.b;
-    if (lobe)
-        lobe[j] = (unsigned char)s->lobe;
-}
 
 #endif

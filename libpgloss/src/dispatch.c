@@ -58,28 +58,16 @@ const char *pgloss_isa_name(pgloss_isa isa)
 #define PERCEPTUAL_ENTRY(name) PGLOSS__CAT(pgloss__##name##_loop_, ISA),
 #define PGLOSS__CAT_(a, b) a##b
 #define PGLOSS__CAT(a, b) PGLOSS__CAT_(a, b)
+#define DECLARE_TIER(isa, tier)                                                                    \
+    size_t pgloss__eval_pdf_##isa##_##tier(const pgloss__call_f *, size_t, pgloss__vec3_f,       \
+                                           pgloss__vec3_f, pgloss__rgb_out_f, float *);          \
+    size_t pgloss__sample_##isa##_##tier(const pgloss__call_f *, size_t, pgloss__vec3_f,         \
+                                         const float *, const float *, const float *,            \
+                                         pgloss__vec3_out_f, float *, pgloss__rgb_out_f,         \
+                                         unsigned char *);
 #define DECLARE_LOOPS(isa)                                                                         \
-    size_t pgloss__eval_pdf_##isa##_float(const pgloss__batch_consts *, unsigned, int, size_t,   \
-                                          pgloss__vec3_f, pgloss__vec3_f, pgloss__rgb_out_f,     \
-                                          float *);                                              \
-    size_t pgloss__eval_pdf_##isa##_fast(const pgloss__batch_consts *, unsigned, int, size_t,    \
-                                         pgloss__vec3_f, pgloss__vec3_f, pgloss__rgb_out_f,      \
-                                         float *);                                               \
-    void pgloss__sample_##isa##_float(const pgloss__batch_consts *, unsigned, int, size_t,       \
-                                      pgloss__vec3_f, const float *, const float *,              \
-                                      const float *, pgloss__vec3_out_f, float *,                \
-                                      pgloss__rgb_out_f, unsigned char *);                       \
-    void pgloss__sample_##isa##_fast(const pgloss__batch_consts *, unsigned, int, size_t,        \
-                                     pgloss__vec3_f, const float *, const float *,               \
-                                     const float *, pgloss__vec3_out_f, float *,                 \
-                                     pgloss__rgb_out_f, unsigned char *);                        \
-    size_t pgloss__eval_pdf_materials_##isa(const pgloss__materials_f *, unsigned, size_t,       \
-                                            pgloss__vec3_f, pgloss__vec3_f, pgloss__rgb_out_f,   \
-                                            float *);                                            \
-    void pgloss__sample_materials_##isa(const pgloss__materials_f *, unsigned, size_t,           \
-                                        pgloss__vec3_f, const float *, const float *,            \
-                                        const float *, pgloss__vec3_out_f, float *,              \
-                                        pgloss__rgb_out_f, unsigned char *);                     \
+    DECLARE_TIER(isa, float)                                                                       \
+    DECLARE_TIER(isa, fast)                                                                        \
     size_t pgloss__eval_pdf_batch_d_##isa(const struct pgloss__consts_d *,                       \
                                           const pgloss__materials_d *, unsigned, int, size_t,    \
                                           pgloss__vec3_d, pgloss__vec3_d, pgloss__rgb_out_d,     \
@@ -92,12 +80,9 @@ const char *pgloss_isa_name(pgloss_isa isa)
 #define TABLE(isa)                                                                                 \
     {{pgloss__eval_pdf_##isa##_float, pgloss__eval_pdf_##isa##_fast},                              \
      {pgloss__sample_##isa##_float, pgloss__sample_##isa##_fast},                                  \
-     pgloss__eval_pdf_materials_##isa,                                                             \
-     pgloss__sample_materials_##isa,                                                               \
      pgloss__eval_pdf_batch_d_##isa,                                                               \
      pgloss__sample_batch_d_##isa,                                                                 \
      PGLOSS__PERCEPTUAL_LOOPS(PERCEPTUAL_ENTRY)}
-
 #define ISA baseline
 DECLARE_LOOPS(baseline)
 PGLOSS__PERCEPTUAL_LOOPS(PERCEPTUAL_DECL)

@@ -36,7 +36,8 @@ class Material(C.Structure):
     _fields_ = [("rho_d", C.c_float * 3), ("rho_s", C.c_float), ("alpha_x", C.c_float), ("alpha_y", C.c_float),
                 ("normalization", C.c_int), ("lobes", C.c_uint), ("inv_alpha_x", C.c_float),
                 ("inv_alpha_y", C.c_float), ("spec_scale", C.c_float), ("pdf_scale", C.c_float),
-                ("weight_diffuse", C.c_float), ("weight_specular", C.c_float)]
+                ("weight_diffuse", C.c_float), ("weight_specular", C.c_float),
+                ("specular_probability", C.c_float), ("pdf_diffuse", C.c_float), ("pdf_specular", C.c_float)]
 
 
 def build() -> C.CDLL:

@@ -92,6 +92,10 @@ typedef struct pgloss_material {
     float pdf_scale;         /* 1/(4π αx αy): the specular pdf's constant */
     float weight_diffuse;    /* lobe-selection weights: luminance of ρd, and ρs */
     float weight_specular;
+    /* with both lobes active (PGLOSS_LOBE_ALL), so that a call divides nothing out: */
+    float specular_probability; /* Ps = ws / (wd + ws) */
+    float pdf_diffuse;          /* the pdf's diffuse constant (1 − Ps)/π, as wd / (wd + ws) / π */
+    float pdf_specular;         /* its specular constant Ps 2 pdf_scale */
 } pgloss_material;
 
 /*
