@@ -100,7 +100,7 @@ PGLOSS__D_FN int unit_chunk_d(size_t m, const double *restrict xs, const double 
 
 PGLOSS__D_FN double clamp_max(double v)
 {
-    return PGLOSS__D_MINP(v, (double)FLT_MAX);
+    return PGLOSS__D_MIN(v, (double)FLT_MAX);
 }
 
 /* pgloss_material_init's checks on a double parameter set (|v| > FLT_MAX counts as
@@ -290,17 +290,7 @@ PGLOSS__D_FN size_t eval_d_loop(const pgloss__consts_d *k, const pgloss__materia
     return bad;
 }
 
-/* (lobes, normalisation) as constants, then the outputs wanted. */
-#define BY_NORM(LOOP, A)                                                                           \
-    (norm == PGLOSS_NORM_WARD_DUR                                                                  \
-         ? LOOP(A, PGLOSS_NORM_WARD_DUR)                                                           \
-         : (norm == PGLOSS_NORM_BOUNDED ? LOOP(A, PGLOSS_NORM_BOUNDED) : LOOP(A, PGLOSS_NORM_WARD)))
-#define BY_LOBES(LOOP)                                                                             \
-    (active == PGLOSS_LOBE_DIFFUSE    ? LOOP(PGLOSS_LOBE_DIFFUSE, PGLOSS_NORM_WARD)                \
-     : active == PGLOSS_LOBE_SPECULAR ? BY_NORM(LOOP, PGLOSS_LOBE_SPECULAR)                        \
-     : active == PGLOSS_LOBE_ALL      ? BY_NORM(LOOP, PGLOSS_LOBE_ALL)                             \
-                                      : LOOP(PGLOSS_LOBE_NONE, PGLOSS_NORM_WARD))
-
+/* (lobes, normalisation) as constants (PGLOSS__BY_LOBES), then the outputs wanted. */
 PGLOSS__D_FN size_t eval_d_outputs(const pgloss__consts_d *k, const pgloss__materials_d *pa,
                                    const int per_element, unsigned active, int norm, size_t n,
                                    pgloss__vec3_d wo, pgloss__vec3_d wi,
@@ -316,10 +306,10 @@ PGLOSS__D_FN size_t eval_d_outputs(const pgloss__consts_d *k, const pgloss__mate
     eval_d_loop(k, pa, per_element, A, N, 0, 1, n, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, f.r, f.g,   \
                 f.b, pdf)
     if (f.r && pdf)
-        return BY_LOBES(LOOP_FP);
+        return PGLOSS__BY_LOBES(LOOP_FP, active, norm);
     if (f.r)
-        return BY_LOBES(LOOP_F);
-    return BY_LOBES(LOOP_P);
+        return PGLOSS__BY_LOBES(LOOP_F, active, norm);
+    return PGLOSS__BY_LOBES(LOOP_P, active, norm);
 #undef LOOP_FP
 #undef LOOP_F
 #undef LOOP_P
@@ -541,9 +531,9 @@ void SAMPLE_D_FN(const pgloss__consts_d *k, const pgloss__materials_d *pa, unsig
 #define LOOP_PE(A, N) sample_d_loop(NULL, pa, 1, A, N, n, wo, u0s, u1s, u2s, wi, pdf, weight, lobe)
 #define LOOP_U(A, N) sample_d_loop(k, NULL, 0, A, N, n, wo, u0s, u1s, u2s, wi, pdf, weight, lobe)
     if (pa)
-        BY_LOBES(LOOP_PE);
+        PGLOSS__BY_LOBES(LOOP_PE, active, norm);
     else
-        BY_LOBES(LOOP_U);
+        PGLOSS__BY_LOBES(LOOP_U, active, norm);
 #undef LOOP_PE
 #undef LOOP_U
 }

@@ -6,30 +6,8 @@
  * are normalised (pgloss__normalize), then pgloss__eval_pdf_d runs the double lobe of lobe_d.h
  * (brdf.h's formulas literally, with an inline exp instead of libm's; the double batches run
  * the same code) on the float material's constants. */
-#include <stdint.h>
-#include <string.h>
 #include "internal.h"
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-
-#if defined(__GNUC__) || defined(__clang__)
-#define BRDF_INLINE static inline __attribute__((always_inline))
-#else
-#define BRDF_INLINE static inline
-#endif
-
-/* max(x, lo) for x not NaN; with SSE2 one maxsd that the compiler cannot turn into a branch
- * (GCC makes `x > lo ? x : lo` a branch here, which mispredicts on the exponent's tail). */
-BRDF_INLINE double max_no_branch(double x, double lo)
-{
-#if defined(__SSE2__)
-    return _mm_cvtsd_f64(_mm_max_sd(_mm_set_sd(x), _mm_set_sd(lo)));
-#else
-    return x > lo ? x : lo;
-#endif
-}
-#define PGLOSS__D_MAX(x, lo) max_no_branch(x, lo)
+#define PGLOSS__D_SCALAR 1 /* lobe_d.h: branch-free max and min for one lane */
 #include "lobe_d.h"
 
 void pgloss__eval_pdf_d(const pgloss_material *m, unsigned active, const double o[3],

@@ -4,6 +4,7 @@
  * directions, and Walter's (2005) half-vector sampling of the specular lobe. Double inside;
  * the record's pdf and weight come from the same code as pgloss_eval_pdf (brdf.c). */
 #include "internal.h"
+#define PGLOSS__D_SCALAR 1 /* lobe_d.h: branch-free max and min for one lane */
 #include "lobe_d.h"
 
 /* Largest float below 1: random numbers are clamped to [0, ONE_MINUS_EPS]. */
