@@ -224,7 +224,7 @@ bool pgloss_impl_normalize(vec3 v, out vec3 n)
 }
 
 /* Near-unit: squared length within 2^-20 of 1. Every unit vector rounded to float is one
- * (|v|² - 1 is a few ulp); the C core's UNIT_L2_LO / UNIT_L2_HI (batch_isa.c). */
+ * (|v|² - 1 is a few ulp); the C core's near_unit (pgloss/detail/lobe.h). */
 #define PGLOSS_IMPL_UNIT_L2_LO 0.99999904632568359375   /* 1 - 2^-20 */
 #define PGLOSS_IMPL_UNIT_L2_HI 1.00000095367431640625   /* 1 + 2^-20 */
 
@@ -236,7 +236,7 @@ bool pgloss_impl_near_unit(vec3 v)
 }
 
 /* A direction for pgloss_impl_eval_pdf: v as given if near-unit, else normalised (the C
- * core's unit_chunk). false (n = 0) for a zero or non-finite vector. */
+ * core's unit). false (n = 0) for a zero or non-finite vector. */
 bool pgloss_impl_unit(vec3 v, out vec3 n)
 {
     n = vec3(0.0);
@@ -364,60 +364,53 @@ float pgloss_specular_probability(pgloss_material m, uint lobes)
 
 /* ---- evaluation (brdf.c) ------------------------------------------------------------- */
 
-/* f and pdf of the active lobes at near-unit directions o, i (pgloss_impl_unit): the twin
- * of the C core's batched kernel_eval_pdf (batch_isa.c; eq. 2, Walter 2005's pdf).
- *
- * eq. 2's exponent comes from a half vector free of the rounding of normalised directions.
- * Near the mirror direction, where the lobe lives, the x and y of ô + î are small
- * differences: normalising o and i in float moves them by an ulp of 1, a relative error of
- * ~6e-8/tanδ in tanδ (2e-5 of f at α = 0.07). With |o|² = 1 + εo, |i|² = 1 + εi
- * (|ε| <= 2^-20), s = i + o and d = i − o, ô + î is parallel, to O(ε²) = 2^-40, to
- *   h = s − (D/4) d,   D = |i|² − |o|² = Σ d_k s_k,
- * whose small components are rounded relative to themselves: tan²δ = (hx² + hy²)/hz² comes
- * out within a few ulp. 1/|v| = 1.5 − |v|²/2 to O(ε²), so cosθ = z (1.5 − |v|²/2) and
- * |ô + î|² = |h|² ro ri, without square root. h is bit for bit symmetric in o and i (d and D
- * change sign together): f(o, i) = f(i, o) exactly. Whether the driver contracts a*b + c
- * into an FMA changes only roundings, neither the accuracy nor the symmetry. */
+/* f and pdf of the active lobes at near-unit directions o, i (pgloss_impl_unit): the C core's
+ * float lobe (libpgloss/include/pgloss/detail/lobe.h, eval_pdf_unit) step by step, with
+ * GLSL's exp and inversesqrt (tests/shader_steps.py checks the steps; the half vector's
+ * derivation: docs/kernels.md). Whether the driver contracts a*b + c into an FMA changes only
+ * roundings, neither the accuracy nor the symmetry f(o, i) = f(i, o). */
 void pgloss_impl_eval_pdf(pgloss_material m, uint act, vec3 o, vec3 i, out vec3 f, out float pdf)
 {
     vec3 fd = vec3(0.0);
     float fs = 0.0;
     float p = 0.0;
-    if (o.z > 0.0 && i.z > 0.0 && act != 0u) {
+    /* 1. 1/|o|, 1/|i| and the cosines */
+    float ro = 1.5 - 0.5 * dot(o, o);
+    float ri = 1.5 - 0.5 * dot(i, i);
+    float cos_o = o.z * ro;
+    float cos_i = i.z * ri;
+    if (cos_o > 0.0 && cos_i > 0.0 && act != 0u) {
         float ps = pgloss_impl_specular_probability(m, act);
-        float ro = 1.5 - 0.5 * dot(o, o); /* 1/|o| */
-        float ri = 1.5 - 0.5 * dot(i, i); /* 1/|i| */
-        float cos_o = o.z * ro;
-        float cos_i = i.z * ri;
 #ifndef PGLOSS_NO_DIFFUSE
         if ((act & PGLOSS_LOBE_DIFFUSE) != 0u) {
+            /* 2. diffuse */
             fd = m.rho_d * PGLOSS_INV_PI;
             p += pgloss_impl_diffuse_probability(m, act) * cos_i * PGLOSS_INV_PI;
         }
 #endif
 #ifndef PGLOSS_NO_SPECULAR
         if ((act & PGLOSS_LOBE_SPECULAR) != 0u) {
+            /* 3. half vector */
             vec3 s = i + o;
             vec3 d = i - o;
             float q = 0.25 * dot(d, s); /* (|i|² − |o|²)/4 */
             vec3 h = s - q * d;         /* parallel to ô + î */
-            float hz2 = max(h.z * h.z, PGLOSS_FLT_MIN);
-#ifdef PGLOSS_NO_ANISOTROPY
-            float x = (h.x * h.x + h.y * h.y) * (m.inv_alpha_x * m.inv_alpha_x) / hz2;
-#else
-            float ex = h.x * m.inv_alpha_x;
-            float ey = h.y * m.inv_alpha_y;
-            float x = (ex * ex + ey * ey) / hz2;
-#endif
-            /* exp(-tan²δ/α²) of eq. 2 (anisotropic form: Ward 1992); x capped so that no
-             * Inf reaches exp (exp(-1e4) is 0 in float anyway). */
-            float e = exp(-min(x, 1e4));
+            /* 4. cosines raised to COS_MIN; one reciprocal */
             float ci = max(cos_i, PGLOSS_COS_MIN);
             float co = max(cos_o, PGLOSS_COS_MIN);
             float hzc = ci + co;
-            /* hhs = |ô + î|² / hzc², h scaled before it is squared: at grazing angles |h|² alone
-             * underflows (the C core's inline lobe does the same) */
-            vec3 g = h / hzc;
+            float r = 1.0 / (max(h.z, PGLOSS_FLT_MIN) * hzc); /* GPUs flush subnormals */
+            float inv_hz = r * hzc;
+            float inv_hzc = r * max(h.z, PGLOSS_FLT_MIN);
+            /* 5. eq. 2's exponential */
+#ifdef PGLOSS_NO_ANISOTROPY
+            vec2 t2 = h.xy * (m.inv_alpha_x * inv_hz);
+#else
+            vec2 t2 = h.xy * vec2(m.inv_alpha_x, m.inv_alpha_y) * inv_hz;
+#endif
+            float e = exp(-min(dot(t2, t2), 1e4)); /* no Inf reaches exp: exp(-1e4) is 0 */
+            /* 6. normalisation */
+            vec3 g = h * inv_hzc;
             float hhs = dot(g, g) * (ro * ri);
             float norm;
 #if !defined(PGLOSS_NO_NORM_WARD_DUR) || !defined(PGLOSS_NO_NORM_BOUNDED)
@@ -426,7 +419,7 @@ void pgloss_impl_eval_pdf(pgloss_material m, uint act, vec3 o, vec3 i, out vec3 
             case PGLOSS_NORM_WARD_DUR: norm = 1.0 / (ci * co); break;                  /* Dür 2006 */
 #endif
 #ifndef PGLOSS_NO_NORM_BOUNDED
-            case PGLOSS_NORM_BOUNDED: norm = hhs / (hzc * hzc); break;                 /* GM&D 2010 */
+            case PGLOSS_NORM_BOUNDED: norm = hhs * (inv_hzc * inv_hzc); break;         /* GM&D 2010 */
 #endif
             default: norm = inversesqrt(ci * co); break;                               /* eq. 2 */
             }
@@ -434,11 +427,12 @@ void pgloss_impl_eval_pdf(pgloss_material m, uint act, vec3 o, vec3 i, out vec3 
             norm = inversesqrt(ci * co);                                               /* eq. 2 */
 #endif
             fs = m.spec_scale * e * norm;
-            /* Walter 2005: p(wi) = D(h) / (4 (wo·h)); with H = ô + î: wo·Ĥ Ĥz³ = Hz³ / (2 H·H). */
-            p += ps * (2.0 * m.pdf_scale * e * hhs / hzc);
+            /* 7. Walter 2005's pdf */
+            p += ps * (2.0 * m.pdf_scale * e * hhs * inv_hzc);
         }
 #endif
     }
+    /* 8. outputs */
     f = min(fd + vec3(fs), vec3(PGLOSS_FLT_MAX));
     pdf = pgloss_impl_to_float(p);
 }
@@ -471,7 +465,7 @@ int pgloss_pdf(pgloss_material m, vec3 wo, vec3 wi, uint lobes, out float pdf)
     return pgloss_eval_pdf(m, wo, wi, lobes, f, pdf);
 }
 
-/* ---- sampling (sample.c; float kernels as in kernel_float.h) ------------------------- */
+/* ---- sampling (sample.c; the float maps of pgloss/detail/lobe.h) ---------------------- */
 #ifndef PGLOSS_NO_SAMPLING
 
 /* log(w) for normal w > 0: exponent from the bits, 2 atanh((m-1)/(m+1)) series. */

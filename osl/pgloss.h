@@ -297,7 +297,7 @@ int pgloss__normalize(vector v, output vector o)
 }
 
 // Near-unit: squared length within 2^-20 of 1. Every unit vector rounded to float is one
-// (|v|² - 1 is a few ulp); the C core's UNIT_L2_LO / UNIT_L2_HI (batch_isa.c).
+// (|v|² - 1 is a few ulp); the C core's near_unit (pgloss/detail/lobe.h).
 #define PGLOSS__UNIT_L2_LO 0.99999904632568359375   // 1 - 2^-20
 #define PGLOSS__UNIT_L2_HI 1.00000095367431640625   // 1 + 2^-20
 
@@ -308,7 +308,7 @@ int pgloss__near_unit(vector v)
 }
 
 // A direction for pgloss__eval_pdf_unit: v as given if near-unit, else normalised (the C
-// core's unit_chunk). Returns 0 (and o = 0) for a zero-length or non-finite v.
+// core's unit). Returns 0 (and o = 0) for a zero-length or non-finite v.
 int pgloss__unit(vector v, output vector o)
 {
     if (pgloss__isfinite3(v) && pgloss__near_unit(v)) {
@@ -824,57 +824,51 @@ float pgloss_specular_probability(pgloss_material m, int lobes)
     return pgloss__specular_probability_active(m, lobes & m.lobes & PGLOSS_LOBE_ALL);
 }
 
-// f and pdf of the active lobes at near-unit directions o, i (pgloss__unit): the twin of the
-// C core's batched kernel_eval_pdf (batch_isa.c; eq. 2, Walter 2005's pdf).
-//
-// eq. 2's exponent comes from a half vector free of the rounding of normalised directions.
-// Near the mirror direction, where the lobe lives, the x and y of ô + î are small
-// differences: normalising o and i in float moves them by an ulp of 1, a relative error of
-// ~6e-8/tanδ in tanδ (2e-5 of f at α = 0.07). With |o|² = 1 + εo, |i|² = 1 + εi
-// (|ε| <= 2^-20), s = i + o and d = i − o, ô + î is parallel, to O(ε²) = 2^-40, to
-//   h = s − (D/4) d,   D = |i|² − |o|² = Σ d_k s_k,
-// whose small components are rounded relative to themselves: tan²δ = (hx² + hy²)/hz² comes
-// out within a few ulp. 1/|v| = 1.5 − |v|²/2 to O(ε²), so cosθ = z (1.5 − |v|²/2) and
-// |ô + î|² = |h|² ro ri, without square root. h is bit for bit symmetric in o and i (d and D
-// change sign together): f(o, i) = f(i, o) exactly.
+// f and pdf of the active lobes at near-unit directions o, i (pgloss__unit): the C core's float
+// lobe (libpgloss/include/pgloss/detail/lobe.h, eval_pdf_unit) step by step
+// (tests/shader_steps.py checks the steps; the half vector's derivation: docs/kernels.md).
 void pgloss__eval_pdf_unit(pgloss_material m, int active, vector o, vector i,
                            output color f, output float pdf)
 {
     color fd = color(0.0);
     float fs = 0.0, p = 0.0;
-    if (o[2] > 0.0 && i[2] > 0.0 && active != 0) {
+    // 1. 1/|o|, 1/|i| and the cosines
+    float ro = 1.5 - 0.5 * (o[0] * o[0] + o[1] * o[1] + o[2] * o[2]);
+    float ri = 1.5 - 0.5 * (i[0] * i[0] + i[1] * i[1] + i[2] * i[2]);
+    float cos_o = o[2] * ro, cos_i = i[2] * ri;
+    if (cos_o > 0.0 && cos_i > 0.0 && active != 0) {
         float ps = pgloss__specular_probability_active(m, active);
-        float ro = 1.5 - 0.5 * (o[0] * o[0] + o[1] * o[1] + o[2] * o[2]);  // 1/|o|
-        float ri = 1.5 - 0.5 * (i[0] * i[0] + i[1] * i[1] + i[2] * i[2]);  // 1/|i|
-        float cos_o = o[2] * ro, cos_i = i[2] * ri;
         if (active & PGLOSS_LOBE_DIFFUSE) {
+            // 2. diffuse
             fd = m.rho_d * PGLOSS__INV_PI;
             p += pgloss__diffuse_probability_active(m, active) * cos_i * PGLOSS__INV_PI;
         }
         if (active & PGLOSS_LOBE_SPECULAR) {
+            // 3. half vector
             float sx = i[0] + o[0], sy = i[1] + o[1], sz = i[2] + o[2];
             float dx = i[0] - o[0], dy = i[1] - o[1], dz = i[2] - o[2];
             float q = 0.25 * (dx * sx + dy * sy + dz * sz);          // (|i|² − |o|²)/4
             float hx = sx - q * dx, hy = sy - q * dy, hz = sz - q * dz;  // parallel to ô + î
-            // exp(-tan²δ/α²) of eq. 2, anisotropic form (Ward 1992). Ratios before squares:
-            // hz may be tiny, and OSL's x/0 is 0, not Inf.
-            float tx = (hx * m.inv_alpha_x) / hz, ty = (hy * m.inv_alpha_y) / hz;
-            float e = pgloss__exp(-(tx * tx + ty * ty));
+            // 4. cosines raised to COS_MIN; one reciprocal
             float ci = max(cos_i, PGLOSS_COS_MIN), co = max(cos_o, PGLOSS_COS_MIN);
             float hzc = ci + co;
-            // hhs = |ô + î|² / hzc², h scaled before it is squared: at grazing angles |h|² alone
-            // underflows (the C core's inline lobe does the same)
-            float gx = hx / hzc, gy = hy / hzc, gz = hz / hzc;
+            float inv_hz = 1.0 / hz, inv_hzc = 1.0 / hzc;  // OSL's x/0 is 0, not Inf
+            // 5. eq. 2's exponential
+            float tx = (hx * m.inv_alpha_x) * inv_hz, ty = (hy * m.inv_alpha_y) * inv_hz;
+            float e = pgloss__exp(-(tx * tx + ty * ty));
+            // 6. normalisation
+            float gx = hx * inv_hzc, gy = hy * inv_hzc, gz = hz * inv_hzc;
             float hhs = (gx * gx + gy * gy + gz * gz) * (ro * ri);
             float norm;
             if (m.normalization == PGLOSS_NORM_WARD_DUR) norm = 1.0 / (ci * co);                   // Dür 2006
-            else if (m.normalization == PGLOSS_NORM_BOUNDED) norm = hhs / (hzc * hzc);               // GM&D 2010
+            else if (m.normalization == PGLOSS_NORM_BOUNDED) norm = hhs * (inv_hzc * inv_hzc);     // GM&D 2010
             else norm = 1.0 / (sqrt(ci) * sqrt(co));                                              // eq. 2
             fs = pgloss__to_float((m.spec_scale * e) * norm);
-            // Walter 2005: D(H)/(4 wo·Ĥ) with H = ô + î: wo·Ĥ Ĥz³ = Hz³ / (2 H·H).
-            p += pgloss__to_float(ps * (2.0 * m.pdf_scale * e) * (hhs / hzc));
+            // 7. Walter 2005's pdf
+            p += pgloss__to_float(ps * (2.0 * m.pdf_scale * e) * (hhs * inv_hzc));
         }
     }
+    // 8. outputs
     f = color(pgloss__to_float(fd[0] + fs), pgloss__to_float(fd[1] + fs), pgloss__to_float(fd[2] + fs));
     pdf = pgloss__to_float(p);
 }
