@@ -107,30 +107,23 @@ def main() -> int:
 | scalar `eval` <= 10 ns | {scalar[0]:.1f} ns (double arithmetic inside) | {yes(scalar[0] <= 10.0)} |
 
 **Where the error comes from.** Every float kernel here computes eq. 2's exponent x =
-tan²δ/α² from a half vector that is free of cancellation (`pgloss_inl_eval_pdf_unit` in
-`libpgloss/include/pgloss/inline.h`, docs/kernels.md): for unit directions as every renderer passes them, the only
+tan²δ/α² from a half vector that is free of cancellation (the lobe of
+`libpgloss/include/pgloss/detail/lobe.h`, docs/kernels.md): for unit directions as every renderer passes them, the only
 roundings left are relative to the small quantities themselves, and the error of f grows as
 about 2.5e-7 per unit of x, as it must for exp(-x) evaluated from a float x: merely rounding h
 and x to float, with every other step exact, costs up to {floor:.1e} on the same inputs (the
 "floor" row below). The
 diffuse term dominates the tails of the material with both lobes, so its max is lower; the
-specular-only rows show the lobe's own error. (Before this kernel, normalising the directions
-first cost ~2√x·6e-8/α: 1.85e-5 at α = 0.07.)
+specular-only rows show the lobe's own error. (Normalising the directions first would cost
+~2√x·6e-8/α: 1.85e-5 at α = 0.07.)
 
-**Operation count and the arithmetic limit.** The FAST eval block on AVX-512
-(`libpgloss/src/batch_fast_block.h`, both lobes, eq. 2's normalisation) is 85 instructions per
-16 evaluations (`bash bench/mca.sh` lists them): 21 FMA, 14 multiplies, 15 adds and
-subtracts, 2 reciprocal/rsqrt estimates, vreduceps + vscalefps for exp2, integer max for the
-cosine clamps and integer range and sign tests, 6 loads and 3 stores; about 76
-floating-point operations per evaluation (FMA = 2). No division and no square root: unit
-directions need neither (1/|v| = 1.5 - |v|²/2 for |v|² within 2^-20 of 1). On this core
-(Zen 4: 512-bit operations are two halves on 256-bit pipes) the two multiply/FMA pipes are the
-bound: 44.2 cycles per 16 evaluations by llvm-mca 19 (`-mcpu=znver4`), i.e. 2.76 cycles per
-evaluation = {2.76 / ghz:.2f} ns at the {ghz:.2f} GHz measured by a dependent-add loop: the
-measured {bestfast[0]:.2f} ns is {100 * 2.76 / ghz / bestfast[0]:.0f} % of that bound.
-The core's peak, 48 single-precision flops per cycle with FMA and adds perfectly balanced,
-would be {76 / 48 / ghz:.2f} ns for 76 flops. The FLOAT tier keeps IEEE division and square root
-(two divisions and one square root per evaluation): the divider bounds it.
+**Operation count and the arithmetic limit.** The FAST tier is the same lobe with its fast
+option over the ISA's helper: reciprocal and rsqrt estimates refined by Newton steps, a
+degree-5 exp2 and fused multiply-adds, no division and no square root (unit directions need
+neither: 1/|v| = 1.5 - |v|²/2 for |v|² within 2^-20 of 1). `bash bench/mca.sh` counts its
+instructions per block of 16 on AVX-512 and their cycles by llvm-mca; the two multiply/FMA
+pipes are the bound there. The FLOAT tier keeps IEEE division and square root (two divisions
+and one square root per evaluation): the divider bounds it.
 
 The scalar functions are the double-precision reference (one path: both directions normalised,
 then the literal formulas); a call is a dependency chain of roots, divisions and an exp, and the loop with an empty
