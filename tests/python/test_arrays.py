@@ -52,7 +52,9 @@ def _elementwise(fn: str, file: str, names: Tuple[str, ...], outs: Tuple[str, ..
     if not cs:
         return 0
     args = [np.array([num(c["input"][n]) for c in cs]) for n in names]
-    res, st = getattr(pgloss, fn)(*args, errors="status")
+    # The vectors are the C functions' own verdicts: the conversions without the model's check.
+    kw = {"check": False} if fn in ("gloss_from_physical", "physical_from_gloss") else {}
+    res, st = getattr(pgloss, fn)(*args, errors="status", **kw)
     res = res if isinstance(res, tuple) else (res,)
     assert st.dtype == np.int8 and st.shape == (len(cs),)
     for k, c in enumerate(cs):
@@ -105,7 +107,7 @@ def test_vectors_physical_from_perceptual_batched(fn: str, file: str, vector_rep
     for (norm, space), group in _group(cs, lambda c: (int(c["input"]["normalization"]),
                                                         int(c["input"].get("space", 0)))).items():
         q = Perceptual(*_perceptual_cols(group))
-        p, st = q.to_physical(norm, space, errors="status")
+        p, st = q.to_physical(norm, space, errors="status", check=False)
         assert p.shape == q.shape == (len(group),) and st.shape == q.shape
         for k, c in enumerate(group):
             chk.ran(fn + "_batch")
@@ -125,7 +127,7 @@ def test_vectors_perceptual_from_physical_batched(fn: str, file: str, vector_rep
     assert cs
     for (norm, space), group in _group(cs, lambda c: (int(c["input"]["p"]["normalization"]),
                                                         int(c["input"].get("space", 0)))).items():
-        q, st = _physical_array(group).to_perceptual(space, errors="status")
+        q, st = _physical_array(group).to_perceptual(space, errors="status", check=False)
         for k, c in enumerate(group):
             chk.ran(fn + "_batch")
             chk.status(fn + "_batch", c, Status(int(st[k])).c_name)
