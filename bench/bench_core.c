@@ -283,17 +283,20 @@ static void run_path(void *vp)
         g_sink = acc;
         return;
     }
-    const pgloss_vec3_array wo = {in->ox, in->oy, in->oz}, wi = {in->ix, in->iy, in->iz};
-    const pgloss_rgb_out f = {in->fr, in->fg, in->fb}, none = {NULL, NULL, NULL};
+    const size_t F = sizeof(float);
+    const pgloss_strided3 wo = pgloss_strided3_soa(in->ox, in->oy, in->oz, F);
+    const pgloss_strided3 wi = pgloss_strided3_soa(in->ix, in->iy, in->iz, F);
+    const pgloss_strided3_out f = pgloss_strided3_out_soa(in->fr, in->fg, in->fb, F);
+    const pgloss_strided3_out none = {{NULL, NULL, NULL}, 0};
+    const pgloss_strided_out pdf = pgloss_strided_out_of(in->pdf, F), no_pdf = {NULL, 0};
     switch (c->fn) {
-    case FN_EVAL: pgloss_eval_pdf_batch_ex(&c->opt, c->m, c->lobes, n, wo, wi, f, NULL); break;
-    case FN_PDF: pgloss_eval_pdf_batch_ex(&c->opt, c->m, c->lobes, n, wo, wi, none, in->pdf); break;
-    case FN_EVAL_PDF: pgloss_eval_pdf_batch_ex(&c->opt, c->m, c->lobes, n, wo, wi, f, in->pdf); break;
-    default: {
-        const pgloss_vec3_out w = {in->wx, in->wy, in->wz};
-        pgloss_sample_batch_ex(&c->opt, c->m, c->lobes, n, wo, in->u0, in->u1, in->u2, w, in->pdf,
-                               f, in->lobe);
-    }
+    case FN_EVAL: pgloss_eval_pdf_batch(&c->opt, c->m, NULL, c->lobes, n, wo, wi, f, no_pdf, NULL); break;
+    case FN_PDF: pgloss_eval_pdf_batch(&c->opt, c->m, NULL, c->lobes, n, wo, wi, none, pdf, NULL); break;
+    case FN_EVAL_PDF: pgloss_eval_pdf_batch(&c->opt, c->m, NULL, c->lobes, n, wo, wi, f, pdf, NULL); break;
+    default:
+        pgloss_sample_batch(&c->opt, c->m, NULL, c->lobes, n, wo,
+                            pgloss_strided3_soa(in->u0, in->u1, in->u2, F),
+                            pgloss_strided3_out_soa(in->wx, in->wy, in->wz, F), pdf, f, in->lobe, NULL);
     }
     g_sink = in->fr[0] + in->pdf[0];
 }
@@ -534,7 +537,8 @@ int main(int argc, char **argv)
     printf("|---|---|---|---|---|---:|---:|---:|\n");
     const pgloss_isa isas[] = {PGLOSS_ISA_BASELINE, PGLOSS_ISA_AVX2, PGLOSS_ISA_AVX512};
     for (int fn = 0; fn < FN_COUNT; ++fn) {
-        ctx c = {&glossy, PGLOSS_LOBE_ALL, &in, n, fn, 1, {PGLOSS_PRECISION_REFERENCE, PGLOSS_ISA_AUTO}};
+        ctx c = {&glossy, PGLOSS_LOBE_ALL, &in, n, fn, 1,
+                 {PGLOSS_PRECISION_REFERENCE, PGLOSS_ISA_AUTO, PGLOSS_FLOAT32}};
         row("both", &c, "scalar", "double", "-");
         if (fn == FN_EVAL) { /* the loop and call alone, for comparison */
             c.scalar = 2;
@@ -560,7 +564,7 @@ int main(int argc, char **argv)
     printf("| function | path | tier | ISA | material | ns/call | max rel err | mean rel err |\n");
     printf("|---|---|---|---|---|---:|---:|---:|\n");
     {
-        ctx c = {&glossy, PGLOSS_LOBE_ALL, &in, n, FN_EVAL_PDF, 0, {PGLOSS_PRECISION_FLOAT, PGLOSS_ISA_AUTO}};
+        ctx c = {&glossy, PGLOSS_LOBE_ALL, &in, n, FN_EVAL_PDF, 0, {PGLOSS_PRECISION_FLOAT, PGLOSS_ISA_AUTO, PGLOSS_FLOAT32}};
         row("both", &c, "batch", "float", "auto");
         c.m = &diffuse;
         row("diffuse", &c, "batch", "float", "auto");
@@ -601,7 +605,7 @@ int main(int argc, char **argv)
     printf("\nBatch size (float eval_pdf, best ISA): ns per element\n\n| n | ns/elem |\n|---:|---:|\n");
     const size_t sizes[] = {1, 16, 256, 4096, 65536, 1u << 20};
     for (size_t k = 0; k < sizeof sizes / sizeof sizes[0]; ++k) {
-        ctx c = {&glossy, PGLOSS_LOBE_ALL, &in, sizes[k], FN_EVAL_PDF, 0, {PGLOSS_PRECISION_FLOAT, PGLOSS_ISA_AUTO}};
+        ctx c = {&glossy, PGLOSS_LOBE_ALL, &in, sizes[k], FN_EVAL_PDF, 0, {PGLOSS_PRECISION_FLOAT, PGLOSS_ISA_AUTO, PGLOSS_FLOAT32}};
         const double t = time_median(run_path, &c) / (double)sizes[k] * 1e9;
         printf("| %zu | %.2f |\n", sizes[k], t);
         if (g_csv)

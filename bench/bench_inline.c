@@ -131,9 +131,9 @@ static inline __attribute__((always_inline)) void call_eval_pdf(int path, const 
     case P_INLINE: pgloss_eval_pdf_inline(m, o, i, PGLOSS_LOBE_ALL, f, p); break;
     case P_SCALAR: pgloss_eval_pdf(m, o, i, PGLOSS_LOBE_ALL, f, p); break;
     case P_BATCH1: {
-        const pgloss_vec3_array ao = {&o.x, &o.y, &o.z}, ai = {&i.x, &i.y, &i.z};
-        const pgloss_rgb_out fo = {&f->r, &f->g, &f->b};
-        pgloss_eval_pdf_batch(m, PGLOSS_LOBE_ALL, 1, ao, ai, fo, p);
+        pgloss_eval_pdf_batch(NULL, m, NULL, PGLOSS_LOBE_ALL, 1, pgloss_strided3_rows(&o, sizeof(float)),
+                              pgloss_strided3_rows(&i, sizeof(float)), pgloss_strided3_out_rows(f, sizeof(float)),
+                              pgloss_strided_out_of(p, sizeof(float)), NULL);
         break;
     }
     case P_PLAIN: plain_eval_pdf(m, o, i, f, p); break;
@@ -148,10 +148,10 @@ static inline __attribute__((always_inline)) void call_sample(int path, const pg
     case P_INLINE: pgloss_sample_inline(m, o, u, PGLOSS_LOBE_ALL, s); break;
     case P_SCALAR: pgloss_sample(m, o, u, PGLOSS_LOBE_ALL, s); break;
     case P_BATCH1: {
-        const pgloss_vec3_array ao = {&o.x, &o.y, &o.z};
-        const pgloss_vec3_out wo = {&s->wi.x, &s->wi.y, &s->wi.z};
-        const pgloss_rgb_out w = {&s->weight.r, &s->weight.g, &s->weight.b};
-        pgloss_sample_batch(m, PGLOSS_LOBE_ALL, 1, ao, &u[0], &u[1], &u[2], wo, &s->pdf, w, NULL);
+        pgloss_sample_batch(NULL, m, NULL, PGLOSS_LOBE_ALL, 1, pgloss_strided3_rows(&o, sizeof(float)),
+                            pgloss_strided3_rows(u, sizeof(float)), pgloss_strided3_out_rows(&s->wi, sizeof(float)),
+                            pgloss_strided_out_of(&s->pdf, sizeof(float)),
+                            pgloss_strided3_out_rows(&s->weight, sizeof(float)), NULL, NULL);
         break;
     }
     case P_PLAIN: plain_sample(m, o, u, s); break;
@@ -179,16 +179,18 @@ static float batch16(int sample, int latency)
             ix[j] = g_wi[b + j].x, iy[j] = g_wi[b + j].y, iz[j] = g_wi[b + j].z;
             u0[j] = g_u[b + j][0], u1[j] = g_u[b + j][1], u2[j] = g_u[b + j][2];
         }
-        const pgloss_vec3_array ao = {ox, oy, oz}, ai = {ix, iy, iz};
-        const pgloss_rgb_out fo = {fr, fg, fb};
+        const size_t F = sizeof(float);
+        const pgloss_strided3 ao = pgloss_strided3_soa(ox, oy, oz, F), ai = pgloss_strided3_soa(ix, iy, iz, F);
+        const pgloss_strided3_out fo = pgloss_strided3_out_soa(fr, fg, fb, F);
+        const pgloss_strided_out po = pgloss_strided_out_of(p, F);
         if (sample) {
-            const pgloss_vec3_out w = {wx, wy, wz};
-            pgloss_sample_batch(m, PGLOSS_LOBE_ALL, 16, ao, u0, u1, u2, w, p, fo, NULL);
+            pgloss_sample_batch(NULL, m, NULL, PGLOSS_LOBE_ALL, 16, ao, pgloss_strided3_soa(u0, u1, u2, F),
+                                pgloss_strided3_out_soa(wx, wy, wz, F), po, fo, NULL, NULL);
             if (latency)
                 for (int j = 0; j < 16; ++j)
                     ox[j] = wx[j], oy[j] = wy[j], oz[j] = fabsf(wz[j]);
         } else {
-            pgloss_eval_pdf_batch(m, PGLOSS_LOBE_ALL, 16, ao, ai, fo, p);
+            pgloss_eval_pdf_batch(NULL, m, NULL, PGLOSS_LOBE_ALL, 16, ao, ai, fo, po, NULL);
         }
         acc += fr[0] + p[15];
     }

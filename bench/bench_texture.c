@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The pgloss authors
 // SPDX-License-Identifier: Apache-2.0
 /* pgloss texture benchmark: whole textures of paints through the batched entry points of
- * pgloss/batch_materials.h and pgloss/perceptual_batch.h, as paired comparisons (the two
+ * pgloss/batch.h and pgloss/perceptual_batch.h, as paired comparisons (the two
  * sides of a row run alternately, repetition by repetition, and the median of each is
  * reported, so that a loaded host moves both alike):
  *   - eval_pdf with one material per element against the uniform-material batch (target <= 2x);
@@ -149,111 +149,104 @@ static void make_data(data *D, size_t n)
     pgloss_material_init(&D->mat, &p);
     D->opt.precision = PGLOSS_PRECISION_FLOAT;
     D->opt.isa = PGLOSS_ISA_AUTO;
+    D->opt.scalar = PGLOSS_FLOAT32;
 }
 
-static pgloss_material_array mats_f(const data *D)
+#define F32 sizeof(float)
+#define F64 sizeof(double)
+static const pgloss_batch_options f64_opt = {PGLOSS_PRECISION_FLOAT, PGLOSS_ISA_AUTO, PGLOSS_FLOAT64};
+
+/* The texture's materials as strided columns: the float ones (m), else the double ones. */
+static pgloss_physical_array mats_of(float *const *m, double *const *md)
 {
-    const pgloss_material_array m = {D->m[0], D->m[1], D->m[2], D->m[3], D->m[4], D->m[5], PGLOSS_NORM_WARD};
-    return m;
+    const size_t z = m ? F32 : F64;
+    const void *c[6];
+    for (int k = 0; k < 6; ++k)
+        c[k] = m ? (const void *)m[k] : (const void *)md[k];
+    const pgloss_physical_array a = {pgloss_strided3_soa(c[0], c[1], c[2], z), pgloss_strided_of(c[3], (ptrdiff_t)z),
+                                     pgloss_strided_of(c[4], (ptrdiff_t)z), pgloss_strided_of(c[5], (ptrdiff_t)z),
+                                     PGLOSS_NORM_WARD};
+    return a;
 }
 
-static pgloss_physical_array mats_d(const data *D)
+/* eval_pdf of the texture: float or double, one material (D->mat) or one per element. */
+static void eval_texture(data *D, int f64, int per_element)
 {
-    const pgloss_physical_array m = {D->md[0], D->md[1], D->md[2], D->md[3], D->md[4], D->md[5], PGLOSS_NORM_WARD};
-    return m;
+    const size_t z = f64 ? F64 : F32;
+    const void *o[3], *i[3];
+    void *f[3];
+    for (int k = 0; k < 3; ++k) {
+        o[k] = f64 ? (const void *)D->od[k] : (const void *)D->o[k];
+        i[k] = f64 ? (const void *)D->id[k] : (const void *)D->i[k];
+    }
+    f[0] = f64 ? (void *)D->dr : (void *)D->fr;
+    f[1] = f64 ? (void *)D->dg : (void *)D->fg;
+    f[2] = f64 ? (void *)D->db : (void *)D->fb;
+    const pgloss_physical_array m = mats_of(f64 ? NULL : D->m, D->md);
+    pgloss_eval_pdf_batch(f64 ? &f64_opt : &D->opt, per_element ? NULL : &D->mat, per_element ? &m : NULL,
+                          PGLOSS_LOBE_ALL, D->n, pgloss_strided3_soa(o[0], o[1], o[2], z),
+                          pgloss_strided3_soa(i[0], i[1], i[2], z), pgloss_strided3_out_soa(f[0], f[1], f[2], z),
+                          pgloss_strided_out_of(f64 ? (void *)D->dpdf : (void *)D->pdf, (ptrdiff_t)z), NULL);
 }
 
-static void run_uniform_f(void *ctx)
+/* sample of the texture, as eval_texture. */
+static void sample_texture(data *D, int f64, int per_element)
 {
-    data *D = ctx;
-    const pgloss_vec3_array wo = {D->o[0], D->o[1], D->o[2]}, wi = {D->i[0], D->i[1], D->i[2]};
-    const pgloss_rgb_out f = {D->fr, D->fg, D->fb};
-    pgloss_eval_pdf_batch_ex(&D->opt, &D->mat, PGLOSS_LOBE_ALL, D->n, wo, wi, f, D->pdf);
+    const size_t z = f64 ? F64 : F32;
+    const void *o[3], *u[3];
+    void *w[3], *g[3];
+    for (int k = 0; k < 3; ++k) {
+        o[k] = f64 ? (const void *)D->od[k] : (const void *)D->o[k];
+        u[k] = f64 ? (const void *)D->ud[k] : (const void *)D->u[k];
+        w[k] = f64 ? (void *)D->swd[k] : (void *)D->sw[k];
+    }
+    g[0] = f64 ? (void *)D->dr : (void *)D->fr;
+    g[1] = f64 ? (void *)D->dg : (void *)D->fg;
+    g[2] = f64 ? (void *)D->db : (void *)D->fb;
+    const pgloss_physical_array m = mats_of(f64 ? NULL : D->m, D->md);
+    pgloss_sample_batch(f64 ? &f64_opt : &D->opt, per_element ? NULL : &D->mat, per_element ? &m : NULL,
+                        PGLOSS_LOBE_ALL, D->n, pgloss_strided3_soa(o[0], o[1], o[2], z),
+                        pgloss_strided3_soa(u[0], u[1], u[2], z), pgloss_strided3_out_soa(w[0], w[1], w[2], z),
+                        pgloss_strided_out_of(f64 ? (void *)D->dpdf : (void *)D->pdf, (ptrdiff_t)z),
+                        pgloss_strided3_out_soa(g[0], g[1], g[2], z), D->lobe, NULL);
 }
 
-static void run_materials_f(void *ctx)
+static void run_uniform_f(void *ctx) { eval_texture(ctx, 0, 0); }
+static void run_materials_f(void *ctx) { eval_texture(ctx, 0, 1); }
+static void run_uniform_d(void *ctx) { eval_texture(ctx, 1, 0); }
+static void run_materials_d(void *ctx) { eval_texture(ctx, 1, 1); }
+static void run_sample_f(void *ctx) { sample_texture(ctx, 0, 0); }
+static void run_sample_d(void *ctx) { sample_texture(ctx, 1, 0); }
+static void run_sample_materials_f(void *ctx) { sample_texture(ctx, 0, 1); }
+static void run_sample_materials_d(void *ctx) { sample_texture(ctx, 1, 1); }
+
+/* ---- perceptual ---------------------------------------------------------------------------- */
+
+static pgloss_perceptual_array perceptual_of(const data *D)
 {
-    data *D = ctx;
-    const pgloss_vec3_array wo = {D->o[0], D->o[1], D->o[2]}, wi = {D->i[0], D->i[1], D->i[2]};
-    const pgloss_rgb_out f = {D->fr, D->fg, D->fb};
-    const pgloss_material_array m = mats_f(D);
-    pgloss_eval_pdf_batch_materials_ex(&D->opt, &m, PGLOSS_LOBE_ALL, D->n, wo, wi, f, D->pdf, NULL);
+    const pgloss_perceptual_array q = {pgloss_strided3_soa(D->L, D->a, D->b, F64), pgloss_strided_of(D->c, F64),
+                                       pgloss_strided_of(D->d, F64)};
+    return q;
 }
 
-static void run_uniform_d(void *ctx)
-{
-    data *D = ctx;
-    const pgloss_vec3_array_d wo = {D->od[0], D->od[1], D->od[2]}, wi = {D->id[0], D->id[1], D->id[2]};
-    const pgloss_rgb_out_d f = {D->dr, D->dg, D->db};
-    pgloss_eval_pdf_batch_d_ex(&D->opt, &D->mat, PGLOSS_LOBE_ALL, D->n, wo, wi, f, D->dpdf, NULL);
-}
-
-static void run_materials_d(void *ctx)
-{
-    data *D = ctx;
-    const pgloss_vec3_array_d wo = {D->od[0], D->od[1], D->od[2]}, wi = {D->id[0], D->id[1], D->id[2]};
-    const pgloss_rgb_out_d f = {D->dr, D->dg, D->db};
-    const pgloss_physical_array m = mats_d(D);
-    pgloss_eval_pdf_batch_materials_d_ex(&D->opt, &m, PGLOSS_LOBE_ALL, D->n, wo, wi, f, D->dpdf, NULL);
-}
-
-static void run_sample_f(void *ctx)
-{
-    data *D = ctx;
-    const pgloss_vec3_array wo = {D->o[0], D->o[1], D->o[2]};
-    const pgloss_vec3_out wi = {D->sw[0], D->sw[1], D->sw[2]};
-    const pgloss_rgb_out w = {D->fr, D->fg, D->fb};
-    pgloss_sample_batch_ex(&D->opt, &D->mat, PGLOSS_LOBE_ALL, D->n, wo, D->u[0], D->u[1], D->u[2], wi,
-                           D->pdf, w, D->lobe);
-}
-
-static void run_sample_d(void *ctx)
-{
-    data *D = ctx;
-    const pgloss_vec3_array_d wo = {D->od[0], D->od[1], D->od[2]};
-    const pgloss_vec3_out_d wi = {D->swd[0], D->swd[1], D->swd[2]};
-    const pgloss_rgb_out_d w = {D->dr, D->dg, D->db};
-    pgloss_sample_batch_d_ex(&D->opt, &D->mat, PGLOSS_LOBE_ALL, D->n, wo, D->ud[0], D->ud[1], D->ud[2],
-                             wi, D->dpdf, w, D->lobe, NULL);
-}
-
-static void run_sample_materials_f(void *ctx)
-{
-    data *D = ctx;
-    const pgloss_vec3_array wo = {D->o[0], D->o[1], D->o[2]};
-    const pgloss_vec3_out wi = {D->sw[0], D->sw[1], D->sw[2]};
-    const pgloss_rgb_out w = {D->fr, D->fg, D->fb};
-    const pgloss_material_array m = mats_f(D);
-    pgloss_sample_batch_materials_ex(&D->opt, &m, PGLOSS_LOBE_ALL, D->n, wo, D->u[0], D->u[1], D->u[2],
-                                     wi, D->pdf, w, D->lobe, NULL);
-}
-
-static void run_sample_materials_d(void *ctx)
-{
-    data *D = ctx;
-    const pgloss_vec3_array_d wo = {D->od[0], D->od[1], D->od[2]};
-    const pgloss_vec3_out_d wi = {D->swd[0], D->swd[1], D->swd[2]};
-    const pgloss_rgb_out_d w = {D->dr, D->dg, D->db};
-    const pgloss_physical_array m = mats_d(D);
-    pgloss_sample_batch_materials_d_ex(&D->opt, &m, PGLOSS_LOBE_ALL, D->n, wo, D->ud[0], D->ud[1],
-                                       D->ud[2], wi, D->dpdf, w, D->lobe, NULL);
-}
-
-/* ---- perceptual ------------------------------------------------------------------------- */
+static pgloss_strided col(const double *p) { return pgloss_strided_of(p, F64); }
+static pgloss_strided_out col_out(double *p) { return pgloss_strided_out_of(p, F64); }
 
 static void run_pfp(void *ctx)
 {
     data *D = ctx;
-    const pgloss_perceptual_array q = {D->L, D->a, D->b, D->c, D->d};
-    const pgloss_physical_out p = {D->out[0], D->out[1], D->out[2], D->out[3], D->out[4], NULL};
-    pgloss_physical_from_perceptual_batch(D->n, q, PGLOSS_NORM_WARD, p, D->status);
+    const pgloss_perceptual_array q = perceptual_of(D);
+    const pgloss_physical_array_out p = {pgloss_strided3_out_soa(D->out[0], D->out[1], D->out[2], F64),
+                                         col_out(D->out[3]), col_out(D->out[4]), {NULL, 0}};
+    pgloss_physical_from_perceptual_batch(D->n, &q, PGLOSS_NORM_WARD, PGLOSS_COLOR_SPACE_LINEAR_REC709, &p,
+                                          D->status);
 }
 
 static void run_check_perceptual(void *ctx)
 {
     data *D = ctx;
-    const pgloss_perceptual_array q = {D->L, D->a, D->b, D->c, D->d};
-    pgloss_check_perceptual_batch(D->n, q, D->status);
+    const pgloss_perceptual_array q = perceptual_of(D);
+    pgloss_check_perceptual_batch(D->n, &q, PGLOSS_COLOR_SPACE_LINEAR_REC709, D->status);
 }
 
 /* eqs. 6-7 and CIELAB -> linear Rec. 709 without a check: what a numpy user writes. */
@@ -281,8 +274,8 @@ static void run_gfp(void *ctx)
 {
     data *D = ctx;
     /* ρd: the texture's diffuse red channel as an achromatic ρd, ρs, α */
-    pgloss_gloss_from_physical_batch(D->n, D->md[0], D->md[3], D->md[4], D->out[0], D->out[1], D->out[2],
-                                     D->status);
+    pgloss_gloss_from_physical_batch(D->n, col(D->md[0]), col(D->md[3]), col(D->md[4]), col_out(D->out[0]),
+                                     col_out(D->out[1]), col_out(D->out[2]), D->status);
 }
 
 static void run_bare_gfp(void *ctx)
@@ -299,50 +292,52 @@ static void run_bare_gfp(void *ctx)
 static void run_rgb_from_lab(void *ctx)
 {
     data *D = ctx;
-    const pgloss_lab_array lab = {D->L, D->a, D->b};
-    const pgloss_rgb_out_d rgb = {D->out[0], D->out[1], D->out[2]};
-    pgloss_rgb_from_lab_batch(D->n, lab, rgb, D->status);
+    pgloss_rgb_from_lab_batch(D->n, pgloss_strided3_soa(D->L, D->a, D->b, F64), PGLOSS_COLOR_SPACE_LINEAR_REC709,
+                              pgloss_strided3_out_soa(D->out[0], D->out[1], D->out[2], F64), D->status);
 }
 
 static void run_perceptual_from_physical(void *ctx)
 {
     data *D = ctx;
-    const pgloss_physical_array m = mats_d(D);
-    const pgloss_perceptual_out q = {D->out[0], D->out[1], D->out[2], D->out[3], D->out[4]};
-    pgloss_perceptual_from_physical_batch(D->n, &m, q, D->status);
+    const pgloss_physical_array m = mats_of(NULL, D->md);
+    const pgloss_perceptual_array_out q = {pgloss_strided3_out_soa(D->out[0], D->out[1], D->out[2], F64),
+                                           col_out(D->out[3]), col_out(D->out[4])};
+    pgloss_perceptual_from_physical_batch(D->n, &m, PGLOSS_COLOR_SPACE_LINEAR_REC709, &q, D->status);
 }
 
 static void run_lab_from_rgb(void *ctx)
 {
     data *D = ctx;
-    const pgloss_rgb_array_d rgb = {D->md[0], D->md[1], D->md[2]};
-    const pgloss_lab_out lab = {D->out[0], D->out[1], D->out[2]};
-    pgloss_lab_from_rgb_batch(D->n, rgb, lab, D->status);
+    pgloss_lab_from_rgb_batch(D->n, pgloss_strided3_soa(D->md[0], D->md[1], D->md[2], F64),
+                              PGLOSS_COLOR_SPACE_LINEAR_REC709,
+                              pgloss_strided3_out_soa(D->out[0], D->out[1], D->out[2], F64), D->status);
 }
 
 static void run_check_physical(void *ctx)
 {
     data *D = ctx;
-    const pgloss_physical_array m = mats_d(D);
+    const pgloss_physical_array m = mats_of(NULL, D->md);
     pgloss_check_physical_batch(D->n, &m, D->status);
 }
 
 static void run_physical_from_gloss(void *ctx)
 {
     data *D = ctx;
-    pgloss_physical_from_gloss_batch(D->n, D->L, D->c, D->d, D->out[0], D->out[1], D->out[2], D->status);
+    pgloss_physical_from_gloss_batch(D->n, col(D->L), col(D->c), col(D->d), col_out(D->out[0]), col_out(D->out[1]),
+                                     col_out(D->out[2]), D->status);
 }
 
 static void run_envelope(void *ctx)
 {
     data *D = ctx;
-    pgloss_envelope_contrast_batch(D->n, D->L, D->out[0], D->status);
+    pgloss_envelope_contrast_batch(D->n, col(D->L), col_out(D->out[0]), D->status);
 }
 
 static void run_match_gloss(void *ctx)
 {
     data *D = ctx;
-    pgloss_match_gloss_batch(D->n, D->md[0], D->md[3], D->L, D->out[0], D->out[1], D->status);
+    pgloss_match_gloss_batch(D->n, col(D->md[0]), col(D->md[3]), col(D->L), col_out(D->out[0]), col_out(D->out[1]),
+                             D->status);
 }
 
 int main(int argc, char **argv)

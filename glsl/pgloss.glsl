@@ -78,7 +78,7 @@ precision highp int;
 #endif
 
 #define PGLOSS_VERSION_MAJOR 0
-#define PGLOSS_VERSION_MINOR 1
+#define PGLOSS_VERSION_MINOR 2
 #define PGLOSS_VERSION_PATCH 0
 
 /* ---- status codes (pgloss/status.h) ------------------------------------------------- */

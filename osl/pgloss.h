@@ -52,9 +52,9 @@
 #define PGLOSS_OSL_H
 
 #define PGLOSS_VERSION_MAJOR 0
-#define PGLOSS_VERSION_MINOR 1
+#define PGLOSS_VERSION_MINOR 2
 #define PGLOSS_VERSION_PATCH 0
-#define PGLOSS_VERSION_STRING "0.1.0"
+#define PGLOSS_VERSION_STRING "0.2.0"
 
 // ---------------------------------------------------------------------------------------
 // status.h

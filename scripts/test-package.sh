@@ -110,7 +110,7 @@ find_package_consumer() { # TYPE
   fi
 }
 
-# find_package(pgloss REQUEST) in a minimal project: is the installed 0.1 found?
+# find_package(pgloss REQUEST) in a minimal project: is the installed version found?
 find_version() { # REQUEST EXPECT(found|not-found)
   local probe=$work/version-probe out
   mkdir -p "$probe"

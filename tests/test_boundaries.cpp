@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-#include "pgloss/pgloss.h"
+#include "batch_util.h"
 
 namespace {
 
@@ -107,11 +107,11 @@ TEST(Boundaries, GrazingMirrorDirectionsAgreeWithTheReference) {
             for (pgloss_precision tier : {PGLOSS_PRECISION_FLOAT, PGLOSS_PRECISION_FAST})
                 for (pgloss_isa isa : {PGLOSS_ISA_BASELINE, PGLOSS_ISA_AVX2, PGLOSS_ISA_AVX512}) {
                     if (!pgloss_isa_supported(isa)) continue;  // test_isa reports which ISAs ran
-                    const pgloss_batch_options opt{tier, isa};
+                    const pgloss_batch_options opt = batch_options(tier, isa);
                     std::vector<float> fr(n), fg(n), fb(n), pd(n);
-                    ASSERT_EQ(pgloss_eval_pdf_batch_ex(&opt, &m, PGLOSS_LOBE_ALL, n, {ox.data(), oy.data(), oz.data()},
-                                                       {ix.data(), iy.data(), iz.data()}, {fr.data(), fg.data(), fb.data()},
-                                                       pd.data()),
+                    ASSERT_EQ(pgloss_eval_pdf_batch(&opt, &m, nullptr, PGLOSS_LOBE_ALL, n, soa(ox.data(), oy.data(), oz.data()),
+                                                    soa(ix.data(), iy.data(), iz.data()),
+                                                    soa_out(fr.data(), fg.data(), fb.data()), col_out(pd.data()), nullptr),
                               PGLOSS_OK);
                     for (size_t k = 0; k < n; ++k) {
                         ASSERT_NEAR(fr[k], f.r, 1e-5 * f.r) << norm << " " << c << " " << tier << " " << isa;
@@ -147,7 +147,9 @@ TEST(Boundaries, ReciprocityIsExactForAnisotropicLobesAtGrazingAngles) {
                 const float X[2] = {a.x, b.x}, Y[2] = {a.y, b.y}, Z[2] = {a.z, b.z};
                 const float X2[2] = {b.x, a.x}, Y2[2] = {b.y, a.y}, Z2[2] = {b.z, a.z};
                 float R[2], G[2], B[2];
-                ASSERT_EQ(pgloss_eval_batch(&m, PGLOSS_LOBE_ALL, 2, {X, Y, Z}, {X2, Y2, Z2}, {R, G, B}), PGLOSS_OK);
+                ASSERT_EQ(pgloss_eval_pdf_batch(nullptr, &m, nullptr, PGLOSS_LOBE_ALL, 2, soa(X, Y, Z), soa(X2, Y2, Z2),
+                                                soa_out(R, G, B), no_out(), nullptr),
+                          PGLOSS_OK);
                 ASSERT_EQ(R[0], R[1]) << ax << " " << ay << " " << k;
                 ++checked;
             }

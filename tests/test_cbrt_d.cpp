@@ -16,41 +16,24 @@
 #include <random>
 #include <vector>
 
+#include "batch_util.h"
 #include "cbrt_d.h"
-#include "pgloss/batch.h"
-#include "pgloss/perceptual_batch.h"
-#include "pgloss/pgloss.h"
+#include "perceptual_batch_isa.h"
 #include "test_ulp.h"
 
 // The per-ISA loops: internal symbols of the static library, weak so that a build without
 // the AVX2/AVX-512 objects (PGLOSS_ISA_DISPATCH=OFF, another architecture) still links.
 extern "C" {
-#define DECLARE_LOOPS(isa)                                                                          \
-    __attribute__((weak)) void pgloss__gloss_from_physical_loop_##isa(                              \
-        size_t, const double *, const double *, const double *, double *, double *, double *,     \
-        signed char *);                                                                             \
-    __attribute__((weak)) void pgloss__physical_from_perceptual_loop_##isa(                         \
-        size_t, pgloss_perceptual_array, const double *, pgloss_physical_out, signed char *);       \
-    __attribute__((weak)) void pgloss__physical_from_gloss_loop_##isa(                              \
-        size_t, const double *, const double *, const double *, double *, double *, double *,     \
-        signed char *);                                                                             \
-    __attribute__((weak)) void pgloss__envelope_contrast_loop_##isa(size_t, const double *,         \
-                                                                    double *, signed char *);       \
-    __attribute__((weak)) void pgloss__match_gloss_loop_##isa(                                      \
-        size_t, const double *, const double *, const double *, double *, double *, signed char *); \
-    __attribute__((weak)) void pgloss__check_physical_loop_##isa(size_t, pgloss_physical_array,     \
-                                                                 double, signed char *);            \
-    __attribute__((weak)) void pgloss__check_perceptual_loop_##isa(                                 \
-        size_t, pgloss_perceptual_array, const double *, signed char *);                            \
-    __attribute__((weak)) void pgloss__perceptual_from_physical_loop_##isa(                         \
-        size_t, pgloss_physical_array, const double *, pgloss_perceptual_out, signed char *);       \
-    __attribute__((weak)) void pgloss__rgb_from_lab_loop_##isa(                                     \
-        size_t, pgloss_lab_array, const double *, pgloss_rgb_out_d, signed char *);                 \
-    __attribute__((weak)) void pgloss__lab_from_rgb_loop_##isa(                                     \
-        size_t, pgloss_rgb_array_d, const double *, pgloss_lab_out, signed char *);
-DECLARE_LOOPS(baseline)
-DECLARE_LOOPS(avx2)
-DECLARE_LOOPS(avx512)
+#define DECLARE_LOOP(name, isa)                                                                    \
+    __attribute__((weak)) void pgloss__##name##_loop_##isa(size_t, const double *const *,          \
+                                                           double *const *, const pgloss__pargs *, \
+                                                           signed char *);
+#define DECLARE_BASELINE(name) DECLARE_LOOP(name, baseline)
+#define DECLARE_AVX2(name) DECLARE_LOOP(name, avx2)
+#define DECLARE_AVX512(name) DECLARE_LOOP(name, avx512)
+PGLOSS__PERCEPTUAL_LOOPS(DECLARE_BASELINE)
+PGLOSS__PERCEPTUAL_LOOPS(DECLARE_AVX2)
+PGLOSS__PERCEPTUAL_LOOPS(DECLARE_AVX512)
 const double *pgloss__from_xyz_matrix(pgloss_color_space space);
 const double *pgloss__to_xyz_matrix(pgloss_color_space space);
 }
@@ -166,24 +149,32 @@ TEST(CbrtD, LightnessAgainstLongDouble) {
 struct Isa {
     const char *name;
     pgloss_isa isa;
-    decltype(&pgloss__gloss_from_physical_loop_baseline) gloss;
-    decltype(&pgloss__physical_from_perceptual_loop_baseline) physical;
-    decltype(&pgloss__physical_from_gloss_loop_baseline) from_gloss;
-    decltype(&pgloss__envelope_contrast_loop_baseline) envelope;
-    decltype(&pgloss__match_gloss_loop_baseline) match;
-    decltype(&pgloss__check_physical_loop_baseline) check_physical;
-    decltype(&pgloss__check_perceptual_loop_baseline) check_perceptual;
-    decltype(&pgloss__perceptual_from_physical_loop_baseline) to_perceptual;
-    decltype(&pgloss__rgb_from_lab_loop_baseline) rgb_from_lab;
-    decltype(&pgloss__lab_from_rgb_loop_baseline) lab_from_rgb;
+    pgloss__perceptual_loop gloss, physical, from_gloss, envelope, match, check_physical, check_perceptual,
+        to_perceptual, rgb_from_lab, lab_from_rgb;
 };
+
+// A loop over n elements, chunk by chunk as perceptual_batch.c runs it (columns in, out).
+void run(pgloss__perceptual_loop f, size_t n, const std::vector<const double *> &in, const std::vector<double *> &out,
+         const double *M, double norm_ok, signed char *st) {
+    const pgloss__pargs a{M, norm_ok};
+    for (size_t base = 0; base < n; base += PGLOSS__PCHUNK) {
+        const double *ic[6];
+        double *oc[6];
+        size_t k = 0;
+        for (const double *p : in) ic[k++] = p + base;
+        k = 0;
+        for (double *p : out) oc[k++] = p + base;
+        f(std::min<size_t>(PGLOSS__PCHUNK, n - base), ic, oc, &a, st + base);
+    }
+}
 
 std::vector<Isa> isas() {
     // A call through the public batch links perceptual_batch.c, and with it the loops it
     // dispatches to (a weak reference alone pulls no member out of a static library).
     double x = 0.5, L, c, d;
     signed char st;
-    EXPECT_EQ(pgloss_gloss_from_physical_batch(1, &x, &x, &x, &L, &c, &d, &st), PGLOSS_WARN_ALPHA_UNTRUSTED);
+    EXPECT_EQ(pgloss_gloss_from_physical_batch(1, col(&x), col(&x), col(&x), col_out(&L), col_out(&c), col_out(&d), &st),
+              PGLOSS_WARN_ALPHA_UNTRUSTED);
 #define ISA_LOOPS(isa)                                                                                    \
     pgloss__gloss_from_physical_loop_##isa, pgloss__physical_from_perceptual_loop_##isa,                    \
         pgloss__physical_from_gloss_loop_##isa, pgloss__envelope_contrast_loop_##isa,                       \
@@ -224,7 +215,7 @@ TEST(PerceptualLoops, GlossFromPhysicalEqualsScalarOnEveryIsa) {
             std::vector<signed char> st(n);
             for (size_t j = 0; j < n; ++j)
                 rd[j] = pick(rng, 0.0, 1.0), rs[j] = pick(rng, 0.0, 0.2), al[j] = pick(rng, 0.0, 0.3);
-            I.gloss(n, rd.data(), rs.data(), al.data(), L.data(), c.data(), d.data(), st.data());
+            run(I.gloss, n, {rd.data(), rs.data(), al.data()}, {L.data(), c.data(), d.data()}, nullptr, 0, st.data());
             for (size_t j = 0; j < n; ++j) {
                 double l, cc, dd;
                 const pgloss_status want = pgloss_gloss_from_physical(rd[j], rs[j], al[j], &l, &cc, &dd);
@@ -271,7 +262,7 @@ TEST(PerceptualLoops, GlossFromPhysicalPlainChunksEqualScalarOnEveryIsa) {
                 double *col[] = {rd.data(), rs.data(), al.data()};
                 col[rng() % 3][j] = breakers[rng() % (sizeof breakers / sizeof *breakers)];
             }
-            I.gloss(n, rd.data(), rs.data(), al.data(), L.data(), c.data(), d.data(), st.data());
+            run(I.gloss, n, {rd.data(), rs.data(), al.data()}, {L.data(), c.data(), d.data()}, nullptr, 0, st.data());
             for (size_t j = 0; j < n; ++j) {
                 double l, cc, dd;
                 const pgloss_status want = pgloss_gloss_from_physical(rd[j], rs[j], al[j], &l, &cc, &dd);
@@ -299,9 +290,9 @@ TEST(PerceptualLoops, PhysicalFromPerceptualEqualsScalarOnEveryIsa) {
                     L[j] = pick(rng, -5.0, 105.0), a[j] = pick(rng, -150.0, 150.0), b[j] = pick(rng, -150.0, 150.0);
                     c[j] = pick(rng, -0.01, 0.2), d[j] = pick(rng, 0.7, 1.01);
                 }
-                const pgloss_perceptual_array q{L.data(), a.data(), b.data(), c.data(), d.data()};
-                const pgloss_physical_out p{r.data(), g.data(), bl.data(), s.data(), ax.data(), ay.data()};
-                I.physical(n, q, pgloss__from_xyz_matrix(sp), p, st.data());
+                run(I.physical, n, {L.data(), a.data(), b.data(), c.data(), d.data()},
+                    {r.data(), g.data(), bl.data(), s.data(), ax.data(), ay.data()}, pgloss__from_xyz_matrix(sp), 0,
+                    st.data());
                 for (size_t j = 0; j < n; ++j) {
                     const pgloss_perceptual v{L[j], a[j], b[j], c[j], d[j]};
                     pgloss_physical o;
@@ -354,7 +345,7 @@ TEST(PerceptualLoops, PhysicalFromGlossEqualsScalarOnEveryIsa) {
         std::vector<signed char> st(n);
         for (size_t j = 0; j < n; ++j)
             L[j] = pick(rng, -5.0, 105.0), c[j] = pick(rng, -0.01, 0.2), d[j] = pick(rng, 0.7, 1.01);
-        I.from_gloss(n, L.data(), c.data(), d.data(), rd.data(), rs.data(), al.data(), st.data());
+        run(I.from_gloss, n, {L.data(), c.data(), d.data()}, {rd.data(), rs.data(), al.data()}, nullptr, 0, st.data());
         for (size_t j = 0; j < n; ++j) {
             double x, y, z;
             const pgloss_status want = pgloss_physical_from_gloss(L[j], c[j], d[j], &x, &y, &z);
@@ -376,7 +367,7 @@ TEST(PerceptualLoops, EnvelopeEqualsScalarOnEveryIsa) {
         std::vector<double> L(n), cm(n);
         std::vector<signed char> st(n);
         for (size_t j = 0; j < n; ++j) L[j] = pick(rng, -5.0, 105.0);
-        I.envelope(n, L.data(), cm.data(), st.data());
+        run(I.envelope, n, {L.data()}, {cm.data()}, nullptr, 0, st.data());
         for (size_t j = 0; j < n; ++j) {
             double x;
             const pgloss_status want = pgloss_envelope_contrast(L[j], &x);
@@ -397,7 +388,7 @@ TEST(PerceptualLoops, MatchGlossEqualsScalarOnEveryIsa) {
         std::vector<signed char> st(n);
         for (size_t j = 0; j < n; ++j)
             rd[j] = pick(rng, -0.01, 1.0), rs[j] = pick(rng, -0.01, 0.4), L[j] = pick(rng, -5.0, 105.0);
-        I.match(n, rd.data(), rs.data(), L.data(), od.data(), os.data(), st.data());
+        run(I.match, n, {rd.data(), rs.data(), L.data()}, {od.data(), os.data()}, nullptr, 0, st.data());
         for (size_t j = 0; j < n; ++j) {
             double x, y;
             const pgloss_status want = pgloss_match_gloss(rd[j], rs[j], L[j], &x, &y);
@@ -425,8 +416,9 @@ struct Sets {
     pgloss_physical at(size_t j, bool iso, pgloss_normalization nm) const {
         return pgloss_physical{{r[j], g[j], b[j]}, s[j], ax[j], iso ? ax[j] : ay[j], nm};
     }
-    pgloss_physical_array array(bool iso, pgloss_normalization nm) const {
-        return pgloss_physical_array{r.data(), g.data(), b.data(), s.data(), ax.data(), iso ? nullptr : ay.data(), nm};
+    // the six columns (isotropic: αx twice, as perceptual_batch.c passes it)
+    std::vector<const double *> cols(bool iso) const {
+        return {r.data(), g.data(), b.data(), s.data(), ax.data(), iso ? ax.data() : ay.data()};
     }
 };
 
@@ -439,7 +431,7 @@ TEST(PerceptualLoops, CheckPhysicalEqualsScalarOnEveryIsa) {
             const bool iso = variant == 1;
             const auto nm = variant == 2 ? static_cast<pgloss_normalization>(7) : PGLOSS_NORM_WARD_DUR;
             std::vector<signed char> st(n);
-            I.check_physical(n, P.array(iso, nm), variant == 2 ? 0.0 : 1.0, st.data());
+            run(I.check_physical, n, P.cols(iso), {}, nullptr, variant == 2 ? 0.0 : 1.0, st.data());
             for (size_t j = 0; j < n; ++j) {
                 const pgloss_physical v = P.at(j, iso, nm);
                 const pgloss_status want = pgloss_check_physical(&v);
@@ -465,8 +457,8 @@ TEST(PerceptualLoops, PerceptualFromPhysicalEqualsScalarOnEveryIsa) {
             const Sets P(rng, n);
             std::vector<double> L(n), a(n), b(n), c(n), d(n);
             std::vector<signed char> st(n);
-            I.to_perceptual(n, P.array(iso, PGLOSS_NORM_WARD), pgloss__to_xyz_matrix(sp),
-                            pgloss_perceptual_out{L.data(), a.data(), b.data(), c.data(), d.data()}, st.data());
+            run(I.to_perceptual, n, P.cols(iso), {L.data(), a.data(), b.data(), c.data(), d.data()},
+                pgloss__to_xyz_matrix(sp), 0, st.data());
             for (size_t j = 0; j < n; ++j) {
                 const pgloss_physical v = P.at(j, iso, PGLOSS_NORM_WARD);
                 pgloss_perceptual o;
@@ -496,8 +488,8 @@ TEST(PerceptualLoops, CheckPerceptualEqualsScalarOnEveryIsa) {
                 L[j] = pick(rng, -5.0, 105.0), a[j] = pick(rng, -60.0, 60.0), b[j] = pick(rng, -60.0, 60.0);
                 c[j] = pick(rng, -0.01, 0.25), d[j] = pick(rng, 0.7, 1.01);
             }
-            I.check_perceptual(n, pgloss_perceptual_array{L.data(), a.data(), b.data(), c.data(), d.data()},
-                               pgloss__from_xyz_matrix(sp), st.data());
+            run(I.check_perceptual, n, {L.data(), a.data(), b.data(), c.data(), d.data()}, {},
+                pgloss__from_xyz_matrix(sp), 0, st.data());
             for (size_t j = 0; j < n; ++j) {
                 const pgloss_perceptual v{L[j], a[j], b[j], c[j], d[j]};
                 const pgloss_status want = pgloss_check_perceptual_ex(&v, sp);
@@ -524,11 +516,11 @@ TEST(PerceptualLoops, RgbFromLabAndLabFromRgbEqualScalarOnEveryIsa) {
             std::vector<signed char> st(n), st2(n);
             for (size_t j = 0; j < n; ++j)
                 L[j] = pick(rng, -5.0, 105.0), a[j] = pick(rng, -150.0, 150.0), b[j] = pick(rng, -150.0, 150.0);
-            I.rgb_from_lab(n, pgloss_lab_array{L.data(), a.data(), b.data()}, pgloss__from_xyz_matrix(sp),
-                           pgloss_rgb_out_d{R.data(), G.data(), B.data()}, st.data());
+            run(I.rgb_from_lab, n, {L.data(), a.data(), b.data()}, {R.data(), G.data(), B.data()},
+                pgloss__from_xyz_matrix(sp), 0, st.data());
             // back again, the GAMUT elements' negative channels included
-            I.lab_from_rgb(n, pgloss_rgb_array_d{R.data(), G.data(), B.data()}, pgloss__to_xyz_matrix(sp),
-                           pgloss_lab_out{L2.data(), a2.data(), b2.data()}, st2.data());
+            run(I.lab_from_rgb, n, {R.data(), G.data(), B.data()}, {L2.data(), a2.data(), b2.data()},
+                pgloss__to_xyz_matrix(sp), 0, st2.data());
             for (size_t j = 0; j < n; ++j) {
                 const double lab[3] = {L[j], a[j], b[j]}, rgb[3] = {R[j], G[j], B[j]};
                 double o[3], o2[3];
@@ -547,8 +539,8 @@ TEST(PerceptualLoops, RgbFromLabAndLabFromRgbEqualScalarOnEveryIsa) {
         std::vector<double> r(n), g(n), bb(n), L(n), a(n), b(n);
         std::vector<signed char> st(n);
         for (size_t j = 0; j < n; ++j) r[j] = pick(rng, 0.0, 1.0), g[j] = pick(rng, 0.0, 1.0), bb[j] = pick(rng, 0.0, 1.0);
-        I.lab_from_rgb(n, pgloss_rgb_array_d{r.data(), g.data(), bb.data()}, pgloss__to_xyz_matrix(PGLOSS_COLOR_SPACE_ACESCG),
-                       pgloss_lab_out{L.data(), a.data(), b.data()}, st.data());
+        run(I.lab_from_rgb, n, {r.data(), g.data(), bb.data()}, {L.data(), a.data(), b.data()},
+            pgloss__to_xyz_matrix(PGLOSS_COLOR_SPACE_ACESCG), 0, st.data());
         for (size_t j = 0; j < n; ++j) {
             const double rgb[3] = {r[j], g[j], bb[j]};
             double o[3];

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "batch_util.h"
 #include "test_common.h"
 
 using namespace pgt;
@@ -284,9 +285,9 @@ void draw(const Config &cfg, const pgloss_material &m, const Grid &g, std::size_
             u2[j] = rng.uniform_float();
         }
         const pgloss_status st =
-            pgloss_sample_batch(&m, cfg.mask, k, {ox.data(), oy.data(), oz.data()}, u0.data(), u1.data(), u2.data(),
-                                {wx.data(), wy.data(), wz.data()}, pdf.data(), {wr.data(), wg.data(), wb.data()},
-                                lobe.data());
+            pgloss_sample_batch(nullptr, &m, nullptr, cfg.mask, k, soa(ox.data(), oy.data(), oz.data()),
+                                soa(u0.data(), u1.data(), u2.data()), soa_out(wx.data(), wy.data(), wz.data()),
+                                col_out(pdf.data()), soa_out(wr.data(), wg.data(), wb.data()), lobe.data(), nullptr);
         if (st != PGLOSS_OK) ++o.bad_status;
         for (std::size_t j = 0; j < k; ++j) {
             const float w[3] = {wr[j], wg[j], wb[j]};

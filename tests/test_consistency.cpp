@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "batch_util.h"
 #include "test_common.h"
 
 using namespace pgt;
@@ -128,11 +129,13 @@ TEST(Consistency, EvalIsReciprocal) {
             const pgloss_vec3 a = random_dir(rng), b = random_dir(rng);
             ax[j] = a.x, ay[j] = a.y, az[j] = a.z, bx[j] = b.x, by[j] = b.y, bz[j] = b.z;
         }
-        ASSERT_EQ(pgloss_eval_batch(&m, PGLOSS_LOBE_ALL, nb, {ax.data(), ay.data(), az.data()},
-                                    {bx.data(), by.data(), bz.data()}, {r1.data(), g1.data(), b1.data()}),
+        ASSERT_EQ(pgloss_eval_pdf_batch(nullptr, &m, nullptr, PGLOSS_LOBE_ALL, nb, soa(ax.data(), ay.data(), az.data()),
+                                        soa(bx.data(), by.data(), bz.data()), soa_out(r1.data(), g1.data(), b1.data()),
+                                        no_out(), nullptr),
                   PGLOSS_OK);
-        ASSERT_EQ(pgloss_eval_batch(&m, PGLOSS_LOBE_ALL, nb, {bx.data(), by.data(), bz.data()},
-                                    {ax.data(), ay.data(), az.data()}, {r2.data(), g2.data(), b2.data()}),
+        ASSERT_EQ(pgloss_eval_pdf_batch(nullptr, &m, nullptr, PGLOSS_LOBE_ALL, nb, soa(bx.data(), by.data(), bz.data()),
+                                        soa(ax.data(), ay.data(), az.data()), soa_out(r2.data(), g2.data(), b2.data()),
+                                        no_out(), nullptr),
                   PGLOSS_OK);
         for (std::size_t j = 0; j < nb; ++j) ASSERT_EQ(r1[j], r2[j]) << norm_name(nm) << " " << j;
     }
@@ -203,14 +206,18 @@ TEST(Consistency, BatchMatchesScalar) {
             ox[j] = a.x, oy[j] = a.y, oz[j] = a.z, ix[j] = b.x, iy[j] = b.y, iz[j] = b.z;
             u0[j] = rng.uniform_float(), u1[j] = rng.uniform_float(), u2[j] = rng.uniform_float();
         }
-        const pgloss_vec3_array wo{ox.data(), oy.data(), oz.data()}, wi{ix.data(), iy.data(), iz.data()};
-        ASSERT_EQ(pgloss_eval_pdf_batch(&m, mask, nb, wo, wi, {fr.data(), fg.data(), fb.data()}, pdf.data()),
+        const pgloss_strided3 wo = soa(ox.data(), oy.data(), oz.data()), wi = soa(ix.data(), iy.data(), iz.data());
+        ASSERT_EQ(pgloss_eval_pdf_batch(nullptr, &m, nullptr, mask, nb, wo, wi, soa_out(fr.data(), fg.data(), fb.data()),
+                                        col_out(pdf.data()), nullptr),
                   PGLOSS_OK);
-        ASSERT_EQ(pgloss_eval_batch(&m, mask, nb, wo, wi, {fr2.data(), fg2.data(), fb2.data()}), PGLOSS_OK);
-        ASSERT_EQ(pgloss_pdf_batch(&m, mask, nb, wo, wi, pdf2.data()), PGLOSS_OK);
-        ASSERT_EQ(pgloss_sample_batch(&m, mask, nb, wo, u0.data(), u1.data(), u2.data(),
-                                      {wx.data(), wy.data(), wz.data()}, pdf2.data() /* overwritten below */,
-                                      {wr.data(), wg.data(), wb.data()}, lobe.data()),
+        ASSERT_EQ(pgloss_eval_pdf_batch(nullptr, &m, nullptr, mask, nb, wo, wi,
+                                        soa_out(fr2.data(), fg2.data(), fb2.data()), no_out(), nullptr),
+                  PGLOSS_OK);
+        ASSERT_EQ(pgloss_eval_pdf_batch(nullptr, &m, nullptr, mask, nb, wo, wi, no_out3(), col_out(pdf2.data()), nullptr),
+                  PGLOSS_OK);
+        ASSERT_EQ(pgloss_sample_batch(nullptr, &m, nullptr, mask, nb, wo, soa(u0.data(), u1.data(), u2.data()),
+                                      soa_out(wx.data(), wy.data(), wz.data()), col_out(pdf2.data()) /* overwritten below */,
+                                      soa_out(wr.data(), wg.data(), wb.data()), lobe.data(), nullptr),
                   PGLOSS_OK);
         for (std::size_t j = 0; j < nb; ++j) {
             const pgloss_vec3 a{ox[j], oy[j], oz[j]}, b{ix[j], iy[j], iz[j]};

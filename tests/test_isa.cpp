@@ -21,9 +21,7 @@
 #include <string>
 #include <vector>
 
-extern "C" {
-#include "pgloss/pgloss.h"
-}
+#include "batch_util.h"
 #include "pgloss/inline.h"
 
 namespace {
@@ -89,16 +87,17 @@ struct Out {
 Out run(const Data &d, const pgloss_material &m, pgloss_batch_options opt, bool sample)
 {
     Out o(d.n);
-    const pgloss_vec3_array wo{d.ox.data(), d.oy.data(), d.oz.data()};
-    const pgloss_vec3_array wi{d.ix.data(), d.iy.data(), d.iz.data()};
-    const pgloss_rgb_out f{o.fr.data(), o.fg.data(), o.fb.data()};
+    const pgloss_strided3 wo = soa(d.ox.data(), d.oy.data(), d.oz.data());
+    const pgloss_strided3 wi = soa(d.ix.data(), d.iy.data(), d.iz.data());
+    const pgloss_strided3_out f = soa_out(o.fr.data(), o.fg.data(), o.fb.data());
     if (!sample) {
-        o.st_eval = pgloss_eval_pdf_batch_ex(&opt, &m, PGLOSS_LOBE_ALL, d.n, wo, wi, f, o.pdf.data());
+        o.st_eval = pgloss_eval_pdf_batch(&opt, &m, nullptr, PGLOSS_LOBE_ALL, d.n, wo, wi, f,
+                                          col_out(o.pdf.data()), nullptr);
     } else {
-        const pgloss_vec3_out w{o.wx.data(), o.wy.data(), o.wz.data()};
-        o.st_sample = pgloss_sample_batch_ex(&opt, &m, PGLOSS_LOBE_ALL, d.n, wo, d.u0.data(),
-                                             d.u1.data(), d.u2.data(), w, o.pdf.data(), f,
-                                             o.lobe.data());
+        o.st_sample = pgloss_sample_batch(&opt, &m, nullptr, PGLOSS_LOBE_ALL, d.n, wo,
+                                          soa(d.u0.data(), d.u1.data(), d.u2.data()),
+                                          soa_out(o.wx.data(), o.wy.data(), o.wz.data()),
+                                          col_out(o.pdf.data()), f, o.lobe.data(), nullptr);
     }
     return o;
 }
@@ -215,8 +214,8 @@ TEST_P(PerIsa, FloatTierIsBitIdenticalToBaseline)
     int compared = 0;
     for (const auto &m : materials())
         for (bool sample : {false, true}) {
-            const Out ref = run(d, m, {PGLOSS_PRECISION_FLOAT, PGLOSS_ISA_BASELINE}, sample);
-            const Out o = run(d, m, {PGLOSS_PRECISION_FLOAT, isa}, sample);
+            const Out ref = run(d, m, batch_options(PGLOSS_PRECISION_FLOAT, PGLOSS_ISA_BASELINE), sample);
+            const Out o = run(d, m, batch_options(PGLOSS_PRECISION_FLOAT, isa), sample);
             EXPECT_TRUE(bits_equal(o.fr, ref.fr) && bits_equal(o.fg, ref.fg) &&
                         bits_equal(o.fb, ref.fb) && bits_equal(o.pdf, ref.pdf))
                 << pgloss_isa_name(isa) << (sample ? " sample" : " eval_pdf");
@@ -228,7 +227,7 @@ TEST_P(PerIsa, FloatTierIsBitIdenticalToBaseline)
             EXPECT_EQ(o.st_sample, ref.st_sample);
             ++compared;
             if (isa == pgloss_isa_best()) {
-                const Out a = run(d, m, {PGLOSS_PRECISION_FLOAT, PGLOSS_ISA_AUTO}, sample);
+                const Out a = run(d, m, batch_options(PGLOSS_PRECISION_FLOAT, PGLOSS_ISA_AUTO), sample);
                 EXPECT_TRUE(bits_equal(a.fr, o.fr) && bits_equal(a.pdf, o.pdf)) << "AUTO";
             }
         }
@@ -243,7 +242,7 @@ TEST_P(PerIsa, EveryPathIsFiniteOnEdges)
     for (const auto &m : materials())
         for (int prec = 0; prec < 3; ++prec)
             for (bool sample : {false, true}) {
-                const Out o = run(d, m, {static_cast<pgloss_precision>(prec), isa}, sample);
+                const Out o = run(d, m, batch_options(static_cast<pgloss_precision>(prec), isa), sample);
                 for (std::size_t j = 0; j < d.n; ++j) {
                     ASSERT_TRUE(std::isfinite(o.fr[j]) && std::isfinite(o.fg[j]) &&
                                 std::isfinite(o.fb[j]) && std::isfinite(o.pdf[j]))
@@ -280,8 +279,8 @@ TEST_P(PerIsa, FastTierWithinStatedError)
             continue; // the degenerate α = 3e38 material has no regular range
         for (const Data *d : std::initializer_list<const Data *>{&unit, &scaled}) {
             const double bound = d == &unit ? 4e-6 : 1e-4;
-            const Out ref = run(*d, m, {PGLOSS_PRECISION_REFERENCE, PGLOSS_ISA_AUTO}, false);
-            const Out o = run(*d, m, {PGLOSS_PRECISION_FAST, isa}, false);
+            const Out ref = run(*d, m, batch_options(PGLOSS_PRECISION_REFERENCE, PGLOSS_ISA_AUTO), false);
+            const Out o = run(*d, m, batch_options(PGLOSS_PRECISION_FAST, isa), false);
             double worst = 0;
             for (std::size_t j = 0; j < d->n; ++j) {
                 const double want = ref.fr[j];
@@ -309,7 +308,7 @@ TEST_P(PerIsa, FastTierMatchesInlineFunction)
         if (m.alpha_x > 1.0f)
             continue; // the degenerate α = 3e38 material has no regular range
         {
-            const Out o = run(d, m, {PGLOSS_PRECISION_FAST, isa}, false);
+            const Out o = run(d, m, batch_options(PGLOSS_PRECISION_FAST, isa), false);
             double worst = 0;
             for (std::size_t j = 0; j < d.n; ++j) {
                 pgloss_rgb f;
@@ -339,7 +338,7 @@ TEST(Isa, ReferenceTierIsTheScalarFunctions)
 {
     const Data d = make_data(500, true);
     for (const auto &m : materials()) {
-        const Out o = run(d, m, {PGLOSS_PRECISION_REFERENCE, PGLOSS_ISA_AUTO}, false);
+        const Out o = run(d, m, batch_options(PGLOSS_PRECISION_REFERENCE, PGLOSS_ISA_AUTO), false);
         for (std::size_t j = 0; j < d.n; ++j) {
             pgloss_rgb f;
             float p;
@@ -349,7 +348,7 @@ TEST(Isa, ReferenceTierIsTheScalarFunctions)
             ASSERT_EQ(f.b, o.fb[j]);
             ASSERT_EQ(p, o.pdf[j]);
         }
-        const Out s = run(d, m, {PGLOSS_PRECISION_REFERENCE, PGLOSS_ISA_AUTO}, true);
+        const Out s = run(d, m, batch_options(PGLOSS_PRECISION_REFERENCE, PGLOSS_ISA_AUTO), true);
         for (std::size_t j = 0; j < d.n; ++j) {
             const float u[3] = {d.u0[j], d.u1[j], d.u2[j]};
             pgloss_sample_record r;
@@ -367,22 +366,23 @@ TEST(Isa, BadOptionsAreArgumentErrors)
     const Data d = make_data(8, false);
     const pgloss_material m = materials()[0];
     Out o(d.n);
-    const pgloss_vec3_array wo{d.ox.data(), d.oy.data(), d.oz.data()};
-    const pgloss_rgb_out f{o.fr.data(), o.fg.data(), o.fb.data()};
-    const pgloss_batch_options bad_prec{static_cast<pgloss_precision>(9), PGLOSS_ISA_AUTO};
-    const pgloss_batch_options bad_isa{PGLOSS_PRECISION_FLOAT, static_cast<pgloss_isa>(9)};
-    EXPECT_EQ(pgloss_eval_pdf_batch_ex(&bad_prec, &m, 3, d.n, wo, wo, f, o.pdf.data()), PGLOSS_ERR_ARGUMENT);
-    EXPECT_EQ(pgloss_eval_pdf_batch_ex(&bad_isa, &m, 3, d.n, wo, wo, f, o.pdf.data()), PGLOSS_ERR_ARGUMENT);
-    const pgloss_rgb_out none{nullptr, nullptr, nullptr};
-    EXPECT_EQ(pgloss_eval_pdf_batch_ex(nullptr, &m, 3, d.n, wo, wo, none, nullptr), PGLOSS_ERR_NULL);
-    EXPECT_EQ(pgloss_eval_pdf_batch_ex(nullptr, &m, 3, d.n, wo, wo, none, o.pdf.data()), PGLOSS_OK);
+    const pgloss_strided3 wo = soa(d.ox.data(), d.oy.data(), d.oz.data());
+    const pgloss_strided3_out f = soa_out(o.fr.data(), o.fg.data(), o.fb.data());
+    const pgloss_strided_out pdf = col_out(o.pdf.data());
+    const pgloss_batch_options bad_prec = batch_options(static_cast<pgloss_precision>(9));
+    const pgloss_batch_options bad_isa = batch_options(PGLOSS_PRECISION_FLOAT, static_cast<pgloss_isa>(9));
+    EXPECT_EQ(pgloss_eval_pdf_batch(&bad_prec, &m, nullptr, 3, d.n, wo, wo, f, pdf, nullptr), PGLOSS_ERR_ARGUMENT);
+    EXPECT_EQ(pgloss_eval_pdf_batch(&bad_isa, &m, nullptr, 3, d.n, wo, wo, f, pdf, nullptr), PGLOSS_ERR_ARGUMENT);
+    EXPECT_EQ(pgloss_eval_pdf_batch(nullptr, &m, nullptr, 3, d.n, wo, wo, no_out3(), no_out(), nullptr),
+              PGLOSS_ERR_NULL);
+    EXPECT_EQ(pgloss_eval_pdf_batch(nullptr, &m, nullptr, 3, d.n, wo, wo, no_out3(), pdf, nullptr), PGLOSS_OK);
     // An ISA the CPU lacks is an argument error, not a crash; where the CPU has every ISA
     // that path cannot be reached, and the test says so.
     int unsupported = 0;
     for (pgloss_isa isa : kIsas)
         if (!pgloss_isa_supported(isa)) {
-            const pgloss_batch_options o2{PGLOSS_PRECISION_FLOAT, isa};
-            EXPECT_EQ(pgloss_eval_pdf_batch_ex(&o2, &m, 3, d.n, wo, wo, f, o.pdf.data()),
+            const pgloss_batch_options o2 = batch_options(PGLOSS_PRECISION_FLOAT, isa);
+            EXPECT_EQ(pgloss_eval_pdf_batch(&o2, &m, nullptr, 3, d.n, wo, wo, f, pdf, nullptr),
                       PGLOSS_ERR_ARGUMENT);
             ++unsupported;
         }

@@ -9,9 +9,7 @@
 #include <set>
 #include <string>
 
-extern "C" {
-#include "pgloss/pgloss.h"
-}
+#include "batch_util.h"
 
 namespace {
 
@@ -98,13 +96,18 @@ TEST(Batch, NullArraysAndEmptyBatches)
     pgloss_material m;
     ASSERT_EQ(pgloss_material_init(&m, &p), PGLOSS_OK);
     float a[1] = {1.f};
-    const pgloss_vec3_array v = {a, a, a}, bad = {a, nullptr, a};
+    const float *none = nullptr;
+    const pgloss_strided3 v = soa(a, a, a), bad = soa(a, none, a);
     float r[1], g[1], b[1];
-    const pgloss_rgb_out f = {r, g, b};
-    EXPECT_EQ(pgloss_eval_batch(&m, PGLOSS_LOBE_ALL, 0, bad, bad, f), PGLOSS_OK) << "n = 0 reads nothing";
-    EXPECT_EQ(pgloss_eval_batch(&m, PGLOSS_LOBE_ALL, 1, bad, v, f), PGLOSS_ERR_NULL);
-    EXPECT_EQ(pgloss_pdf_batch(&m, PGLOSS_LOBE_ALL, 1, v, v, nullptr), PGLOSS_ERR_NULL);
-    EXPECT_EQ(pgloss_eval_batch(nullptr, PGLOSS_LOBE_ALL, 1, v, v, f), PGLOSS_ERR_NULL);
+    const pgloss_strided3_out f = soa_out(r, g, b);
+    EXPECT_EQ(pgloss_eval_pdf_batch(nullptr, &m, nullptr, PGLOSS_LOBE_ALL, 0, bad, bad, f, no_out(), nullptr), PGLOSS_OK)
+        << "n = 0 reads nothing";
+    EXPECT_EQ(pgloss_eval_pdf_batch(nullptr, &m, nullptr, PGLOSS_LOBE_ALL, 1, bad, v, f, no_out(), nullptr),
+              PGLOSS_ERR_NULL);
+    EXPECT_EQ(pgloss_eval_pdf_batch(nullptr, &m, nullptr, PGLOSS_LOBE_ALL, 1, v, v, no_out3(), no_out(), nullptr),
+              PGLOSS_ERR_NULL);
+    EXPECT_EQ(pgloss_eval_pdf_batch(nullptr, nullptr, nullptr, PGLOSS_LOBE_ALL, 1, v, v, f, no_out(), nullptr),
+              PGLOSS_ERR_NULL);
 }
 
 // The material init contract of brdf.h: rejects what cannot be evaluated, in the documented order.

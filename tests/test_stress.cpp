@@ -17,6 +17,7 @@
 #include <set>
 #include <vector>
 
+#include "batch_util.h"
 #include "test_common.h"
 
 using namespace pgt;
@@ -266,14 +267,17 @@ TEST(Stress, BatchBrdf) {
                 else if (!dir_valid(a)) want_s = PGLOSS_ERR_DIRECTION;
             }
         }
-        const pgloss_vec3_array wo{ox.data(), oy.data(), oz.data()}, wi{ix.data(), iy.data(), iz.data()};
-        pgloss_status st = pgloss_eval_batch(&m, mask, nb, wo, wi, {r.data(), g.data(), b.data()});
+        const pgloss_strided3 wo = soa(ox.data(), oy.data(), oz.data()), wi = soa(ix.data(), iy.data(), iz.data());
+        pgloss_status st =
+            pgloss_eval_pdf_batch(nullptr, &m, nullptr, mask, nb, wo, wi, soa_out(r.data(), g.data(), b.data()), no_out(),
+                                  nullptr);
         te.add(st);
         if (st != want) ++te.bad_status;
-        st = pgloss_pdf_batch(&m, mask, nb, wo, wi, pdf.data());
+        st = pgloss_eval_pdf_batch(nullptr, &m, nullptr, mask, nb, wo, wi, no_out3(), col_out(pdf.data()), nullptr);
         tq.add(st);
         if (st != want) ++tq.bad_status;
-        st = pgloss_eval_pdf_batch(&m, mask, nb, wo, wi, {r2.data(), g2.data(), b2.data()}, pdf2.data());
+        st = pgloss_eval_pdf_batch(nullptr, &m, nullptr, mask, nb, wo, wi, soa_out(r2.data(), g2.data(), b2.data()),
+                                   col_out(pdf2.data()), nullptr);
         tep.add(st);
         if (st != want) ++tep.bad_status;
         for (std::size_t j = 0; j < nb; ++j) {
@@ -285,8 +289,9 @@ TEST(Stress, BatchBrdf) {
             if (!fin(r2[j]) || !fin(pdf2[j])) ++tep.nonfinite_out;
             if (r2[j] != r[j] || g2[j] != g[j] || b2[j] != b[j] || pdf2[j] != pdf[j]) ++tep.bad_value;
         }
-        st = pgloss_sample_batch(&m, mask, nb, wo, u0.data(), u1.data(), u2.data(), {wx.data(), wy.data(), wz.data()},
-                                 pdf.data(), {r.data(), g.data(), b.data()}, lobe.data());
+        st = pgloss_sample_batch(nullptr, &m, nullptr, mask, nb, wo, soa(u0.data(), u1.data(), u2.data()),
+                                 soa_out(wx.data(), wy.data(), wz.data()), col_out(pdf.data()),
+                                 soa_out(r.data(), g.data(), b.data()), lobe.data(), nullptr);
         ts.add(st);
         if (st != want_s) ++ts.bad_status;
         for (std::size_t j = 0; j < nb; ++j) {
@@ -326,9 +331,9 @@ TEST(Stress, HugeAlphaBatchMatchesScalar) {
             u1[j] = rng.uniform_float(), u2[j] = rng.uniform_float();
         }
         u1[0] = 0.0f;  // s = 0: h = +z
-        ASSERT_EQ(pgloss_sample_batch(&m, PGLOSS_LOBE_ALL, nb, {ox.data(), oy.data(), oz.data()}, u0.data(), u1.data(),
-                                      u2.data(), {wx.data(), wy.data(), wz.data()}, pdf.data(),
-                                      {r.data(), g.data(), b.data()}, nullptr),
+        ASSERT_EQ(pgloss_sample_batch(nullptr, &m, nullptr, PGLOSS_LOBE_ALL, nb, soa(ox.data(), oy.data(), oz.data()),
+                                      soa(u0.data(), u1.data(), u2.data()), soa_out(wx.data(), wy.data(), wz.data()),
+                                      col_out(pdf.data()), soa_out(r.data(), g.data(), b.data()), nullptr, nullptr),
                   PGLOSS_OK);
         for (std::size_t j = 0; j < nb; ++j) {
             const float u[3] = {u0[j], u1[j], u2[j]};
@@ -515,8 +520,8 @@ TEST(Stress, Regressions) {
     ASSERT_EQ(pgloss_material_init(&m, &p), PGLOSS_OK);
     const float ox = 0.3f, oy = 0.1f, oz = 0.9f, u0 = 0.0f, u1 = 0.5f, u2 = 0.3f;
     float wx, wy, wz, pdf, r, g, b;
-    EXPECT_EQ(pgloss_sample_batch(&m, PGLOSS_LOBE_ALL, 1, {&ox, &oy, &oz}, &u0, &u1, &u2, {&wx, &wy, &wz}, &pdf,
-                                  {&r, &g, &b}, nullptr),
+    EXPECT_EQ(pgloss_sample_batch(nullptr, &m, nullptr, PGLOSS_LOBE_ALL, 1, soa(&ox, &oy, &oz), soa(&u0, &u1, &u2),
+                                  soa_out(&wx, &wy, &wz), col_out(&pdf), soa_out(&r, &g, &b), nullptr, nullptr),
               PGLOSS_OK);
     EXPECT_TRUE(std::isfinite(wx) && std::isfinite(wy) && std::isfinite(wz));
     // (a) A density that rounds to 0 in float must come with weight 0 (and pdf 0). Found by the

@@ -11,7 +11,7 @@
 #include <thread>
 #include <vector>
 
-#include "pgloss/pgloss.h"
+#include "batch_util.h"
 
 namespace {
 
@@ -48,7 +48,7 @@ Inputs make_inputs() {
 // Everything one thread computes, as raw floats.
 std::vector<float> work(const Inputs &in) {
     std::vector<float> out;
-    const pgloss_vec3_array wo{in.ox.data(), in.oy.data(), in.oz.data()}, wi{in.ix.data(), in.iy.data(), in.iz.data()};
+    const pgloss_strided3 wo = soa(in.ox.data(), in.oy.data(), in.oz.data()), wi = soa(in.ix.data(), in.iy.data(), in.iz.data());
     std::vector<float> a(kN), b(kN), c(kN), d(kN), e(kN), f(kN), g(kN);
     std::vector<unsigned char> lobe(kN);
     for (const pgloss_material &m : in.mats) {
@@ -65,12 +65,13 @@ std::vector<float> work(const Inputs &in) {
         for (pgloss_precision tier : {PGLOSS_PRECISION_FLOAT, PGLOSS_PRECISION_FAST, PGLOSS_PRECISION_REFERENCE})
             for (pgloss_isa isa : {PGLOSS_ISA_BASELINE, PGLOSS_ISA_AVX2, PGLOSS_ISA_AVX512}) {
                 if (!pgloss_isa_supported(isa)) continue;
-                const pgloss_batch_options opt{tier, isa};
-                pgloss_eval_pdf_batch_ex(&opt, &m, PGLOSS_LOBE_ALL, kN, wo, wi, {a.data(), b.data(), c.data()}, d.data());
+                const pgloss_batch_options opt = batch_options(tier, isa);
+                pgloss_eval_pdf_batch(&opt, &m, nullptr, PGLOSS_LOBE_ALL, kN, wo, wi, soa_out(a.data(), b.data(), c.data()),
+                                      col_out(d.data()), nullptr);
                 for (auto *v : {&a, &b, &c, &d}) out.insert(out.end(), v->begin(), v->end());
-                pgloss_sample_batch_ex(&opt, &m, PGLOSS_LOBE_ALL, kN, wo, in.u0.data(), in.u1.data(), in.u2.data(),
-                                       {a.data(), b.data(), c.data()}, d.data(), {e.data(), f.data(), g.data()},
-                                       lobe.data());
+                pgloss_sample_batch(&opt, &m, nullptr, PGLOSS_LOBE_ALL, kN, wo, soa(in.u0.data(), in.u1.data(), in.u2.data()),
+                                    soa_out(a.data(), b.data(), c.data()), col_out(d.data()),
+                                    soa_out(e.data(), f.data(), g.data()), lobe.data(), nullptr);
                 for (auto *v : {&a, &b, &c, &d, &e, &f, &g}) out.insert(out.end(), v->begin(), v->end());
             }
     }

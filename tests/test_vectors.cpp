@@ -37,6 +37,7 @@
 #include <utility>
 #include <vector>
 
+#include "batch_util.h"
 #include "pgloss/inline.h"
 
 extern "C" {
@@ -881,20 +882,37 @@ TEST(Vectors, eval_pdf_batch) {
             ox.p()[k] = wo.x, oy.p()[k] = wo.y, oz.p()[k] = wo.z;
             ix.p()[k] = wi.x, iy.p()[k] = wi.y, iz.p()[k] = wi.z;
         }
-        const pgloss_vec3_array wo{ox.p(), oy.p(), oz.p()}, wi{ix.p(), iy.p(), iz.p()};
+        const pgloss_strided3 wo = soa(ox.p(), oy.p(), oz.p()), wi = soa(ix.p(), iy.p(), iz.p());
+        // (n, 3) rows of the same directions: the strided path (gathered, not in place)
+        std::vector<float> wo_rows(3 * n), wi_rows(3 * n);
+        for (size_t k = 0; k < n; ++k)
+            for (int c = 0; c < 3; ++c) {
+                wo_rows[3 * k + c] = (c == 0 ? ox : c == 1 ? oy : oz).p()[k];
+                wi_rows[3 * k + c] = (c == 0 ? ix : c == 1 ? iy : iz).p()[k];
+            }
         const std::string want = first_error(cs);
-        for (int variant = 0; variant < 3; ++variant) {
-            const char *fn = variant == 0 ? "eval_batch" : variant == 1 ? "pdf_batch" : "eval_pdf_batch";
+        for (int variant = 0; variant < 4; ++variant) {
+            // f only, pdf only, both; both from and into (n, 3) rows
+            const char *fn = variant == 0 ? "eval_batch" : variant == 1 ? "pdf_batch"
+                           : variant == 2 ? "eval_pdf_batch" : "eval_pdf_batch (rows)";
             const char *tolfn = variant == 0 ? "eval" : variant == 1 ? "pdf" : "eval_pdf";
             SoA fr(n, -1), fg(n, -1), fb(n, -1), pdf(n, -1);
-            const pgloss_rgb_out f{fr.p(), fg.p(), fb.p()};
+            std::vector<float> f_rows(3 * n + 1, -1);
+            const pgloss_strided3_out f = variant == 1 ? no_out3() : soa_out(fr.p(), fg.p(), fb.p());
+            const pgloss_strided_out p = variant == 0 ? no_out() : col_out(pdf.p());
             pgloss_status st;
-            if (variant == 0)
-                st = pgloss_eval_batch(&m, lobes, n, wo, wi, f);
-            else if (variant == 1)
-                st = pgloss_pdf_batch(&m, lobes, n, wo, wi, pdf.p());
-            else
-                st = pgloss_eval_pdf_batch(&m, lobes, n, wo, wi, f, pdf.p());
+            if (variant < 3) {
+                st = pgloss_eval_pdf_batch(nullptr, &m, nullptr, lobes, n, wo, wi, f, p, nullptr);
+            } else {
+                st = pgloss_eval_pdf_batch(nullptr, &m, nullptr, lobes, n, pgloss_strided3_rows(wo_rows.data(), 4),
+                                           pgloss_strided3_rows(wi_rows.data(), 4),
+                                           pgloss_strided3_out_rows(f_rows.data() + 1, 4), p, nullptr);
+                for (size_t k = 0; k < n; ++k) {
+                    fr.p()[k] = f_rows[3 * k + 1];
+                    fg.p()[k] = f_rows[3 * k + 2];
+                    fb.p()[k] = f_rows[3 * k + 3];
+                }
+            }
             EXPECT_EQ(std::string(pgloss_status_name(st)), want) << fn << " group " << kv.first.first << "/" << lobes;
             for (size_t k = 0; k < n; ++k) {
                 const json &c = *cs[k];
@@ -917,9 +935,10 @@ TEST(Vectors, eval_pdf_batch) {
         // calls above mostly meet the latter, single calls meet each case's own path.
         for (size_t k = 0; k < n; ++k) {
             const json &c = *cs[k];
-            const pgloss_vec3_array wo1{ox.p() + k, oy.p() + k, oz.p() + k}, wi1{ix.p() + k, iy.p() + k, iz.p() + k};
             float r = -1, g = -1, b = -1, p1 = -1;
-            const pgloss_status st = pgloss_eval_pdf_batch(&m, lobes, 1, wo1, wi1, pgloss_rgb_out{&r, &g, &b}, &p1);
+            const pgloss_status st =
+                pgloss_eval_pdf_batch(nullptr, &m, nullptr, lobes, 1, soa(ox.p() + k, oy.p() + k, oz.p() + k),
+                                      soa(ix.p() + k, iy.p() + k, iz.p() + k), soa_out(&r, &g, &b), col_out(&p1), nullptr);
             EXPECT_EQ(std::string(pgloss_status_name(st)), c["status"].get<std::string>()) << case_id(c) << " n=1";
             const bool s = sanity_float(*doc, c);
             const double got[3] = {r, g, b};
@@ -1029,9 +1048,9 @@ TEST(Vectors, sample_batch) {
             SoA wx(n, kNaN), wy(n, kNaN), wz(n, kNaN), pdf(n, -1), gr(n, -1), gg(n, -1), gb(n, -1);
             std::vector<unsigned char> lobe(n + 1, 77);
             const pgloss_status st = pgloss_sample_batch(
-                &m, lobes, n, pgloss_vec3_array{ox.p(), oy.p(), oz.p()}, u0.p(), u1.p(), u2.p(),
-                pgloss_vec3_out{wx.p(), wy.p(), wz.p()}, pdf.p(), pgloss_rgb_out{gr.p(), gg.p(), gb.p()},
-                with_lobe ? lobe.data() + 1 : nullptr);
+                nullptr, &m, nullptr, lobes, n, soa(ox.p(), oy.p(), oz.p()), soa(u0.p(), u1.p(), u2.p()),
+                soa_out(wx.p(), wy.p(), wz.p()), col_out(pdf.p()), soa_out(gr.p(), gg.p(), gb.p()),
+                with_lobe ? lobe.data() + 1 : nullptr, nullptr);
             EXPECT_EQ(std::string(pgloss_status_name(st)), want) << "sample_batch group " << kv.first.first << "/" << lobes;
             if (!with_lobe) continue;  // the NULL-lobe call only has to run; values are checked below
             for (size_t k = 0; k < n; ++k) {
@@ -1045,8 +1064,9 @@ TEST(Vectors, sample_batch) {
             float x = kNaN, y = kNaN, z = kNaN, p1 = -1, r = -1, g = -1, b = -1;
             unsigned char lb = 77;
             const pgloss_status st = pgloss_sample_batch(
-                &m, lobes, 1, pgloss_vec3_array{ox.p() + k, oy.p() + k, oz.p() + k}, u0.p() + k, u1.p() + k,
-                u2.p() + k, pgloss_vec3_out{&x, &y, &z}, &p1, pgloss_rgb_out{&r, &g, &b}, &lb);
+                nullptr, &m, nullptr, lobes, 1, soa(ox.p() + k, oy.p() + k, oz.p() + k),
+                soa(u0.p() + k, u1.p() + k, u2.p() + k), soa_out(&x, &y, &z), col_out(&p1), soa_out(&r, &g, &b), &lb,
+                nullptr);
             EXPECT_EQ(std::string(pgloss_status_name(st)), (*cs[k])["status"].get<std::string>()) << case_id(*cs[k]) << " n=1";
             const double wi[3] = {x, y, z}, w[3] = {r, g, b};
             check_sample(*doc, "sample_batch (n=1)", *cs[k], wi, p1, w, lb);
@@ -1058,7 +1078,7 @@ TEST(Vectors, sample_batch) {
 
 
 // ------------------------------------------------------------------------------------------
-// Per-element materials and the double path (pgloss/batch_materials.h): every non-NULL case of
+// Per-element materials and the double path (pgloss/batch.h): every non-NULL case of
 // brdf_eval.json / brdf_sample.json grouped by lobes only, so that one call holds many
 // materials; float entry points at the file's float tolerance, the double ones at its double
 // tolerance (relative 1e-12, the header's bound).
@@ -1103,13 +1123,13 @@ struct MatArrays {
             first = false;
         }
     }
-    pgloss_material_array fa(int nm) const {
-        return pgloss_material_array{f[0].data() + 1, f[1].data() + 1, f[2].data() + 1, f[3].data() + 1,
-                                     f[4].data() + 1, f[5].data() + 1, static_cast<pgloss_normalization>(nm)};
+    pgloss_physical_array fa(int nm) const {
+        return physical_cols(f[0].data() + 1, f[1].data() + 1, f[2].data() + 1, f[3].data() + 1, f[4].data() + 1,
+                             f[5].data() + 1, static_cast<pgloss_normalization>(nm));
     }
     pgloss_physical_array da(int nm) const {
-        return pgloss_physical_array{d[0].data() + 1, d[1].data() + 1, d[2].data() + 1, d[3].data() + 1,
-                                     d[4].data() + 1, d[5].data() + 1, static_cast<pgloss_normalization>(nm)};
+        return physical_cols(d[0].data() + 1, d[1].data() + 1, d[2].data() + 1, d[3].data() + 1, d[4].data() + 1,
+                             d[5].data() + 1, static_cast<pgloss_normalization>(nm));
     }
 };
 
@@ -1142,17 +1162,17 @@ TEST(Vectors, eval_pdf_batch_materials_and_double) {
             dox[k + 1] = wo.x, doy[k + 1] = wo.y, doz[k + 1] = wo.z;
             dix[k + 1] = wi.x, diy[k + 1] = wi.y, diz[k + 1] = wi.z;
         }
-        const pgloss_vec3_array wo{ox.p(), oy.p(), oz.p()}, wi{ix.p(), iy.p(), iz.p()};
-        const pgloss_vec3_array_d dwo{dox.data() + 1, doy.data() + 1, doz.data() + 1},
-            dwi{dix.data() + 1, diy.data() + 1, diz.data() + 1};
+        const pgloss_strided3 wo = soa(ox.p(), oy.p(), oz.p()), wi = soa(ix.p(), iy.p(), iz.p());
+        const double *dwo[3] = {dox.data() + 1, doy.data() + 1, doz.data() + 1},
+                     *dwi[3] = {dix.data() + 1, diy.data() + 1, diz.data() + 1};
         const std::string want = first_error(cs);
         // float, per element
         {
             SoA fr(n, -1), fg(n, -1), fb(n, -1), pdf(n, -1);
             std::vector<signed char> st(n, 99);
-            const pgloss_material_array m = ma.fa(kv.first.second);
-            const pgloss_status r = pgloss_eval_pdf_batch_materials_ex(nullptr, &m, lobes, n, wo, wi,
-                                                                       pgloss_rgb_out{fr.p(), fg.p(), fb.p()}, pdf.p(), st.data());
+            const pgloss_physical_array m = ma.fa(kv.first.second);
+            const pgloss_status r = pgloss_eval_pdf_batch(nullptr, nullptr, &m, lobes, n, wo, wi,
+                                                          soa_out(fr.p(), fg.p(), fb.p()), col_out(pdf.p()), st.data());
             EXPECT_EQ(std::string(pgloss_status_name(r)), want) << "eval_pdf_batch_materials lobes " << lobes;
             for (size_t k = 0; k < n; ++k) {
                 const json &c = *cs[k];
@@ -1173,18 +1193,19 @@ TEST(Vectors, eval_pdf_batch_materials_and_double) {
             std::vector<signed char> st(n, 99);
             if (per_element) {
                 const pgloss_physical_array m = ma.da(kv.first.second);
-                const pgloss_status r = pgloss_eval_pdf_batch_materials_d_ex(
-                    nullptr, &m, lobes, n, dwo, dwi, pgloss_rgb_out_d{fr.data(), fg.data(), fb.data()}, pdf.data(),
-                    st.data());
+                const pgloss_status r = pgloss_eval_pdf_batch(
+                    f64_options(), nullptr, &m, lobes, n, soa(dwo[0], dwo[1], dwo[2]), soa(dwi[0], dwi[1], dwi[2]),
+                    soa_out(fr.data(), fg.data(), fb.data()), col_out(pdf.data()), st.data());
                 EXPECT_EQ(std::string(pgloss_status_name(r)), want) << fn << " lobes " << lobes;
             } else {
                 for (size_t k = 0; k < n; ++k) {
                     pgloss_material m;
                     const pgloss_physical p = physical_from((*doc)["materials"].at((*cs[k])["input"]["material"].get<std::string>()));
                     ASSERT_EQ(pgloss_material_init(&m, &p), PGLOSS_OK);
-                    const pgloss_vec3_array_d o1{dwo.x + k, dwo.y + k, dwo.z + k}, i1{dwi.x + k, dwi.y + k, dwi.z + k};
-                    const pgloss_status r = pgloss_eval_pdf_batch_d_ex(
-                        nullptr, &m, lobes, 1, o1, i1, pgloss_rgb_out_d{&fr[k], &fg[k], &fb[k]}, &pdf[k], &st[k]);
+                    const pgloss_status r = pgloss_eval_pdf_batch(
+                        f64_options(), &m, nullptr, lobes, 1, soa(dwo[0] + k, dwo[1] + k, dwo[2] + k),
+                        soa(dwi[0] + k, dwi[1] + k, dwi[2] + k), soa_out(&fr[k], &fg[k], &fb[k]), col_out(&pdf[k]),
+                        &st[k]);
                     EXPECT_EQ(r, static_cast<pgloss_status>(st[k]));
                 }
             }
@@ -1229,10 +1250,10 @@ TEST(Vectors, sample_batch_materials_and_double) {
             SoA wx(n, kNaN), wy(n, kNaN), wz(n, kNaN), pdf(n, -1), gr(n, -1), gg(n, -1), gb(n, -1);
             std::vector<unsigned char> lobe(n, 77);
             std::vector<signed char> st(n, 99);
-            const pgloss_material_array m = ma.fa(kv.first.second);
-            const pgloss_status r = pgloss_sample_batch_materials_ex(
-                nullptr, &m, lobes, n, pgloss_vec3_array{ox.p(), oy.p(), oz.p()}, u0.p(), u1.p(), u2.p(),
-                pgloss_vec3_out{wx.p(), wy.p(), wz.p()}, pdf.p(), pgloss_rgb_out{gr.p(), gg.p(), gb.p()}, lobe.data(),
+            const pgloss_physical_array m = ma.fa(kv.first.second);
+            const pgloss_status r = pgloss_sample_batch(
+                nullptr, nullptr, &m, lobes, n, soa(ox.p(), oy.p(), oz.p()), soa(u0.p(), u1.p(), u2.p()),
+                soa_out(wx.p(), wy.p(), wz.p()), col_out(pdf.p()), soa_out(gr.p(), gg.p(), gb.p()), lobe.data(),
                 st.data());
             EXPECT_EQ(std::string(pgloss_status_name(r)), want) << "sample_batch_materials lobes " << lobes;
             for (size_t k = 0; k < n; ++k) {
@@ -1246,10 +1267,10 @@ TEST(Vectors, sample_batch_materials_and_double) {
             std::vector<unsigned char> lobe(n, 77);
             std::vector<signed char> st(n, 99);
             const pgloss_physical_array m = ma.da(kv.first.second);
-            const pgloss_status r = pgloss_sample_batch_materials_d_ex(
-                nullptr, &m, lobes, n, pgloss_vec3_array_d{d[0].data() + 1, d[1].data() + 1, d[2].data() + 1},
-                d[3].data() + 1, d[4].data() + 1, d[5].data() + 1, pgloss_vec3_out_d{wx.data(), wy.data(), wz.data()},
-                pdf.data(), pgloss_rgb_out_d{gr.data(), gg.data(), gb.data()}, lobe.data(), st.data());
+            const pgloss_status r = pgloss_sample_batch(
+                f64_options(), nullptr, &m, lobes, n, soa(d[0].data() + 1, d[1].data() + 1, d[2].data() + 1),
+                soa(d[3].data() + 1, d[4].data() + 1, d[5].data() + 1), soa_out(wx.data(), wy.data(), wz.data()),
+                col_out(pdf.data()), soa_out(gr.data(), gg.data(), gb.data()), lobe.data(), st.data());
             EXPECT_EQ(std::string(pgloss_status_name(r)), want) << "sample_batch_materials_d lobes " << lobes;
             for (size_t k = 0; k < n; ++k) {
                 const json &c = *cs[k];
@@ -1356,7 +1377,8 @@ TEST(Vectors, gloss_batches) {
             const json &in = (*cs[k])["input"];
             rd.p()[k] = num(in["rho_d"]), rs.p()[k] = num(in["rho_s"]), al.p()[k] = num(in["alpha"]);
         }
-        const pgloss_status r = pgloss_gloss_from_physical_batch(n, rd.p(), rs.p(), al.p(), L.p(), c.p(), d.p(), st);
+        const pgloss_status r = pgloss_gloss_from_physical_batch(n, col(rd.p()), col(rs.p()), col(al.p()), col_out(L.p()),
+                                                                 col_out(c.p()), col_out(d.p()), st);
         for (size_t k = 0; k < n; ++k) {
             check_d(doc, "gloss_from_physical", "L", *cs[k], L.p()[k]);
             check_d(doc, "gloss_from_physical", "c", *cs[k], c.p()[k]);
@@ -1371,7 +1393,8 @@ TEST(Vectors, gloss_batches) {
             const json &in = (*cs[k])["input"];
             L.p()[k] = num(in["L"]), c.p()[k] = num(in["c"]), d.p()[k] = num(in["d"]);
         }
-        const pgloss_status r = pgloss_physical_from_gloss_batch(n, L.p(), c.p(), d.p(), rd.p(), rs.p(), al.p(), st);
+        const pgloss_status r = pgloss_physical_from_gloss_batch(n, col(L.p()), col(c.p()), col(d.p()), col_out(rd.p()),
+                                                                 col_out(rs.p()), col_out(al.p()), st);
         for (size_t k = 0; k < n; ++k) {
             check_d(doc, "physical_from_gloss", "rho_d", *cs[k], rd.p()[k]);
             check_d(doc, "physical_from_gloss", "rho_s", *cs[k], rs.p()[k]);
@@ -1383,7 +1406,7 @@ TEST(Vectors, gloss_batches) {
         const size_t n = cs.size();
         Col L(n), cm(n);
         for (size_t k = 0; k < n; ++k) L.p()[k] = num((*cs[k])["input"]["L"]);
-        const pgloss_status r = pgloss_envelope_contrast_batch(n, L.p(), cm.p(), st);
+        const pgloss_status r = pgloss_envelope_contrast_batch(n, col(L.p()), col_out(cm.p()), st);
         for (size_t k = 0; k < n; ++k) check_d(doc, "envelope_contrast", "c_max", *cs[k], cm.p()[k]);
         return r;
     });
@@ -1394,7 +1417,8 @@ TEST(Vectors, gloss_batches) {
             const json &in = (*cs[k])["input"];
             rd.p()[k] = num(in["rho_d"]), rs.p()[k] = num(in["rho_s"]), L.p()[k] = num(in["L_target"]);
         }
-        const pgloss_status r = pgloss_match_gloss_batch(n, rd.p(), rs.p(), L.p(), od.p(), os.p(), st);
+        const pgloss_status r = pgloss_match_gloss_batch(n, col(rd.p()), col(rs.p()), col(L.p()), col_out(od.p()),
+                                                         col_out(os.p()), st);
         for (size_t k = 0; k < n; ++k) {
             check_d(doc, "match_gloss", "rho_d_out", *cs[k], od.p()[k]);
             check_d(doc, "match_gloss", "rho_s_out", *cs[k], os.p()[k]);
@@ -1411,10 +1435,8 @@ pgloss_status rgb_from_lab_run(const json &doc, int space, const std::vector<con
         const json &in = (*cs[k])["input"]["lab"];
         L.p()[k] = num(in[0]), a.p()[k] = num(in[1]), b.p()[k] = num(in[2]);
     }
-    const pgloss_lab_array lab{L.p(), a.p(), b.p()};
-    const pgloss_rgb_out_d rgb{R.p(), G.p(), B.p()};
-    const pgloss_status r = Ex ? pgloss_rgb_from_lab_batch_ex(n, lab, static_cast<pgloss_color_space>(space), rgb, st)
-                               : pgloss_rgb_from_lab_batch(n, lab, rgb, st);
+    const pgloss_status r = pgloss_rgb_from_lab_batch(n, soa(L.p(), a.p(), b.p()), static_cast<pgloss_color_space>(space),
+                                                      soa_out(R.p(), G.p(), B.p()), st);
     const char *fn = Ex ? "rgb_from_lab_ex" : "rgb_from_lab";
     for (size_t k = 0; k < n; ++k) {
         const double got[3] = {R.p()[k], G.p()[k], B.p()[k]};
@@ -1431,10 +1453,8 @@ pgloss_status lab_from_rgb_run(const json &doc, int space, const std::vector<con
         const json &in = (*cs[k])["input"]["rgb"];
         R.p()[k] = num(in[0]), G.p()[k] = num(in[1]), B.p()[k] = num(in[2]);
     }
-    const pgloss_rgb_array_d rgb{R.p(), G.p(), B.p()};
-    const pgloss_lab_out lab{L.p(), a.p(), b.p()};
-    const pgloss_status r = Ex ? pgloss_lab_from_rgb_batch_ex(n, rgb, static_cast<pgloss_color_space>(space), lab, st)
-                               : pgloss_lab_from_rgb_batch(n, rgb, lab, st);
+    const pgloss_status r = pgloss_lab_from_rgb_batch(n, soa(R.p(), G.p(), B.p()), static_cast<pgloss_color_space>(space),
+                                                      soa_out(L.p(), a.p(), b.p()), st);
     const char *fn = Ex ? "lab_from_rgb_ex" : "lab_from_rgb";
     for (size_t k = 0; k < n; ++k) {
         const double got[3] = {L.p()[k], a.p()[k], b.p()[k]};
@@ -1450,8 +1470,8 @@ TEST(Vectors, color_batches) {
     batch_cases("color_space.json", "lab_from_rgb_ex", space_key, lab_from_rgb_run<true>);
     double x = 50, y = 0;
     double o = kNaN;
-    EXPECT_EQ(pgloss_rgb_from_lab_batch_ex(1, pgloss_lab_array{&x, &y, &y}, static_cast<pgloss_color_space>(9),
-                                           pgloss_rgb_out_d{&o, &o, &o}, nullptr),
+    EXPECT_EQ(pgloss_rgb_from_lab_batch(1, soa(&x, &y, &y), static_cast<pgloss_color_space>(9), soa_out(&o, &o, &o),
+                                        nullptr),
               PGLOSS_ERR_ARGUMENT);
     EXPECT_TRUE(std::isnan(o)) << "nothing written for an unknown space";
 }
@@ -1462,8 +1482,8 @@ pgloss_physical_array physical_array_of(const std::vector<const json *> &cs, Col
         const double v[6] = {p.rho_d[0], p.rho_d[1], p.rho_d[2], p.rho_s, p.alpha_x, p.alpha_y};
         for (int j = 0; j < 6; ++j) cols[j].p()[k] = v[j];
     }
-    return pgloss_physical_array{cols[0].p(), cols[1].p(), cols[2].p(), cols[3].p(), cols[4].p(), cols[5].p(),
-                                 static_cast<pgloss_normalization>(norm)};
+    return physical_cols(cols[0].p(), cols[1].p(), cols[2].p(), cols[3].p(), cols[4].p(), cols[5].p(),
+                         static_cast<pgloss_normalization>(norm));
 }
 
 int physical_norm_key(const json &c) { return c["input"]["p"]["normalization"].get<int>(); }
@@ -1474,10 +1494,9 @@ pgloss_status perceptual_from_physical_run(const json &doc, int key, const std::
     std::vector<Col> cols(6, Col(n));
     const pgloss_physical_array pa = physical_array_of(cs, cols.data(), key % 16);
     Col L(n), a(n), b(n), c(n), d(n);
-    const pgloss_perceptual_out q{L.p(), a.p(), b.p(), c.p(), d.p()};
+    const pgloss_perceptual_array_out q = perceptual_cols_out(L.p(), a.p(), b.p(), c.p(), d.p());
     const int space = key / 16;
-    const pgloss_status r = Ex ? pgloss_perceptual_from_physical_batch_ex(n, &pa, static_cast<pgloss_color_space>(space), q, st)
-                               : pgloss_perceptual_from_physical_batch(n, &pa, q, st);
+    const pgloss_status r = pgloss_perceptual_from_physical_batch(n, &pa, static_cast<pgloss_color_space>(space), &q, st);
     const char *fn = Ex ? "perceptual_from_physical_ex" : "perceptual_from_physical";
     for (size_t k = 0; k < n; ++k) {
         check_d(doc, fn, "L", *cs[k], L.p()[k]);
@@ -1498,13 +1517,11 @@ pgloss_status physical_from_perceptual_run(const json &doc, int key, const std::
         L.p()[k] = q.L, a.p()[k] = q.a, b.p()[k] = q.b, c.p()[k] = q.c, d.p()[k] = q.d;
     }
     Col R(n), G(n), B(n), S(n), AX(n), AY(n);
-    const pgloss_physical_out p{R.p(), G.p(), B.p(), S.p(), AX.p(), AY.p()};
+    const pgloss_physical_array_out p = physical_cols_out(R.p(), G.p(), B.p(), S.p(), AX.p(), AY.p());
     const int space = key / 16, norm = key % 16;
-    const pgloss_perceptual_array q{L.p(), a.p(), b.p(), c.p(), d.p()};
-    const pgloss_status r =
-        Ex ? pgloss_physical_from_perceptual_batch_ex(n, q, static_cast<pgloss_normalization>(norm),
-                                                      static_cast<pgloss_color_space>(space), p, st)
-           : pgloss_physical_from_perceptual_batch(n, q, static_cast<pgloss_normalization>(norm), p, st);
+    const pgloss_perceptual_array q = perceptual_cols(L.p(), a.p(), b.p(), c.p(), d.p());
+    const pgloss_status r = pgloss_physical_from_perceptual_batch(n, &q, static_cast<pgloss_normalization>(norm),
+                                                                  static_cast<pgloss_color_space>(space), &p, st);
     const char *fn = Ex ? "physical_from_perceptual_ex" : "physical_from_perceptual";
     for (size_t k = 0; k < n; ++k) {
         const json &e = (*cs[k])["expected"];
@@ -1533,7 +1550,8 @@ TEST(Vectors, validity_and_material_batches) {
                         const pgloss_perceptual q = perceptual_from((*cs[k])["input"]["q"]);
                         L.p()[k] = q.L, a.p()[k] = q.a, b.p()[k] = q.b, c.p()[k] = q.c, d.p()[k] = q.d;
                     }
-                    return pgloss_check_perceptual_batch(n, pgloss_perceptual_array{L.p(), a.p(), b.p(), c.p(), d.p()}, st);
+                    const pgloss_perceptual_array q = perceptual_cols(L.p(), a.p(), b.p(), c.p(), d.p());
+                    return pgloss_check_perceptual_batch(n, &q, PGLOSS_COLOR_SPACE_LINEAR_REC709, st);
                 });
     batch_cases("perceptual_material.json", "perceptual_from_physical", physical_norm_key,
                 perceptual_from_physical_run<false>);
@@ -1554,8 +1572,8 @@ TEST(Vectors, validity_and_material_batches) {
                         const pgloss_perceptual q = perceptual_from((*cs[k])["input"]["q"]);
                         L.p()[k] = q.L, a.p()[k] = q.a, b.p()[k] = q.b, c.p()[k] = q.c, d.p()[k] = q.d;
                     }
-                    return pgloss_check_perceptual_batch_ex(n, pgloss_perceptual_array{L.p(), a.p(), b.p(), c.p(), d.p()},
-                                                            static_cast<pgloss_color_space>(space), st);
+                    const pgloss_perceptual_array q = perceptual_cols(L.p(), a.p(), b.p(), c.p(), d.p());
+                    return pgloss_check_perceptual_batch(n, &q, static_cast<pgloss_color_space>(space), st);
                 });
 }
 
@@ -1583,7 +1601,8 @@ TEST(Vectors, batch_equals_scalar_bit_for_bit) {
             const json &in = (*cs[k])["input"];
             rd.p()[k] = num(in["rho_d"]), rs.p()[k] = num(in["rho_s"]), al.p()[k] = num(in["alpha"]);
         }
-        pgloss_gloss_from_physical_batch(n, rd.p(), rs.p(), al.p(), L.p(), c.p(), d.p(), st.data());
+        pgloss_gloss_from_physical_batch(n, col(rd.p()), col(rs.p()), col(al.p()), col_out(L.p()), col_out(c.p()),
+                                         col_out(d.p()), st.data());
         for (size_t k = 0; k < n; ++k, ++compared) {
             double l, cc, dd;
             const pgloss_status want = pgloss_gloss_from_physical(rd.p()[k], rs.p()[k], al.p()[k], &l, &cc, &dd);
@@ -1604,10 +1623,10 @@ TEST(Vectors, batch_equals_scalar_bit_for_bit) {
             const pgloss_perceptual v = perceptual_from(in["q"]);
             double r, g, b, s, ax, ay;
             signed char st = 99;
-            const pgloss_perceptual_array q{&v.L, &v.a, &v.b, &v.c, &v.d};
-            const pgloss_physical_out p{&r, &g, &b, &s, &ax, &ay};
-            pgloss_physical_from_perceptual_batch_ex(1, q, static_cast<pgloss_normalization>(norm),
-                                                     static_cast<pgloss_color_space>(space), p, &st);
+            const pgloss_perceptual_array q = perceptual_cols(&v.L, &v.a, &v.b, &v.c, &v.d);
+            const pgloss_physical_array_out p = physical_cols_out(&r, &g, &b, &s, &ax, &ay);
+            pgloss_physical_from_perceptual_batch(1, &q, static_cast<pgloss_normalization>(norm),
+                                                  static_cast<pgloss_color_space>(space), &p, &st);
             pgloss_physical o;
             const pgloss_status want = pgloss_physical_from_perceptual_ex(
                 &v, static_cast<pgloss_normalization>(norm), static_cast<pgloss_color_space>(space), &o);
@@ -1625,7 +1644,8 @@ TEST(Vectors, batch_equals_scalar_bit_for_bit) {
             const double in[3] = {num(lab[0]), num(lab[1]), num(lab[2])};
             double r, g, b, want_rgb[3];
             signed char st = 99;
-            pgloss_rgb_from_lab_batch(1, pgloss_lab_array{&in[0], &in[1], &in[2]}, pgloss_rgb_out_d{&r, &g, &b}, &st);
+            pgloss_rgb_from_lab_batch(1, soa(&in[0], &in[1], &in[2]), PGLOSS_COLOR_SPACE_LINEAR_REC709,
+                                      soa_out(&r, &g, &b), &st);
             const pgloss_status want = pgloss_rgb_from_lab(in, want_rgb);
             EXPECT_EQ(int(st), int(want)) << case_id(*cp);
             EXPECT_TRUE(same_bits(r, want_rgb[0]) && same_bits(g, want_rgb[1]) && same_bits(b, want_rgb[2]))
@@ -1641,7 +1661,8 @@ TEST(Vectors, batch_equals_scalar_bit_for_bit) {
             const double L = num(in["L"]), c = num(in["c"]), d = num(in["d"]);
             double o[3], w[3];
             signed char st = 99;
-            pgloss_physical_from_gloss_batch(1, &L, &c, &d, &o[0], &o[1], &o[2], &st);
+            pgloss_physical_from_gloss_batch(1, col(&L), col(&c), col(&d), col_out(&o[0]), col_out(&o[1]),
+                                             col_out(&o[2]), &st);
             EXPECT_EQ(int(st), int(pgloss_physical_from_gloss(L, c, d, &w[0], &w[1], &w[2]))) << case_id(*cp);
             EXPECT_TRUE(same_bits(o[0], w[0]) && same_bits(o[1], w[1]) && same_bits(o[2], w[2])) << case_id(*cp);
             ++compared;
@@ -1652,7 +1673,7 @@ TEST(Vectors, batch_equals_scalar_bit_for_bit) {
             const double L = num(in["L"]);
             double o, w;
             signed char st = 99;
-            pgloss_envelope_contrast_batch(1, &L, &o, &st);
+            pgloss_envelope_contrast_batch(1, col(&L), col_out(&o), &st);
             EXPECT_EQ(int(st), int(pgloss_envelope_contrast(L, &w))) << case_id(*cp);
             EXPECT_TRUE(same_bits(o, w)) << case_id(*cp);
             ++compared;
@@ -1663,7 +1684,7 @@ TEST(Vectors, batch_equals_scalar_bit_for_bit) {
             const double rd = num(in["rho_d"]), rs = num(in["rho_s"]), L = num(in["L_target"]);
             double o[2], w[2];
             signed char st = 99;
-            pgloss_match_gloss_batch(1, &rd, &rs, &L, &o[0], &o[1], &st);
+            pgloss_match_gloss_batch(1, col(&rd), col(&rs), col(&L), col_out(&o[0]), col_out(&o[1]), &st);
             EXPECT_EQ(int(st), int(pgloss_match_gloss(rd, rs, L, &w[0], &w[1]))) << case_id(*cp);
             EXPECT_TRUE(same_bits(o[0], w[0]) && same_bits(o[1], w[1])) << case_id(*cp);
             ++compared;
@@ -1675,8 +1696,9 @@ TEST(Vectors, batch_equals_scalar_bit_for_bit) {
             if (in.contains("null")) continue;
             const pgloss_physical p = physical_from(in["p"]);
             // the normalisation from the int (an unknown one read back as the enum is UB in C++)
-            const pgloss_physical_array pa{&p.rho_d[0], &p.rho_d[1], &p.rho_d[2], &p.rho_s, &p.alpha_x, &p.alpha_y,
-                                           static_cast<pgloss_normalization>(in["p"]["normalization"].get<int>())};
+            const pgloss_physical_array pa =
+                physical_cols(&p.rho_d[0], &p.rho_d[1], &p.rho_d[2], &p.rho_s, &p.alpha_x, &p.alpha_y,
+                              static_cast<pgloss_normalization>(in["p"]["normalization"].get<int>()));
             signed char st = 99;
             pgloss_check_physical_batch(1, &pa, &st);
             EXPECT_EQ(int(st), int(pgloss_check_physical(&p))) << case_id(*cp);
@@ -1694,7 +1716,8 @@ TEST(Vectors, batch_equals_scalar_bit_for_bit) {
             const pgloss_perceptual v = perceptual_from(in["q"]);
             signed char st = 99;
             const auto sp = static_cast<pgloss_color_space>(space);
-            pgloss_check_perceptual_batch_ex(1, pgloss_perceptual_array{&v.L, &v.a, &v.b, &v.c, &v.d}, sp, &st);
+            const pgloss_perceptual_array q = perceptual_cols(&v.L, &v.a, &v.b, &v.c, &v.d);
+            pgloss_check_perceptual_batch(1, &q, sp, &st);
             EXPECT_EQ(int(st), int(pgloss_check_perceptual_ex(&v, sp))) << case_id(*cp);
             ++compared;
         }
@@ -1709,12 +1732,14 @@ TEST(Vectors, batch_equals_scalar_bit_for_bit) {
             if (in.contains("null") || !known_space(space)) continue;
             const pgloss_physical p = physical_from(in["p"]);
             // the normalisation from the int (an unknown one read back as the enum is UB in C++)
-            const pgloss_physical_array pa{&p.rho_d[0], &p.rho_d[1], &p.rho_d[2], &p.rho_s, &p.alpha_x, &p.alpha_y,
-                                           static_cast<pgloss_normalization>(in["p"]["normalization"].get<int>())};
+            const pgloss_physical_array pa =
+                physical_cols(&p.rho_d[0], &p.rho_d[1], &p.rho_d[2], &p.rho_s, &p.alpha_x, &p.alpha_y,
+                              static_cast<pgloss_normalization>(in["p"]["normalization"].get<int>()));
             double L, a, b, c, d;
             signed char st = 99;
             const auto sp = static_cast<pgloss_color_space>(space);
-            pgloss_perceptual_from_physical_batch_ex(1, &pa, sp, pgloss_perceptual_out{&L, &a, &b, &c, &d}, &st);
+            const pgloss_perceptual_array_out q = perceptual_cols_out(&L, &a, &b, &c, &d);
+            pgloss_perceptual_from_physical_batch(1, &pa, sp, &q, &st);
             pgloss_perceptual o;
             EXPECT_EQ(int(st), int(pgloss_perceptual_from_physical_ex(&p, sp, &o))) << case_id(*cp);
             EXPECT_TRUE(same_bits(L, o.L) && same_bits(a, o.a) && same_bits(b, o.b) && same_bits(c, o.c) &&
@@ -1730,7 +1755,8 @@ TEST(Vectors, batch_equals_scalar_bit_for_bit) {
             const double rgb[3] = {num(in["rgb"][0]), num(in["rgb"][1]), num(in["rgb"][2])};
             double L, a, b, w[3];
             signed char st = 99;
-            pgloss_lab_from_rgb_batch(1, pgloss_rgb_array_d{&rgb[0], &rgb[1], &rgb[2]}, pgloss_lab_out{&L, &a, &b}, &st);
+            pgloss_lab_from_rgb_batch(1, soa(&rgb[0], &rgb[1], &rgb[2]), PGLOSS_COLOR_SPACE_LINEAR_REC709,
+                                      soa_out(&L, &a, &b), &st);
             EXPECT_EQ(int(st), int(pgloss_lab_from_rgb(rgb, w))) << case_id(*cp);
             EXPECT_TRUE(same_bits(L, w[0]) && same_bits(a, w[1]) && same_bits(b, w[2])) << case_id(*cp);
             ++compared;

@@ -18,7 +18,7 @@ For each α of the paper's stimuli and each viewing angle θo it reports, over t
   albedo_ratio  ∫ f_beckmann cos / ∫ f_ward cos         (directional albedo, energy)
   peak_ratio    f_beckmann / f_ward at the mirror direction
   shape_L1      ∫ |f_b/A_b - f_w/A_w| cos dω            (0 = same lobe shape, 2 = disjoint)
-Eq. 2 is evaluated by libpgloss (pgloss_eval_batch through ctypes, built by tests/osl/cref.py).
+Eq. 2 is evaluated by libpgloss (pgloss_eval_pdf_batch through ctypes, built by tests/osl/cref.py).
 Run:  .venv-bpy/bin/python examples/osl/closure_mapping.py
 """
 from __future__ import annotations
@@ -33,12 +33,21 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "tests" / "osl"))
 import cref  # noqa: E402
 
 
-class Vec3Array(C.Structure):
-    _fields_ = [("x", C.POINTER(C.c_float)), ("y", C.POINTER(C.c_float)), ("z", C.POINTER(C.c_float))]
+class Strided3(C.Structure):
+    """pgloss_strided3 / pgloss_strided3_out (pgloss/batch.h): a pointer per component, a byte stride."""
+    _fields_ = [("ptr", C.c_void_p * 3), ("stride", C.c_ssize_t)]
 
 
-def _ptr(a: np.ndarray):
-    return a.ctypes.data_as(C.POINTER(C.c_float))
+class Strided(C.Structure):
+    """pgloss_strided_out."""
+    _fields_ = [("ptr", C.c_void_p), ("stride", C.c_ssize_t)]
+
+
+def _rows(a: np.ndarray) -> Strided3:
+    """An (n, 3) float32 array as it is (rows, no copy); a (3,) one for every element (stride 0)."""
+    assert a.dtype == np.float32 and a.shape[-1] == 3
+    base, item = a.ctypes.data, a.strides[-1]
+    return Strided3((C.c_void_p * 3)(base, base + item, base + 2 * item), a.strides[0] if a.ndim == 2 else 0)
 
 
 def ward_c(alpha: float, wo: np.ndarray, wi: np.ndarray) -> np.ndarray:
@@ -48,14 +57,15 @@ def ward_c(alpha: float, wo: np.ndarray, wi: np.ndarray) -> np.ndarray:
     p = cref.Physical((C.c_double * 3)(0, 0, 0), 1.0, alpha, alpha, 0)
     assert lib.pgloss_material_init(C.byref(m), C.byref(p)) == 0
     n = wi.shape[0]
-    wo32 = [np.ascontiguousarray(np.full(n, wo[k], np.float32)) for k in range(3)]
-    wi32 = [np.ascontiguousarray(wi[:, k].astype(np.float32)) for k in range(3)]
-    f = [np.zeros(n, np.float32) for _ in range(3)]
-    lib.pgloss_eval_batch.argtypes = [C.c_void_p, C.c_uint, C.c_size_t, Vec3Array, Vec3Array, Vec3Array]
-    st = lib.pgloss_eval_batch(C.byref(m), 2, n, Vec3Array(*map(_ptr, wo32)), Vec3Array(*map(_ptr, wi32)),
-                               Vec3Array(*map(_ptr, f)))
+    wo32 = np.asarray(wo, np.float32)  # one wo for every element
+    wi32 = np.ascontiguousarray(wi, np.float32)
+    f = np.zeros((n, 3), np.float32)
+    fn = lib.pgloss_eval_pdf_batch
+    fn.argtypes = [C.c_void_p, C.c_void_p, C.c_void_p, C.c_uint, C.c_size_t, Strided3, Strided3, Strided3, Strided,
+                   C.c_void_p]
+    st = fn(None, C.byref(m), None, 2, n, _rows(wo32), _rows(wi32), _rows(f), Strided(None, 0), None)
     assert st == 0
-    return f[0].astype(np.float64)
+    return f[:, 0].astype(np.float64)
 
 
 def beckmann_cycles(alpha: float, wo: np.ndarray, wi: np.ndarray) -> np.ndarray:

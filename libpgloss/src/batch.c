@@ -1,11 +1,17 @@
 // SPDX-FileCopyrightText: 2026 The pgloss authors
 // SPDX-License-Identifier: Apache-2.0
-/* Batched entry points: argument checks, then dispatch — once per call, outside the loops —
- * to the loops of batch_isa.c for the requested tier and the best (or requested) ISA, or to
- * the scalar reference functions for PGLOSS_PRECISION_REFERENCE. */
+/* The BRDF batches (pgloss/batch.h): argument checks, then chunk by chunk the strided arrays
+ * as contiguous columns (strided.h), the loops of the call's tier and scalar type on the
+ * dispatched ISA (dispatch.c), the outputs written back, and the per-element statuses, found
+ * in a pass of their own only when asked for or when the loops met an invalid element. */
 #include "batch_internal.h"
 #include "internal.h"
+#include "lobe_d.h"
+#include "strided.h"
 
+#define B PGLOSS__BLOCK
+
+/* The loops' constants for one float material and its active lobes. */
 static pgloss__batch_consts make_consts(const pgloss_material *m, unsigned active)
 {
     pgloss__batch_consts k;
@@ -27,239 +33,376 @@ static pgloss__batch_consts make_consts(const pgloss_material *m, unsigned activ
     return k;
 }
 
-/* ---- instruction sets ---------------------------------------------------------------- */
+/* ---- arguments ----------------------------------------------------------------------------- */
 
-#if (defined(PGLOSS_HAVE_AVX2) || defined(PGLOSS_HAVE_AVX512)) && \
-    (defined(__GNUC__) || defined(__clang__))
-/* __builtin_cpu_supports reads the CPU model that libgcc fills in at start-up: a load and
- * a test, cheap enough to do on every call, and no state of ours. */
-#define PGLOSS_CPU(feature) __builtin_cpu_supports(feature)
-#else
-#define PGLOSS_CPU(feature) 0
-#endif
-
-int pgloss_isa_supported(pgloss_isa isa)
+static int in3_ok(pgloss_strided3 v) { return v.ptr[0] && v.ptr[1] && v.ptr[2]; }
+static int out3_ok(pgloss_strided3_out v) { return v.ptr[0] && v.ptr[1] && v.ptr[2]; }
+static int physical_ok(const pgloss_physical_array *p)
 {
-    switch (isa) {
-    case PGLOSS_ISA_AUTO:
-    case PGLOSS_ISA_BASELINE: return 1;
-#if defined(PGLOSS_HAVE_AVX2)
-    case PGLOSS_ISA_AVX2: return PGLOSS_CPU("avx2") && PGLOSS_CPU("fma");
-#endif
-#if defined(PGLOSS_HAVE_AVX512)
-    case PGLOSS_ISA_AVX512:
-        return PGLOSS_CPU("avx512f") && PGLOSS_CPU("avx512vl") && PGLOSS_CPU("avx512dq") &&
-               PGLOSS_CPU("avx512bw");
-#endif
-    default: return 0;
-    }
+    return in3_ok(p->rho_d) && p->rho_s.ptr && p->alpha_x.ptr;
 }
+/* An output's stride: 0 (every element to one place) only for one element. */
+static int stride_ok(ptrdiff_t stride, size_t n) { return stride != 0 || n == 1; }
 
-pgloss_isa pgloss_isa_best(void)
+/* ---- per-element statuses ------------------------------------------------------------------ */
+
+/* pgloss_material_init's first failing check (NONFINITE, NEGATIVE, ALPHA), in double. */
+static pgloss_status material_status(const double v[6])
 {
-    if (pgloss_isa_supported(PGLOSS_ISA_AVX512))
-        return PGLOSS_ISA_AVX512;
-    if (pgloss_isa_supported(PGLOSS_ISA_AVX2))
-        return PGLOSS_ISA_AVX2;
-    return PGLOSS_ISA_BASELINE;
-}
-
-const char *pgloss_isa_name(pgloss_isa isa)
-{
-    switch (isa) {
-    case PGLOSS_ISA_AUTO: return "auto";
-    case PGLOSS_ISA_BASELINE: return "baseline";
-    case PGLOSS_ISA_AVX2: return "avx2";
-    case PGLOSS_ISA_AVX512: return "avx512";
-    default: return "unknown";
-    }
-}
-
-typedef struct kernels {
-    pgloss__eval_pdf_fn eval_pdf;
-    pgloss__sample_fn sample;
-} kernels;
-
-int pgloss__batch_options_resolve(const pgloss_batch_options *opt, pgloss_precision *prec,
-                                  pgloss_isa *isa)
-{
-    const pgloss_precision p = opt ? opt->precision : PGLOSS_PRECISION_FLOAT;
-    const pgloss_isa i = opt ? opt->isa : PGLOSS_ISA_AUTO;
-    if (p != PGLOSS_PRECISION_FLOAT && p != PGLOSS_PRECISION_FAST &&
-        p != PGLOSS_PRECISION_REFERENCE)
-        return 0;
-    if (!pgloss_isa_supported(i))
-        return 0;
-    *prec = p;
-    *isa = i == PGLOSS_ISA_AUTO ? pgloss_isa_best() : i;
-    return 1;
-}
-
-/* The loops for the options, or {NULL, NULL} for REFERENCE; 0 if the options are invalid. */
-static int select_kernels(const pgloss_batch_options *opt, kernels *out)
-{
-    pgloss_precision prec;
-    pgloss_isa isa;
-    out->eval_pdf = NULL;
-    out->sample = NULL;
-    if (!pgloss__batch_options_resolve(opt, &prec, &isa))
-        return 0;
-    if (prec == PGLOSS_PRECISION_REFERENCE)
-        return 1;
-    const int fast = prec == PGLOSS_PRECISION_FAST;
-#define PGLOSS_PICK(name)                                                                          \
-    do {                                                                                           \
-        out->eval_pdf = fast ? pgloss__eval_pdf_##name##_fast : pgloss__eval_pdf_##name##_float;   \
-        out->sample = fast ? pgloss__sample_##name##_fast : pgloss__sample_##name##_float;         \
-    } while (0)
-    switch (isa) {
-#if defined(PGLOSS_HAVE_AVX512)
-    case PGLOSS_ISA_AVX512: PGLOSS_PICK(avx512); break;
-#endif
-#if defined(PGLOSS_HAVE_AVX2)
-    case PGLOSS_ISA_AVX2: PGLOSS_PICK(avx2); break;
-#endif
-    default: PGLOSS_PICK(baseline); break;
-    }
-#undef PGLOSS_PICK
-    return 1;
-}
-
-/* ---- eval / pdf ---------------------------------------------------------------------- */
-
-static int arrays_ok(pgloss_vec3_array v)
-{
-    return v.x && v.y && v.z;
-}
-
-static size_t eval_pdf_reference(const pgloss_material *m, unsigned lobes, size_t n,
-                                 pgloss_vec3_array wo, pgloss_vec3_array wi, pgloss_rgb_out f,
-                                 float *pdf)
-{
-    size_t bad = 0;
-    for (size_t j = 0; j < n; ++j) {
-        const pgloss_vec3 o = {wo.x[j], wo.y[j], wo.z[j]}, i = {wi.x[j], wi.y[j], wi.z[j]};
-        pgloss_rgb v;
-        float p;
-        bad += pgloss_eval_pdf(m, o, i, lobes, &v, &p) != PGLOSS_OK;
-        if (f.r) {
-            f.r[j] = v.r;
-            f.g[j] = v.g;
-            f.b[j] = v.b;
-        }
-        if (pdf)
-            pdf[j] = p;
-    }
-    return bad;
-}
-
-pgloss_status pgloss_eval_pdf_batch_ex(const pgloss_batch_options *options,
-                                       const pgloss_material *m, unsigned lobes, size_t n,
-                                       pgloss_vec3_array wo, pgloss_vec3_array wi,
-                                       pgloss_rgb_out f, float *pdf)
-{
-    kernels kn;
-    if (!select_kernels(options, &kn))
-        return PGLOSS_ERR_ARGUMENT;
-    if (n == 0)
-        return PGLOSS_OK;
-    if (f.r && (!f.g || !f.b))
-        return PGLOSS_ERR_NULL;
-    if (!m || !arrays_ok(wo) || !arrays_ok(wi) || (!f.r && !pdf))
-        return PGLOSS_ERR_NULL;
-    if (!f.r)
-        f.g = f.b = NULL;
-    size_t bad;
-    if (kn.eval_pdf) {
-        const unsigned active = lobes & m->lobes & PGLOSS_LOBE_ALL;
-        const pgloss__batch_consts k = make_consts(m, active);
-        bad = kn.eval_pdf(&k, active, (int)m->normalization, n, wo, wi, f, pdf);
-    } else {
-        bad = eval_pdf_reference(m, lobes, n, wo, wi, f, pdf);
-    }
-    return bad ? PGLOSS_ERR_DIRECTION : PGLOSS_OK;
-}
-
-pgloss_status pgloss_eval_batch(const pgloss_material *m, unsigned lobes, size_t n,
-                                pgloss_vec3_array wo, pgloss_vec3_array wi, pgloss_rgb_out f)
-{
-    if (n && !f.r)
-        return PGLOSS_ERR_NULL;
-    return pgloss_eval_pdf_batch_ex(NULL, m, lobes, n, wo, wi, f, NULL);
-}
-
-pgloss_status pgloss_pdf_batch(const pgloss_material *m, unsigned lobes, size_t n,
-                               pgloss_vec3_array wo, pgloss_vec3_array wi, float *pdf)
-{
-    const pgloss_rgb_out none = {NULL, NULL, NULL};
-    if (n && !pdf)
-        return PGLOSS_ERR_NULL;
-    return pgloss_eval_pdf_batch_ex(NULL, m, lobes, n, wo, wi, none, pdf);
-}
-
-pgloss_status pgloss_eval_pdf_batch(const pgloss_material *m, unsigned lobes, size_t n,
-                                    pgloss_vec3_array wo, pgloss_vec3_array wi,
-                                    pgloss_rgb_out f, float *pdf)
-{
-    if (n && (!f.r || !pdf))
-        return PGLOSS_ERR_NULL;
-    return pgloss_eval_pdf_batch_ex(NULL, m, lobes, n, wo, wi, f, pdf);
-}
-
-/* ---- sampling ------------------------------------------------------------------------ */
-
-static void sample_reference(const pgloss_material *m, unsigned lobes, size_t n,
-                             pgloss_vec3_array wo, const float *u0, const float *u1,
-                             const float *u2, pgloss_vec3_out wi, float *pdf,
-                             pgloss_rgb_out weight, unsigned char *lobe)
-{
-    for (size_t j = 0; j < n; ++j) {
-        const pgloss_vec3 o = {wo.x[j], wo.y[j], wo.z[j]};
-        const float u[3] = {u0[j], u1[j], u2[j]};
-        pgloss_sample_record s;
-        (void)pgloss_sample(m, o, u, lobes, &s);
-        pgloss__put_sample_record(&s, j, wi, pdf, weight, lobe);
-    }
-}
-
-pgloss_status pgloss_sample_batch_ex(const pgloss_batch_options *options,
-                                     const pgloss_material *m, unsigned lobes, size_t n,
-                                     pgloss_vec3_array wo, const float *u0, const float *u1,
-                                     const float *u2, pgloss_vec3_out wi, float *pdf,
-                                     pgloss_rgb_out weight, unsigned char *lobe)
-{
-    kernels kn;
-    if (!select_kernels(options, &kn))
-        return PGLOSS_ERR_ARGUMENT;
-    if (n == 0)
-        return PGLOSS_OK;
-    if (!m || !arrays_ok(wo) || !u0 || !u1 || !u2 || !wi.x || !wi.y || !wi.z || !pdf ||
-        !weight.r || !weight.g || !weight.b)
-        return PGLOSS_ERR_NULL;
-    if (kn.sample) {
-        const unsigned active = lobes & m->lobes & PGLOSS_LOBE_ALL;
-        const pgloss__batch_consts k = make_consts(m, active);
-        kn.sample(&k, active, (int)m->normalization, n, wo, u0, u1, u2, wi, pdf, weight, lobe);
-    } else {
-        sample_reference(m, lobes, n, wo, u0, u1, u2, wi, pdf, weight, lobe);
-    }
-
-    /* Report the first invalid element's reason, in the scalar function's order. */
-    for (size_t j = 0; j < n; ++j) {
-        if (isnan(u0[j]) || isnan(u1[j]) || isnan(u2[j]))
-            return PGLOSS_ERR_RANDOM;
-        const pgloss_vec3 v = {wo.x[j], wo.y[j], wo.z[j]};
-        double o[3];
-        if (!pgloss__normalize(v, o))
-            return PGLOSS_ERR_DIRECTION;
-    }
+    for (int k = 0; k < 6; ++k)
+        if (!(fabs(v[k]) <= (double)FLT_MAX))
+            return PGLOSS_ERR_NONFINITE;
+    if (v[0] < 0.0 || v[1] < 0.0 || v[2] < 0.0 || v[3] < 0.0)
+        return PGLOSS_ERR_NEGATIVE;
+    if (!(v[4] > 0.0) || !(v[5] > 0.0))
+        return PGLOSS_ERR_ALPHA;
     return PGLOSS_OK;
 }
 
-pgloss_status pgloss_sample_batch(const pgloss_material *m, unsigned lobes, size_t n,
-                                  pgloss_vec3_array wo, const float *u0, const float *u1,
-                                  const float *u2, pgloss_vec3_out wi, float *pdf,
-                                  pgloss_rgb_out weight, unsigned char *lobe)
+/* A direction's validity as the scalar functions decide it: not zero-length, finite. */
+static int direction_ok(double x, double y, double z)
 {
-    return pgloss_sample_batch_ex(NULL, m, lobes, n, wo, u0, u1, u2, wi, pdf, weight, lobe);
+    if (!isfinite(x) || !isfinite(y) || !isfinite(z))
+        return 0;
+    return x != 0.0 || y != 0.0 || z != 0.0;
+}
+
+/* The inputs of a call, as the statuses read them. */
+typedef struct inputs {
+    size_t size; /* bytes per value */
+    const pgloss_physical_array *ms;
+    pgloss_strided3 wo, second; /* wi (eval) or u (sample) */
+    int sample;
+} inputs;
+
+static double at1(pgloss_strided s, size_t j, size_t size)
+{
+    return pgloss__value_at(s.ptr, s.stride, j, size);
+}
+static double at3(pgloss_strided3 s, int c, size_t j, size_t size)
+{
+    return pgloss__value_at(s.ptr[c], s.stride, j, size);
+}
+
+static pgloss_status elem_status(const inputs *a, size_t j)
+{
+    const size_t sz = a->size;
+    if (a->ms) {
+        const pgloss_physical_array *p = a->ms;
+        const double v[6] = {at3(p->rho_d, 0, j, sz), at3(p->rho_d, 1, j, sz),
+                             at3(p->rho_d, 2, j, sz), at1(p->rho_s, j, sz),
+                             at1(p->alpha_x, j, sz),
+                             at1(p->alpha_y.ptr ? p->alpha_y : p->alpha_x, j, sz)};
+        const pgloss_status s = material_status(v);
+        if (s != PGLOSS_OK)
+            return s;
+    }
+    if (a->sample && (isnan(at3(a->second, 0, j, sz)) || isnan(at3(a->second, 1, j, sz)) ||
+                      isnan(at3(a->second, 2, j, sz))))
+        return PGLOSS_ERR_RANDOM;
+    if (!direction_ok(at3(a->wo, 0, j, sz), at3(a->wo, 1, j, sz), at3(a->wo, 2, j, sz)))
+        return PGLOSS_ERR_DIRECTION;
+    if (!a->sample &&
+        !direction_ok(at3(a->second, 0, j, sz), at3(a->second, 1, j, sz), at3(a->second, 2, j, sz)))
+        return PGLOSS_ERR_DIRECTION;
+    return PGLOSS_OK;
+}
+
+/* Fills status (if wanted) and returns the first non-OK status. */
+static pgloss_status statuses(const inputs *a, size_t n, signed char *status)
+{
+    pgloss_status first = PGLOSS_OK;
+    for (size_t j = 0; j < n; ++j) {
+        const pgloss_status st = elem_status(a, j);
+        if (status)
+            status[j] = (signed char)st;
+        else if (st != PGLOSS_OK)
+            return st;
+        if (first == PGLOSS_OK)
+            first = st;
+    }
+    return first;
+}
+
+/* ---- columns of a chunk ------------------------------------------------------------------- */
+
+/* A chunk's input and output columns: in place where contiguous, else in these buffers. */
+typedef struct chunk {
+    double in[12][B], out[7][B];
+    const void *o[3], *x[3], *mat[6]; /* wo; wi or u; ρd r g b, ρs, αx, αy */
+    void *y[7];                       /* f or wi (3), pdf, weight (3) */
+} chunk;
+
+static void gather3(pgloss_strided3 s, size_t size, size_t base, size_t m, double (*buf)[B],
+                    const void **col)
+{
+    for (int c = 0; c < 3; ++c)
+        col[c] = pgloss__gather(s.ptr[c], s.stride, size, base, m, buf[c]);
+}
+
+static void gather_materials(const pgloss_physical_array *p, size_t size, size_t base, size_t m,
+                             chunk *c)
+{
+    gather3(p->rho_d, size, base, m, &c->in[6], c->mat);
+    c->mat[3] = pgloss__gather(p->rho_s.ptr, p->rho_s.stride, size, base, m, c->in[9]);
+    c->mat[4] = pgloss__gather(p->alpha_x.ptr, p->alpha_x.stride, size, base, m, c->in[10]);
+    c->mat[5] = p->alpha_y.ptr
+                    ? pgloss__gather(p->alpha_y.ptr, p->alpha_y.stride, size, base, m, c->in[11])
+                    : c->mat[4];
+}
+
+static void out3(pgloss_strided3_out s, size_t size, size_t base, double (*buf)[B], void **col)
+{
+    for (int c = 0; c < 3; ++c)
+        col[c] = pgloss__out(s.ptr[c], s.stride, size, base, buf[c]);
+}
+
+static void scatter3(pgloss_strided3_out s, size_t size, size_t base, size_t m, void *const *col)
+{
+    for (int c = 0; c < 3; ++c)
+        pgloss__scatter(s.ptr[c], s.stride, size, base, m, col[c]);
+}
+
+static pgloss__materials_f materials_f(const chunk *c, int norm)
+{
+    const pgloss__materials_f r = {c->mat[0], c->mat[1], c->mat[2], c->mat[3],
+                                   c->mat[4], c->mat[5], (pgloss_normalization)norm};
+    return r;
+}
+
+static pgloss__materials_d materials_d(const chunk *c, int norm)
+{
+    const pgloss__materials_d r = {c->mat[0], c->mat[1], c->mat[2], c->mat[3],
+                                   c->mat[4], c->mat[5], (pgloss_normalization)norm};
+    return r;
+}
+
+/* Element j's pgloss_material of a float chunk (black where invalid: pgloss_material_init). */
+static void material_at(const chunk *c, size_t j, int norm, pgloss_material *out)
+{
+    pgloss_physical p;
+    for (int k = 0; k < 3; ++k)
+        p.rho_d[k] = ((const float *)c->mat[k])[j];
+    p.rho_s = ((const float *)c->mat[3])[j];
+    p.alpha_x = ((const float *)c->mat[4])[j];
+    p.alpha_y = ((const float *)c->mat[5])[j];
+    p.normalization = (pgloss_normalization)norm;
+    (void)pgloss_material_init(out, &p);
+}
+
+/* One material's constants, once per call: the float loops' (k) or the double ones' (kd);
+ * *active becomes the lobes that the loops are specialised on. */
+typedef struct setup {
+    pgloss__batch_consts k;
+    pgloss__consts_d kd;
+    unsigned active;
+    int norm;
+} setup;
+
+static void set_up(const pgloss_material *m, const pgloss_physical_array *ms, unsigned lobes,
+                   int f64, setup *s)
+{
+    s->active = lobes & PGLOSS_LOBE_ALL;
+    if (!m) {
+        s->norm = (int)ms->normalization;
+        return;
+    }
+    s->norm = (int)m->normalization;
+    if (f64) {
+        /* m's parameters widened exactly, its constants formed again in double */
+        s->kd = pgloss__consts_d_of(m->rho_d[0], m->rho_d[1], m->rho_d[2], m->rho_s, m->alpha_x,
+                                    m->alpha_y, s->norm, s->active);
+        s->active = s->kd.active;
+    } else {
+        s->active &= m->lobes;
+        s->k = make_consts(m, s->active);
+    }
+}
+
+/* ---- eval / pdf ------------------------------------------------------------------------------ */
+
+/* The REFERENCE tier on float32 columns: the scalar function element by element. */
+static size_t eval_reference(const pgloss_material *m, const chunk *c, int norm, unsigned lobes,
+                             size_t count, int want_f, int want_p)
+{
+    size_t bad = 0;
+    for (size_t j = 0; j < count; ++j) {
+        pgloss_material mj;
+        if (!m)
+            material_at(c, j, norm, &mj);
+        const float *const *o = (const float *const *)c->o, *const *i = (const float *const *)c->x;
+        const pgloss_vec3 vo = {o[0][j], o[1][j], o[2][j]}, vi = {i[0][j], i[1][j], i[2][j]};
+        pgloss_rgb v;
+        float p;
+        bad += pgloss_eval_pdf(m ? m : &mj, vo, vi, lobes, want_f ? &v : NULL,
+                               want_p ? &p : NULL) != PGLOSS_OK;
+        if (want_f) {
+            ((float *)c->y[0])[j] = v.r;
+            ((float *)c->y[1])[j] = v.g;
+            ((float *)c->y[2])[j] = v.b;
+        }
+        if (want_p)
+            ((float *)c->y[3])[j] = p;
+    }
+    /* an invalid material is black (0 outputs): the status pass finds it */
+    return m ? bad : count;
+}
+
+pgloss_status pgloss_eval_pdf_batch(const pgloss_batch_options *options,
+                                    const pgloss_material *m, const pgloss_physical_array *ms,
+                                    unsigned lobes, size_t n, pgloss_strided3 wo,
+                                    pgloss_strided3 wi, pgloss_strided3_out f,
+                                    pgloss_strided_out pdf, signed char *status)
+{
+    pgloss_batch_options o;
+    const pgloss__loops *L = pgloss__dispatch(options, &o);
+    if (!L)
+        return PGLOSS_ERR_ARGUMENT;
+    if (n == 0)
+        return PGLOSS_OK;
+    const int want_f = f.ptr[0] != NULL, want_p = pdf.ptr != NULL;
+    if ((!m && !ms) || !in3_ok(wo) || !in3_ok(wi) || (want_f && !out3_ok(f)) ||
+        !(want_f || want_p) || (ms && !physical_ok(ms)))
+        return PGLOSS_ERR_NULL;
+    if ((m && ms) || (want_f && !stride_ok(f.stride, n)) || (want_p && !stride_ok(pdf.stride, n)))
+        return PGLOSS_ERR_ARGUMENT;
+    if (ms && !pgloss__valid_normalization(ms->normalization))
+        return PGLOSS_ERR_NORMALIZATION;
+    const int f64 = o.scalar == PGLOSS_FLOAT64;
+    const size_t size = f64 ? 8 : 4;
+    setup s;
+    set_up(m, ms, lobes, f64, &s);
+    size_t bad = 0;
+    chunk c;
+    for (size_t base = 0; base < n; base += B) {
+        const size_t cnt = n - base < B ? n - base : B;
+        gather3(wo, size, base, cnt, &c.in[0], c.o);
+        gather3(wi, size, base, cnt, &c.in[3], c.x);
+        if (ms)
+            gather_materials(ms, size, base, cnt, &c);
+        c.y[0] = c.y[1] = c.y[2] = c.y[3] = NULL;
+        if (want_f)
+            out3(f, size, base, &c.out[0], c.y);
+        if (want_p)
+            c.y[3] = pgloss__out(pdf.ptr, pdf.stride, size, base, c.out[3]);
+        if (f64) {
+            const pgloss__vec3_d vo = {c.o[0], c.o[1], c.o[2]}, vi = {c.x[0], c.x[1], c.x[2]};
+            const pgloss__rgb_out_d vf = {c.y[0], c.y[1], c.y[2]};
+            const pgloss__materials_d md = materials_d(&c, s.norm);
+            bad += L->eval_pdf_d(m ? &s.kd : NULL, m ? NULL : &md, s.active, s.norm, cnt, vo, vi,
+                                 vf, c.y[3]);
+        } else if (o.precision == PGLOSS_PRECISION_REFERENCE) {
+            bad += eval_reference(m, &c, s.norm, lobes, cnt, want_f, want_p);
+        } else {
+            const pgloss__vec3_f vo = {c.o[0], c.o[1], c.o[2]}, vi = {c.x[0], c.x[1], c.x[2]};
+            const pgloss__rgb_out_f vf = {c.y[0], c.y[1], c.y[2]};
+            const pgloss__materials_f mf = materials_f(&c, s.norm);
+            /* per-element materials: the FLOAT loops in every tier */
+            bad += m ? L->eval_pdf[o.precision == PGLOSS_PRECISION_FAST](&s.k, s.active, s.norm,
+                                                                        cnt, vo, vi, vf, c.y[3])
+                     : L->eval_pdf_materials(&mf, s.active, cnt, vo, vi, vf, c.y[3]);
+        }
+        if (want_f)
+            scatter3(f, size, base, cnt, c.y);
+        if (want_p)
+            pgloss__scatter(pdf.ptr, pdf.stride, size, base, cnt, c.y[3]);
+    }
+    if (!bad && !status)
+        return PGLOSS_OK;
+    const inputs a = {size, ms, wo, wi, 0};
+    return statuses(&a, n, status);
+}
+
+/* ---- sampling -------------------------------------------------------------------------------- */
+
+/* The REFERENCE tier on float32 columns: pgloss_sample element by element (an invalid
+ * material is black: no lobe, wi = (0, 0, 1), 0 outputs). */
+static void sample_reference(const pgloss_material *m, const chunk *c, int norm, unsigned lobes,
+                             size_t count, unsigned char *lobe)
+{
+    const float *const *o = (const float *const *)c->o, *const *u = (const float *const *)c->x;
+    float *const *y = (float *const *)c->y;
+    for (size_t j = 0; j < count; ++j) {
+        pgloss_material mj;
+        if (!m)
+            material_at(c, j, norm, &mj);
+        const pgloss_vec3 vo = {o[0][j], o[1][j], o[2][j]};
+        const float uj[3] = {u[0][j], u[1][j], u[2][j]};
+        pgloss_sample_record r;
+        (void)pgloss_sample(m ? m : &mj, vo, uj, lobes, &r);
+        y[0][j] = r.wi.x;
+        y[1][j] = r.wi.y;
+        y[2][j] = r.wi.z;
+        y[3][j] = r.pdf;
+        y[4][j] = r.weight.r;
+        y[5][j] = r.weight.g;
+        y[6][j] = r.weight.b;
+        if (lobe)
+            lobe[j] = (unsigned char)r.lobe;
+    }
+}
+
+pgloss_status pgloss_sample_batch(const pgloss_batch_options *options, const pgloss_material *m,
+                                  const pgloss_physical_array *ms, unsigned lobes, size_t n,
+                                  pgloss_strided3 wo, pgloss_strided3 u, pgloss_strided3_out wi,
+                                  pgloss_strided_out pdf, pgloss_strided3_out weight,
+                                  unsigned char *lobe, signed char *status)
+{
+    pgloss_batch_options o;
+    const pgloss__loops *L = pgloss__dispatch(options, &o);
+    if (!L)
+        return PGLOSS_ERR_ARGUMENT;
+    if (n == 0)
+        return PGLOSS_OK;
+    if ((!m && !ms) || !in3_ok(wo) || !in3_ok(u) || !out3_ok(wi) || !pdf.ptr ||
+        !out3_ok(weight) || (ms && !physical_ok(ms)))
+        return PGLOSS_ERR_NULL;
+    if ((m && ms) || !stride_ok(wi.stride, n) || !stride_ok(pdf.stride, n) ||
+        !stride_ok(weight.stride, n))
+        return PGLOSS_ERR_ARGUMENT;
+    if (ms && !pgloss__valid_normalization(ms->normalization))
+        return PGLOSS_ERR_NORMALIZATION;
+    const int f64 = o.scalar == PGLOSS_FLOAT64;
+    const size_t size = f64 ? 8 : 4;
+    setup s;
+    set_up(m, ms, lobes, f64, &s);
+    chunk c;
+    for (size_t base = 0; base < n; base += B) {
+        const size_t cnt = n - base < B ? n - base : B;
+        unsigned char *lb = lobe ? lobe + base : NULL;
+        gather3(wo, size, base, cnt, &c.in[0], c.o);
+        gather3(u, size, base, cnt, &c.in[3], c.x);
+        if (ms)
+            gather_materials(ms, size, base, cnt, &c);
+        out3(wi, size, base, &c.out[0], c.y);
+        c.y[3] = pgloss__out(pdf.ptr, pdf.stride, size, base, c.out[3]);
+        out3(weight, size, base, &c.out[4], c.y + 4);
+        if (f64) {
+            const pgloss__vec3_d vo = {c.o[0], c.o[1], c.o[2]};
+            const pgloss__vec3_out_d vw = {c.y[0], c.y[1], c.y[2]};
+            const pgloss__rgb_out_d vg = {c.y[4], c.y[5], c.y[6]};
+            const pgloss__materials_d md = materials_d(&c, s.norm);
+            L->sample_d(m ? &s.kd : NULL, m ? NULL : &md, s.active, s.norm, cnt, vo, c.x[0],
+                        c.x[1], c.x[2], vw, c.y[3], vg, lb);
+        } else if (o.precision == PGLOSS_PRECISION_REFERENCE) {
+            sample_reference(m, &c, s.norm, lobes, cnt, lb);
+        } else {
+            const pgloss__vec3_f vo = {c.o[0], c.o[1], c.o[2]};
+            const pgloss__vec3_out_f vw = {c.y[0], c.y[1], c.y[2]};
+            const pgloss__rgb_out_f vg = {c.y[4], c.y[5], c.y[6]};
+            const pgloss__materials_f mf = materials_f(&c, s.norm);
+            if (m)
+                L->sample[o.precision == PGLOSS_PRECISION_FAST](&s.k, s.active, s.norm, cnt, vo,
+                                                                c.x[0], c.x[1], c.x[2], vw,
+                                                                c.y[3], vg, lb);
+            else
+                L->sample_materials(&mf, s.active, cnt, vo, c.x[0], c.x[1], c.x[2], vw, c.y[3],
+                                    vg, lb);
+        }
+        scatter3(wi, size, base, cnt, c.y);
+        pgloss__scatter(pdf.ptr, pdf.stride, size, base, cnt, c.y[3]);
+        scatter3(weight, size, base, cnt, c.y + 4);
+    }
+    const inputs a = {size, ms, wo, u, 1};
+    return statuses(&a, n, status);
 }

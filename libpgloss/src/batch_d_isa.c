@@ -148,7 +148,7 @@ PGLOSS__D_FN pgloss__consts_d consts_at_d(const pgloss__consts_d *kc, const mat_
                                good > 0.0 ? ay : 1.0, norm, active);
 }
 
-PGLOSS__D_FN mat_ptrs mat_ptrs_of(const pgloss_physical_array *pa)
+PGLOSS__D_FN mat_ptrs mat_ptrs_of(const pgloss__materials_d *pa)
 {
     mat_ptrs m = {NULL, NULL, NULL, NULL, NULL, NULL};
     if (pa) {
@@ -242,7 +242,7 @@ PGLOSS__D_FN size_t write_out_d(size_t m, const int want_f, const int want_p,
     return bad;
 }
 
-PGLOSS__D_FN size_t eval_d_loop(const pgloss__consts_d *k, const pgloss_physical_array *pa,
+PGLOSS__D_FN size_t eval_d_loop(const pgloss__consts_d *k, const pgloss__materials_d *pa,
                                 const int per_element, const unsigned active, const int norm,
                                 const int want_f, const int want_p, size_t n,
                                 const double *oxs, const double *oys, const double *ozs,
@@ -301,10 +301,10 @@ PGLOSS__D_FN size_t eval_d_loop(const pgloss__consts_d *k, const pgloss_physical
      : active == PGLOSS_LOBE_ALL      ? BY_NORM(LOOP, PGLOSS_LOBE_ALL)                             \
                                       : LOOP(PGLOSS_LOBE_NONE, PGLOSS_NORM_WARD))
 
-PGLOSS__D_FN size_t eval_d_outputs(const pgloss__consts_d *k, const pgloss_physical_array *pa,
+PGLOSS__D_FN size_t eval_d_outputs(const pgloss__consts_d *k, const pgloss__materials_d *pa,
                                    const int per_element, unsigned active, int norm, size_t n,
-                                   pgloss_vec3_array_d wo, pgloss_vec3_array_d wi,
-                                   pgloss_rgb_out_d f, double *pdf)
+                                   pgloss__vec3_d wo, pgloss__vec3_d wi,
+                                   pgloss__rgb_out_d f, double *pdf)
 {
 #define LOOP_FP(A, N)                                                                              \
     eval_d_loop(k, pa, per_element, A, N, 1, 1, n, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, f.r, f.g,   \
@@ -325,9 +325,9 @@ PGLOSS__D_FN size_t eval_d_outputs(const pgloss__consts_d *k, const pgloss_physi
 #undef LOOP_P
 }
 
-size_t EVAL_PDF_D_FN(const pgloss__consts_d *k, const pgloss_physical_array *pa, unsigned active,
-                     int norm, size_t n, pgloss_vec3_array_d wo, pgloss_vec3_array_d wi,
-                     pgloss_rgb_out_d f, double *pdf)
+size_t EVAL_PDF_D_FN(const pgloss__consts_d *k, const pgloss__materials_d *pa, unsigned active,
+                     int norm, size_t n, pgloss__vec3_d wo, pgloss__vec3_d wi,
+                     pgloss__rgb_out_d f, double *pdf)
 {
     if (pa)
         return eval_d_outputs(NULL, pa, 1, active, norm, n, wo, wi, f, pdf);
@@ -453,11 +453,11 @@ PGLOSS__D_FN void derive_chunk_d(const mat_ptrs *mp, const unsigned active, cons
  * NaN, wo zero or not finite, material invalid) is drawn as (0, 0, 1) with lobe NONE and
  * zeros, as is one without an active lobe; a valid one below the horizon or with wo·h <= 0
  * keeps its direction and lobe, with pdf and weight 0. */
-PGLOSS__D_FN void sample_d_loop(const pgloss__consts_d *k, const pgloss_physical_array *pa,
+PGLOSS__D_FN void sample_d_loop(const pgloss__consts_d *k, const pgloss__materials_d *pa,
                                 const int per_element, const unsigned active, const int norm,
-                                size_t n, pgloss_vec3_array_d wo, const double *u0s,
-                                const double *u1s, const double *u2s, pgloss_vec3_out_d wi,
-                                double *pdf, pgloss_rgb_out_d weight, unsigned char *lobe)
+                                size_t n, pgloss__vec3_d wo, const double *u0s,
+                                const double *u1s, const double *u2s, pgloss__vec3_out_d wi,
+                                double *pdf, pgloss__rgb_out_d weight, unsigned char *lobe)
 {
     const pgloss__consts_d kc = per_element ? pgloss__consts_d_of(0, 0, 0, 0, 1, 1, 0, 0) : *k;
     const mat_ptrs mp = mat_ptrs_of(pa);
@@ -533,9 +533,9 @@ PGLOSS__D_FN void sample_d_loop(const pgloss__consts_d *k, const pgloss_physical
     }
 }
 
-void SAMPLE_D_FN(const pgloss__consts_d *k, const pgloss_physical_array *pa, unsigned active,
-                 int norm, size_t n, pgloss_vec3_array_d wo, const double *u0s, const double *u1s,
-                 const double *u2s, pgloss_vec3_out_d wi, double *pdf, pgloss_rgb_out_d weight,
+void SAMPLE_D_FN(const pgloss__consts_d *k, const pgloss__materials_d *pa, unsigned active,
+                 int norm, size_t n, pgloss__vec3_d wo, const double *u0s, const double *u1s,
+                 const double *u2s, pgloss__vec3_out_d wi, double *pdf, pgloss__rgb_out_d weight,
                  unsigned char *lobe)
 {
 #define LOOP_PE(A, N) sample_d_loop(NULL, pa, 1, A, N, n, wo, u0s, u1s, u2s, wi, pdf, weight, lobe)

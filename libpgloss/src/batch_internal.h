@@ -1,20 +1,33 @@
 // SPDX-FileCopyrightText: 2026 The pgloss authors
 // SPDX-License-Identifier: Apache-2.0
-/* The batched paths, shared between batch.c (public entry points, validation, ISA and tier
- * dispatch) and batch_isa.c (the loops, compiled once per ISA × tier). Not installed. */
+/* The batched paths, shared between the front ends (batch.c, perceptual_batch.c: arguments,
+ * strided arrays, statuses), the dispatcher (dispatch.c) and the loops (batch_isa.c,
+ * batch_d_isa.c, perceptual_batch_isa.c, compiled once per ISA). The loops take contiguous
+ * columns (the front ends gather strided arrays into them). Not installed. */
 #ifndef PGLOSS_BATCH_INTERNAL_H
 #define PGLOSS_BATCH_INTERNAL_H
 
 #include <stddef.h>
 #include "pgloss/batch.h"
-#include "pgloss/batch_materials.h"
 #include "pgloss/inline.h"
+#include "perceptual_batch_isa.h"
 
-/* The options of a batched call (NULL: FLOAT tier, AUTO): 0 if invalid (an unknown precision,
- * or an ISA this build or CPU lacks), else 1 with *prec and *isa (AUTO resolved to the best
- * ISA). The one decision for batch.c and batch_materials.c. */
-int pgloss__batch_options_resolve(const pgloss_batch_options *opt, pgloss_precision *prec,
-                                  pgloss_isa *isa);
+/* Contiguous columns of the loops: directions and RGB values, read or written. */
+typedef struct pgloss__vec3_f { const float *x, *y, *z; } pgloss__vec3_f;
+typedef struct pgloss__vec3_out_f { float *x, *y, *z; } pgloss__vec3_out_f;
+typedef struct pgloss__rgb_out_f { float *r, *g, *b; } pgloss__rgb_out_f;
+typedef struct pgloss__vec3_d { const double *x, *y, *z; } pgloss__vec3_d;
+typedef struct pgloss__vec3_out_d { double *x, *y, *z; } pgloss__vec3_out_d;
+typedef struct pgloss__rgb_out_d { double *r, *g, *b; } pgloss__rgb_out_d;
+/* Per-element materials as columns (alpha_y never NULL here). */
+typedef struct pgloss__materials_f {
+    const float *rho_d_r, *rho_d_g, *rho_d_b, *rho_s, *alpha_x, *alpha_y;
+    pgloss_normalization normalization;
+} pgloss__materials_f;
+typedef struct pgloss__materials_d {
+    const double *rho_d_r, *rho_d_g, *rho_d_b, *rho_s, *alpha_x, *alpha_y;
+    pgloss_normalization normalization;
+} pgloss__materials_d;
 
 /* Per-call constants of the loops, derived from the material and the active lobes. */
 typedef struct pgloss__batch_consts {
@@ -23,37 +36,54 @@ typedef struct pgloss__batch_consts {
     float inv_ax2_log2, inv_ay2_log2; /* log2(e)/α²: eq. 2's exponent in base 2 (FAST blocks) */
     int may_overflow;       /* f or pdf can exceed FLT_MAX/2 at some direction (FAST blocks) */
 } pgloss__batch_consts;
+struct pgloss__consts_d;
 
+/* The loops, over n contiguous elements; f.r == NULL / pdf == NULL: output not wanted.
+ * eval_pdf returns the number of invalid elements met (for one material: invalid directions,
+ * wo and wi counted separately). One material: k, with `active` its active lobes; per
+ * element: the materials, with `active` the call's mask & PGLOSS_LOBE_ALL. The double loops
+ * take one of k (NULL) and pa (NULL). */
 typedef size_t (*pgloss__eval_pdf_fn)(const pgloss__batch_consts *k, unsigned active, int norm,
-                                      size_t n, pgloss_vec3_array wo, pgloss_vec3_array wi,
-                                      pgloss_rgb_out f, float *pdf);
+                                      size_t n, pgloss__vec3_f wo, pgloss__vec3_f wi,
+                                      pgloss__rgb_out_f f, float *pdf);
 typedef void (*pgloss__sample_fn)(const pgloss__batch_consts *k, unsigned active, int norm,
-                                  size_t n, pgloss_vec3_array wo, const float *u0,
-                                  const float *u1, const float *u2, pgloss_vec3_out wi,
-                                  float *pdf, pgloss_rgb_out weight, unsigned char *lobe);
+                                  size_t n, pgloss__vec3_f wo, const float *u0,
+                                  const float *u1, const float *u2, pgloss__vec3_out_f wi,
+                                  float *pdf, pgloss__rgb_out_f weight, unsigned char *lobe);
+typedef size_t (*pgloss__eval_pdf_materials_fn)(const pgloss__materials_f *, unsigned, size_t,
+                                                pgloss__vec3_f, pgloss__vec3_f,
+                                                pgloss__rgb_out_f, float *);
+typedef void (*pgloss__sample_materials_fn)(const pgloss__materials_f *, unsigned, size_t,
+                                            pgloss__vec3_f, const float *, const float *,
+                                            const float *, pgloss__vec3_out_f, float *,
+                                            pgloss__rgb_out_f, unsigned char *);
+typedef size_t (*pgloss__eval_pdf_d_fn)(const struct pgloss__consts_d *,
+                                        const pgloss__materials_d *, unsigned, int, size_t,
+                                        pgloss__vec3_d, pgloss__vec3_d, pgloss__rgb_out_d,
+                                        double *);
+typedef void (*pgloss__sample_d_fn)(const struct pgloss__consts_d *, const pgloss__materials_d *,
+                                    unsigned, int, size_t, pgloss__vec3_d, const double *,
+                                    const double *, const double *, pgloss__vec3_out_d,
+                                    double *, pgloss__rgb_out_d, unsigned char *);
 
-/* One pair of loops per (ISA, tier) built; f.r == NULL / pdf == NULL: output not wanted.
- * eval_pdf returns the number of invalid directions met (wo and wi counted separately). */
-#define PGLOSS__DECLARE_KERNELS(isa, tier)                                                        \
-    size_t pgloss__eval_pdf_##isa##_##tier(const pgloss__batch_consts *, unsigned, int, size_t,  \
-                                           pgloss_vec3_array, pgloss_vec3_array,                 \
-                                           pgloss_rgb_out, float *);                             \
-    void pgloss__sample_##isa##_##tier(const pgloss__batch_consts *, unsigned, int, size_t,       \
-                                       pgloss_vec3_array, const float *, const float *,          \
-                                       const float *, pgloss_vec3_out, float *, pgloss_rgb_out,  \
-                                       unsigned char *);
+/* Every loop of one ISA: what dispatch.c hands the front ends. */
+typedef struct pgloss__loops {
+    pgloss__eval_pdf_fn eval_pdf[2]; /* [FAST tier] */
+    pgloss__sample_fn sample[2];
+    pgloss__eval_pdf_materials_fn eval_pdf_materials;
+    pgloss__sample_materials_fn sample_materials;
+    pgloss__eval_pdf_d_fn eval_pdf_d;
+    pgloss__sample_d_fn sample_d;
+#define PGLOSS__LOOP_FIELD(name) pgloss__perceptual_loop name;
+    PGLOSS__PERCEPTUAL_LOOPS(PGLOSS__LOOP_FIELD)
+#undef PGLOSS__LOOP_FIELD
+} pgloss__loops;
 
-/* Per-element materials (pgloss/batch_materials.h): one pair per ISA, FLOAT tier; `active`
- * is the call's mask & PGLOSS_LOBE_ALL, m->alpha_y is never NULL here. eval_pdf returns the
- * number of invalid elements met (materials and directions). */
-#define PGLOSS__DECLARE_MATERIAL_KERNELS(isa)                                                     \
-    size_t pgloss__eval_pdf_materials_##isa(const pgloss_material_array *, unsigned,     \
-                                                    size_t, pgloss_vec3_array, pgloss_vec3_array, \
-                                                    pgloss_rgb_out, float *);                     \
-    void pgloss__sample_materials_##isa(const pgloss_material_array *, unsigned, size_t,  \
-                                                pgloss_vec3_array, const float *, const float *,  \
-                                                const float *, pgloss_vec3_out, float *,          \
-                                                pgloss_rgb_out, unsigned char *);
+/* The one dispatcher: the options of a call resolved (NULL: the defaults), or NULL if they
+ * are invalid (an unknown tier or scalar type, an ISA this build or CPU lacks). *opt_out
+ * receives the options with AUTO resolved. */
+const pgloss__loops *pgloss__dispatch(const pgloss_batch_options *opt,
+                                      pgloss_batch_options *opt_out);
 
 /* Whether a float material parameter set passes pgloss_material_init's checks: finite (for a
  * float, |v| <= FLT_MAX), ρ >= 0, α > 0. */
@@ -69,8 +99,8 @@ PGLOSS_INLINE_FN int pgloss__material_valid_f(float r, float g, float b, float s
 /* Element j of a float batch's sample outputs from the scalar pgloss_sample's record (the
  * reference tier of both batch families); lobe may be NULL. */
 PGLOSS_INLINE_FN void pgloss__put_sample_record(const pgloss_sample_record *s, size_t j,
-                                                pgloss_vec3_out wi, float *pdf,
-                                                pgloss_rgb_out weight, unsigned char *lobe)
+                                                pgloss__vec3_out_f wi, float *pdf,
+                                                pgloss__rgb_out_f weight, unsigned char *lobe)
 {
     wi.x[j] = s->wi.x;
     wi.y[j] = s->wi.y;
@@ -82,46 +112,5 @@ PGLOSS_INLINE_FN void pgloss__put_sample_record(const pgloss_sample_record *s, s
     if (lobe)
         lobe[j] = (unsigned char)s->lobe;
 }
-
-PGLOSS__DECLARE_MATERIAL_KERNELS(baseline)
-#if defined(PGLOSS_HAVE_AVX2)
-PGLOSS__DECLARE_MATERIAL_KERNELS(avx2)
-#endif
-#if defined(PGLOSS_HAVE_AVX512)
-PGLOSS__DECLARE_MATERIAL_KERNELS(avx512)
-#endif
-
-/* The double loops (batch_d_isa.c), one pair per ISA: k for one material, or pa (non-NULL)
- * for one per element (pa->alpha_y never NULL here). eval_pdf returns the number of invalid
- * elements. */
-struct pgloss__consts_d;
-#define PGLOSS__DECLARE_DOUBLE_KERNELS(isa)                                                       \
-    size_t pgloss__eval_pdf_batch_d_##isa(const struct pgloss__consts_d *,                        \
-                                          const pgloss_physical_array *, unsigned, int, size_t,   \
-                                          pgloss_vec3_array_d, pgloss_vec3_array_d,               \
-                                          pgloss_rgb_out_d, double *);                            \
-    void pgloss__sample_batch_d_##isa(const struct pgloss__consts_d *,                            \
-                                      const pgloss_physical_array *, unsigned, int, size_t,       \
-                                      pgloss_vec3_array_d, const double *, const double *,        \
-                                      const double *, pgloss_vec3_out_d, double *,                \
-                                      pgloss_rgb_out_d, unsigned char *);
-PGLOSS__DECLARE_DOUBLE_KERNELS(baseline)
-#if defined(PGLOSS_HAVE_AVX2)
-PGLOSS__DECLARE_DOUBLE_KERNELS(avx2)
-#endif
-#if defined(PGLOSS_HAVE_AVX512)
-PGLOSS__DECLARE_DOUBLE_KERNELS(avx512)
-#endif
-
-PGLOSS__DECLARE_KERNELS(baseline, float)
-PGLOSS__DECLARE_KERNELS(baseline, fast)
-#if defined(PGLOSS_HAVE_AVX2)
-PGLOSS__DECLARE_KERNELS(avx2, float)
-PGLOSS__DECLARE_KERNELS(avx2, fast)
-#endif
-#if defined(PGLOSS_HAVE_AVX512)
-PGLOSS__DECLARE_KERNELS(avx512, float)
-PGLOSS__DECLARE_KERNELS(avx512, fast)
-#endif
 
 #endif

@@ -83,7 +83,7 @@ PGLOSS_INLINE_FN pgloss_inl_consts consts_at(const pgloss__batch_consts *restric
  * lobes that the mask and the element's material share. An invalid element gets a black
  * material (and ok = 0, so 0 outputs). Returns the number of invalid elements. */
 PGLOSS_INLINE_FN size_t derive_chunk(unsigned lobes, int norm, size_t m,
-                                     const pgloss_material_array *ma, size_t base,
+                                     const pgloss__materials_f *ma, size_t base,
                                      chunk_consts *restrict c, int *restrict ok)
 {
     const float *restrict rr = ma->rho_d_r + base, *restrict rg = ma->rho_d_g + base;
@@ -306,7 +306,7 @@ PGLOSS_INLINE_FN size_t eval_pdf_loop_v(const pgloss__batch_consts *restrict k, 
 #endif
 
 size_t EVAL_PDF_FN(const pgloss__batch_consts *k, unsigned active, int norm, size_t n,
-                   pgloss_vec3_array wo, pgloss_vec3_array wi, pgloss_rgb_out f, float *pdf)
+                   pgloss__vec3_f wo, pgloss__vec3_f wi, pgloss__rgb_out_f f, float *pdf)
 {
 #define LOOP(A, N) EVAL_PDF_LOOP(k, A, N, n, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, f.r, f.g, f.b, pdf)
     return PGLOSS__BY_LOBES(LOOP);
@@ -318,7 +318,7 @@ size_t EVAL_PDF_FN(const pgloss__batch_consts *k, unsigned active, int norm, siz
 /* Three passes per chunk (wo, then the drawn direction, then f and pdf at it), for the
  * same reason as eval_pdf_loop. */
 PGLOSS_INLINE_FN void sample_loop(const pgloss__batch_consts *restrict k,
-                               const pgloss_material_array *ma, const int per_element,
+                               const pgloss__materials_f *ma, const int per_element,
                                const unsigned active, const int norm, size_t n,
                                const float *restrict oxs,
                                const float *restrict oys, const float *restrict ozs,
@@ -395,8 +395,8 @@ PGLOSS_INLINE_FN void sample_loop(const pgloss__batch_consts *restrict k,
 }
 
 void SAMPLE_FN(const pgloss__batch_consts *k, unsigned active, int norm, size_t n,
-               pgloss_vec3_array wo, const float *u0, const float *u1, const float *u2,
-               pgloss_vec3_out wi, float *pdf, pgloss_rgb_out weight, unsigned char *lobe)
+               pgloss__vec3_f wo, const float *u0, const float *u1, const float *u2,
+               pgloss__vec3_out_f wi, float *pdf, pgloss__rgb_out_f weight, unsigned char *lobe)
 {
 #define LOOP(A, N)                                                                                 \
     sample_loop(k, NULL, 0, A, N, n, wo.x, wo.y, wo.z, u0, u1, u2, wi.x, wi.y, wi.z, pdf,       \
@@ -414,7 +414,7 @@ void SAMPLE_FN(const pgloss__batch_consts *k, unsigned active, int norm, size_t 
 #define SAMPLE_MATERIALS_FN PGLOSS__NAME2(pgloss__sample_materials, PGLOSS_ISA)
 
 /* As eval_pdf_loop, with each chunk's constants derived from its materials first. */
-PGLOSS_INLINE_FN size_t eval_pdf_materials_loop(const pgloss_material_array *ma,
+PGLOSS_INLINE_FN size_t eval_pdf_materials_loop(const pgloss__materials_f *ma,
                                                 const unsigned active, const int norm, size_t n,
                                                 const float *restrict oxs,
                                                 const float *restrict oys,
@@ -442,8 +442,8 @@ PGLOSS_INLINE_FN size_t eval_pdf_materials_loop(const pgloss_material_array *ma,
 
 /* Here `active` is the call's mask (lobes & PGLOSS_LOBE_ALL): each element narrows it to the
  * lobes its material has through its constants. */
-size_t EVAL_PDF_MATERIALS_FN(const pgloss_material_array *m, unsigned active, size_t n,
-                             pgloss_vec3_array wo, pgloss_vec3_array wi, pgloss_rgb_out f,
+size_t EVAL_PDF_MATERIALS_FN(const pgloss__materials_f *m, unsigned active, size_t n,
+                             pgloss__vec3_f wo, pgloss__vec3_f wi, pgloss__rgb_out_f f,
                              float *pdf)
 {
     const int norm = (int)m->normalization;
@@ -453,9 +453,9 @@ size_t EVAL_PDF_MATERIALS_FN(const pgloss_material_array *m, unsigned active, si
 #undef LOOP
 }
 
-void SAMPLE_MATERIALS_FN(const pgloss_material_array *m, unsigned active, size_t n,
-                         pgloss_vec3_array wo, const float *u0, const float *u1, const float *u2,
-                         pgloss_vec3_out wi, float *pdf, pgloss_rgb_out weight,
+void SAMPLE_MATERIALS_FN(const pgloss__materials_f *m, unsigned active, size_t n,
+                         pgloss__vec3_f wo, const float *u0, const float *u1, const float *u2,
+                         pgloss__vec3_out_f wi, float *pdf, pgloss__rgb_out_f weight,
                          unsigned char *lobe)
 {
     const int norm = (int)m->normalization;

@@ -1,24 +1,36 @@
 // SPDX-FileCopyrightText: 2026 The pgloss authors
 // SPDX-License-Identifier: Apache-2.0
 /* The batched perceptual and colour functions (pgloss/perceptual_batch.h): argument checks,
- * then one driver (run) over chunks of elements, each function giving the code of a chunk.
- * Every function runs the vectorised loops of perceptual_batch_isa.c, on the best ISA of the
- * running CPU (pgloss_isa_best): the per-element code of the scalar functions
- * (perceptual_d.h), so that element j gets the scalar function's status and outputs, bit for
- * bit. */
+ * then one driver (run) over chunks: the strided inputs as contiguous columns (strided.h),
+ * the function's loop of perceptual_batch_isa.c on the best ISA of the running CPU (the
+ * scalar functions' per-element code, perceptual_d.h, so element j gets the scalar
+ * function's status and outputs bit for bit), the outputs written back. Every input of a
+ * chunk is read before its outputs are written, so an output may be its input array. */
+#include "batch_internal.h"
 #include "internal.h"
-#include "perceptual_batch_isa.h"
 #include "perceptual_d.h"
-#include "pgloss/batch.h"
 #include "pgloss/perceptual_batch.h"
+#include "strided.h"
 
-/* The returned status: first error, else first warning, else OK (perceptual_batch.h). */
+#define C PGLOSS__PCHUNK
+
+/* One call: its loop and columns. An input whose pointer is NULL is the one before it
+ * (alpha_y NULL: isotropic); an output whose pointer is NULL is not written. */
+typedef struct pcall {
+    pgloss__perceptual_loop loop;
+    pgloss__pargs args;
+    int n_in, n_out;
+    pgloss_strided in[6];
+    pgloss_strided_out out[6];
+} pcall;
+
+/* The returned status: first error, else first warning, else OK. The common case (no error)
+ * is a min/max pass over a chunk's statuses; the first error or warning is searched for only
+ * when there is one. */
 typedef struct summary {
     pgloss_status error, warning;
 } summary;
 
-/* Folds a chunk's statuses into s. The common case (no error) is a min/max pass that
- * vectorises; the first error or warning is searched for only when there is one. */
 static void note_chunk(summary *s, size_t m, const signed char *st)
 {
     int lo = 0, hi = 0;
@@ -41,176 +53,134 @@ static void note_chunk(summary *s, size_t m, const signed char *st)
     }
 }
 
-#define CHUNK 4096
-
-/* Writes the statuses of elements [base, base + m) to st (and the outputs). */
-typedef void (*chunk_fn)(const void *ctx, size_t base, size_t m, signed char *st);
-
-/* Runs f over [0, n) chunk by chunk, the statuses into status or, if NULL, a chunk buffer;
- * returns the summary. Stops summarising, not computing, at the first error. */
-static pgloss_status run(size_t n, signed char *status, chunk_fn f, const void *ctx)
+static pgloss_status run(size_t n, const pcall *c, signed char *status)
 {
     summary s = {PGLOSS_OK, PGLOSS_OK};
-    signed char buf[CHUNK];
-    for (size_t base = 0; base < n; base += CHUNK) {
-        const size_t m = n - base < CHUNK ? n - base : CHUNK;
+    double in[6][C], out[6][C];
+    signed char buf[C];
+    for (size_t base = 0; base < n; base += C) {
+        const size_t m = n - base < C ? n - base : C;
+        const double *ic[6];
+        double *oc[6] = {out[0], out[1], out[2], out[3], out[4], out[5]};
+        for (int k = 0; k < c->n_in; ++k)
+            ic[k] = c->in[k].ptr ? pgloss__gather(c->in[k].ptr, c->in[k].stride, 8, base, m, in[k])
+                                 : ic[k - 1];
         signed char *st = status ? status + base : buf;
-        f(ctx, base, m, st);
+        c->loop(m, ic, oc, &c->args, st);
+        for (int k = 0; k < c->n_out; ++k)
+            if (c->out[k].ptr)
+                pgloss__scatter(c->out[k].ptr, c->out[k].stride, 8, base, m, out[k]);
         if (s.error == PGLOSS_OK)
             note_chunk(&s, m, st);
     }
     return s.error != PGLOSS_OK ? s.error : s.warning;
 }
 
-/* The ISA of the vectorised loops: the best the CPU runs among those built. */
-#define PICK_LOOP(name)                                                                            \
-    pick_isa() == PGLOSS_ISA_AVX512 ? PICK_AVX512(name)                                            \
-    : pick_isa() == PGLOSS_ISA_AVX2 ? PICK_AVX2(name) : name##_baseline
-#if defined(PGLOSS_HAVE_AVX512)
-#define PICK_AVX512(name) name##_avx512
-#else
-#define PICK_AVX512(name) name##_baseline
-#endif
-#if defined(PGLOSS_HAVE_AVX2)
-#define PICK_AVX2(name) name##_avx2
-#else
-#define PICK_AVX2(name) name##_baseline
-#endif
-
-static pgloss_isa pick_isa(void)
+/* The common checks, in the documented order: a required pointer (the inputs but the ones
+ * that may be NULL, the outputs but alpha_y), the colour space, the outputs' strides. */
+static pgloss_status check(size_t n, const pcall *c, int optional_in, int optional_out,
+                           int space_ok)
 {
-    return pgloss_isa_best();
+    for (int k = 0; k < c->n_in; ++k)
+        if (!c->in[k].ptr && k != optional_in)
+            return PGLOSS_ERR_NULL;
+    for (int k = 0; k < c->n_out; ++k)
+        if (!c->out[k].ptr && k != optional_out)
+            return PGLOSS_ERR_NULL;
+    if (!space_ok)
+        return PGLOSS_ERR_ARGUMENT;
+    for (int k = 0; k < c->n_out; ++k)
+        if (c->out[k].ptr && c->out[k].stride == 0 && n > 1)
+            return PGLOSS_ERR_ARGUMENT;
+    return PGLOSS_OK;
 }
 
-/* ---- gloss space (eqs. 3–8) ------------------------------------------------------------- */
-
-/* Up to three inputs and three outputs of one element-wise function, and its loop. */
-typedef void (*loop3_fn)(size_t, const double *, const double *, const double *, double *,
-                         double *, double *, signed char *);
-typedef struct cols {
-    const double *x0, *x1, *x2;
-    double *y0, *y1, *y2;
-    loop3_fn loop3;
-    void (*envelope_loop)(size_t, const double *, double *, signed char *);
-    void (*match_loop)(size_t, const double *, const double *, const double *, double *,
-                       double *, signed char *);
-} cols;
-
-static void loop3_chunk(const void *ctx, size_t b, size_t m, signed char *st)
+static const pgloss__loops *loops(void)
 {
-    const cols *k = ctx;
-    k->loop3(m, k->x0 + b, k->x1 + b, k->x2 + b, k->y0 + b, k->y1 + b, k->y2 + b, st);
+    return pgloss__dispatch(NULL, NULL);
 }
 
-pgloss_status pgloss_gloss_from_physical_batch(size_t n, const double *rho_d, const double *rho_s,
-                                               const double *alpha, double *L, double *c,
-                                               double *d, signed char *status)
+static pgloss_strided in_of(pgloss_strided3 s, int c)
+{
+    const pgloss_strided r = {s.ptr[c], s.stride};
+    return r;
+}
+static pgloss_strided_out out_of(pgloss_strided3_out s, int c)
+{
+    const pgloss_strided_out r = {s.ptr[c], s.stride};
+    return r;
+}
+
+/* Three columns in, three out (gloss space, colour). */
+static pgloss_status run3(size_t n, pgloss__perceptual_loop loop, const double *M, int n_out,
+                          pgloss_strided x0, pgloss_strided x1, pgloss_strided x2,
+                          pgloss_strided_out y0, pgloss_strided_out y1, pgloss_strided_out y2,
+                          int space_ok, signed char *status)
 {
     if (n == 0)
         return PGLOSS_OK;
-    if (!rho_d || !rho_s || !alpha || !L || !c || !d)
-        return PGLOSS_ERR_NULL;
-    const cols k = {rho_d, rho_s, alpha, L, c, d, PICK_LOOP(pgloss__gloss_from_physical_loop),
-                    NULL, NULL};
-    return run(n, status, loop3_chunk, &k);
+    const pcall c = {loop, {M, 0.0}, 3, n_out, {x0, x1, x2}, {y0, y1, y2}};
+    const pgloss_status st = check(n, &c, -1, -1, space_ok);
+    return st != PGLOSS_OK ? st : run(n, &c, status);
 }
 
-pgloss_status pgloss_physical_from_gloss_batch(size_t n, const double *L, const double *c,
-                                               const double *d, double *rho_d, double *rho_s,
-                                               double *alpha, signed char *status)
+/* ---- gloss space (eqs. 3–8) --------------------------------------------------------------- */
+
+pgloss_status pgloss_gloss_from_physical_batch(size_t n, pgloss_strided rho_d,
+                                               pgloss_strided rho_s, pgloss_strided alpha,
+                                               pgloss_strided_out L, pgloss_strided_out c,
+                                               pgloss_strided_out d, signed char *status)
 {
-    if (n == 0)
-        return PGLOSS_OK;
-    if (!L || !c || !d || !rho_d || !rho_s || !alpha)
-        return PGLOSS_ERR_NULL;
-    const cols k = {L, c, d, rho_d, rho_s, alpha, PICK_LOOP(pgloss__physical_from_gloss_loop),
-                    NULL, NULL};
-    return run(n, status, loop3_chunk, &k);
+    return run3(n, loops()->gloss_from_physical, NULL, 3, rho_d, rho_s, alpha, L, c, d, 1,
+                status);
 }
 
-static void envelope_chunk(const void *ctx, size_t b, size_t m, signed char *st)
+pgloss_status pgloss_physical_from_gloss_batch(size_t n, pgloss_strided L, pgloss_strided c,
+                                               pgloss_strided d, pgloss_strided_out rho_d,
+                                               pgloss_strided_out rho_s,
+                                               pgloss_strided_out alpha, signed char *status)
 {
-    const cols *k = ctx;
-    k->envelope_loop(m, k->x0 + b, k->y0 + b, st);
+    return run3(n, loops()->physical_from_gloss, NULL, 3, L, c, d, rho_d, rho_s, alpha, 1,
+                status);
 }
 
-pgloss_status pgloss_envelope_contrast_batch(size_t n, const double *L, double *c_max,
+pgloss_status pgloss_envelope_contrast_batch(size_t n, pgloss_strided L, pgloss_strided_out c_max,
                                              signed char *status)
 {
     if (n == 0)
         return PGLOSS_OK;
-    if (!L || !c_max)
-        return PGLOSS_ERR_NULL;
-    const cols k = {L, NULL, NULL, c_max, NULL, NULL, NULL,
-                    PICK_LOOP(pgloss__envelope_contrast_loop), NULL};
-    return run(n, status, envelope_chunk, &k);
+    const pcall c = {loops()->envelope_contrast, {NULL, 0.0}, 1, 1, {L}, {c_max}};
+    const pgloss_status st = check(n, &c, -1, -1, 1);
+    return st != PGLOSS_OK ? st : run(n, &c, status);
 }
 
-static void match_chunk(const void *ctx, size_t b, size_t m, signed char *st)
+pgloss_status pgloss_match_gloss_batch(size_t n, pgloss_strided rho_d, pgloss_strided rho_s,
+                                       pgloss_strided L_target, pgloss_strided_out rho_d_out,
+                                       pgloss_strided_out rho_s_out, signed char *status)
 {
-    const cols *k = ctx;
-    k->match_loop(m, k->x0 + b, k->x1 + b, k->x2 + b, k->y0 + b, k->y1 + b, st);
+    const pgloss_strided_out none = {NULL, 0};
+    return run3(n, loops()->match_gloss, NULL, 2, rho_d, rho_s, L_target, rho_d_out, rho_s_out,
+                none, 1, status);
 }
 
-pgloss_status pgloss_match_gloss_batch(size_t n, const double *rho_d, const double *rho_s,
-                                       const double *L_target, double *rho_d_out,
-                                       double *rho_s_out, signed char *status)
+/* ---- parameter sets (Fig. 13) ---------------------------------------------------------------- */
+
+/* ρd r, g, b, ρs, αx, αy as six input columns. */
+static void physical_in(const pgloss_physical_array *p, pgloss_strided *in)
 {
-    if (n == 0)
-        return PGLOSS_OK;
-    if (!rho_d || !rho_s || !L_target || !rho_d_out || !rho_s_out)
-        return PGLOSS_ERR_NULL;
-    const cols k = {rho_d, rho_s, L_target, rho_d_out, rho_s_out, NULL, NULL, NULL,
-                    PICK_LOOP(pgloss__match_gloss_loop)};
-    return run(n, status, match_chunk, &k);
+    for (int k = 0; k < 3; ++k)
+        in[k] = in_of(p->rho_d, k);
+    in[3] = p->rho_s;
+    in[4] = p->alpha_x;
+    in[5] = p->alpha_y;
 }
 
-/* ---- parameter sets (Fig. 13) ------------------------------------------------------------ */
-
-static int physical_array_ok(const pgloss_physical_array *p)
+static void perceptual_in(const pgloss_perceptual_array *q, pgloss_strided *in)
 {
-    return p && p->rho_d_r && p->rho_d_g && p->rho_d_b && p->rho_s && p->alpha_x;
-}
-
-/* The arrays from element b on (alpha_y NULL stays NULL: isotropic). */
-static pgloss_physical_array physical_from(const pgloss_physical_array *p, size_t b)
-{
-    const pgloss_physical_array r = {p->rho_d_r + b, p->rho_d_g + b, p->rho_d_b + b,
-                                     p->rho_s + b, p->alpha_x + b,
-                                     p->alpha_y ? p->alpha_y + b : NULL, p->normalization};
-    return r;
-}
-
-static int perceptual_array_ok(pgloss_perceptual_array q)
-{
-    return q.L && q.a && q.b && q.c && q.d;
-}
-
-/* The arrays and options of one call over parameter sets or colours. */
-typedef struct sets {
-    const pgloss_physical_array *p;
-    pgloss_perceptual_array q;
-    pgloss_color_space space;
-    pgloss_physical_out p_out;
-    pgloss_perceptual_out q_out;
-    const double *in[3]; /* colour: L*, a*, b* or r, g, b */
-    double *out[3];
-    void (*physical_loop)(size_t, pgloss_perceptual_array, const double *, pgloss_physical_out,
-                          signed char *);
-    void (*check_physical_loop)(size_t, pgloss_physical_array, double, signed char *);
-    void (*check_perceptual_loop)(size_t, pgloss_perceptual_array, const double *,
-                                  signed char *);
-    void (*perceptual_loop)(size_t, pgloss_physical_array, const double *, pgloss_perceptual_out,
-                            signed char *);
-    void (*rgb_loop)(size_t, pgloss_lab_array, const double *, pgloss_rgb_out_d, signed char *);
-    void (*lab_loop)(size_t, pgloss_rgb_array_d, const double *, pgloss_lab_out, signed char *);
-} sets;
-
-static void check_physical_chunk(const void *ctx, size_t b, size_t m, signed char *st)
-{
-    const sets *k = ctx;
-    const double norm_ok = pgloss__valid_normalization(k->p->normalization);
-    k->check_physical_loop(m, physical_from(k->p, b), norm_ok, st);
+    for (int k = 0; k < 3; ++k)
+        in[k] = in_of(q->lab, k);
+    in[3] = q->c;
+    in[4] = q->d;
 }
 
 pgloss_status pgloss_check_physical_batch(size_t n, const pgloss_physical_array *p,
@@ -218,170 +188,92 @@ pgloss_status pgloss_check_physical_batch(size_t n, const pgloss_physical_array 
 {
     if (n == 0)
         return PGLOSS_OK;
-    if (!physical_array_ok(p))
+    if (!p)
         return PGLOSS_ERR_NULL;
-    const sets k = {.p = p, .check_physical_loop = PICK_LOOP(pgloss__check_physical_loop)};
-    return run(n, status, check_physical_chunk, &k);
+    pcall c = {loops()->check_physical, {NULL, pgloss__valid_normalization(p->normalization)},
+               6, 0, {{0}}, {{0}}};
+    physical_in(p, c.in);
+    const pgloss_status st = check(n, &c, 5, -1, 1);
+    return st != PGLOSS_OK ? st : run(n, &c, status);
 }
 
-static pgloss_perceptual_array perceptual_from(pgloss_perceptual_array q, size_t b)
-{
-    const pgloss_perceptual_array r = {q.L + b, q.a + b, q.b + b, q.c + b, q.d + b};
-    return r;
-}
-
-static void check_perceptual_chunk(const void *ctx, size_t b, size_t m, signed char *st)
-{
-    const sets *k = ctx;
-    k->check_perceptual_loop(m, perceptual_from(k->q, b), pgloss__from_xyz_matrix(k->space), st);
-}
-
-pgloss_status pgloss_check_perceptual_batch_ex(size_t n, pgloss_perceptual_array q,
-                                               pgloss_color_space space, signed char *status)
+pgloss_status pgloss_check_perceptual_batch(size_t n, const pgloss_perceptual_array *q,
+                                            pgloss_color_space space, signed char *status)
 {
     if (n == 0)
         return PGLOSS_OK;
-    if (!perceptual_array_ok(q))
+    if (!q)
         return PGLOSS_ERR_NULL;
-    if (!pgloss__valid_color_space(space))
-        return PGLOSS_ERR_ARGUMENT;
-    const sets k = {.q = q, .space = space,
-                    .check_perceptual_loop = PICK_LOOP(pgloss__check_perceptual_loop)};
-    return run(n, status, check_perceptual_chunk, &k);
+    const int space_ok = pgloss__valid_color_space(space);
+    pcall c = {loops()->check_perceptual,
+               {space_ok ? pgloss__from_xyz_matrix(space) : NULL, 0.0}, 5, 0, {{0}}, {{0}}};
+    perceptual_in(q, c.in);
+    const pgloss_status st = check(n, &c, -1, -1, space_ok);
+    return st != PGLOSS_OK ? st : run(n, &c, status);
 }
 
-pgloss_status pgloss_check_perceptual_batch(size_t n, pgloss_perceptual_array q,
-                                            signed char *status)
-{
-    return pgloss_check_perceptual_batch_ex(n, q, PGLOSS_COLOR_SPACE_LINEAR_REC709, status);
-}
-
-static void physical_from_perceptual_chunk(const void *ctx, size_t b, size_t m, signed char *st)
-{
-    const sets *k = ctx;
-    const pgloss_physical_out o = k->p_out;
-    const pgloss_physical_out ob = {o.rho_d_r + b, o.rho_d_g + b, o.rho_d_b + b, o.rho_s + b,
-                                    o.alpha_x + b, o.alpha_y ? o.alpha_y + b : NULL};
-    k->physical_loop(m, perceptual_from(k->q, b), pgloss__from_xyz_matrix(k->space), ob, st);
-}
-
-pgloss_status pgloss_physical_from_perceptual_batch_ex(size_t n, pgloss_perceptual_array q,
-                                                       pgloss_normalization normalization,
-                                                       pgloss_color_space space,
-                                                       pgloss_physical_out p, signed char *status)
-{
-    if (n == 0)
-        return PGLOSS_OK;
-    if (!perceptual_array_ok(q) || !p.rho_d_r || !p.rho_d_g || !p.rho_d_b || !p.rho_s ||
-        !p.alpha_x)
-        return PGLOSS_ERR_NULL;
-    if (!pgloss__valid_color_space(space))
-        return PGLOSS_ERR_ARGUMENT;
-    if (!pgloss__valid_normalization(normalization))
-        return PGLOSS_ERR_NORMALIZATION;
-    const sets k = {.q = q, .space = space, .p_out = p,
-                    .physical_loop = PICK_LOOP(pgloss__physical_from_perceptual_loop)};
-    return run(n, status, physical_from_perceptual_chunk, &k);
-}
-
-pgloss_status pgloss_physical_from_perceptual_batch(size_t n, pgloss_perceptual_array q,
+pgloss_status pgloss_physical_from_perceptual_batch(size_t n, const pgloss_perceptual_array *q,
                                                     pgloss_normalization normalization,
-                                                    pgloss_physical_out p, signed char *status)
-{
-    return pgloss_physical_from_perceptual_batch_ex(n, q, normalization,
-                                                    PGLOSS_COLOR_SPACE_LINEAR_REC709, p, status);
-}
-
-static void perceptual_from_physical_chunk(const void *ctx, size_t b, size_t m, signed char *st)
-{
-    const sets *k = ctx;
-    const pgloss_perceptual_out q = k->q_out;
-    const pgloss_perceptual_out qb = {q.L + b, q.a + b, q.b + b, q.c + b, q.d + b};
-    k->perceptual_loop(m, physical_from(k->p, b), pgloss__to_xyz_matrix(k->space), qb, st);
-}
-
-pgloss_status pgloss_perceptual_from_physical_batch_ex(size_t n, const pgloss_physical_array *p,
-                                                       pgloss_color_space space,
-                                                       pgloss_perceptual_out q,
-                                                       signed char *status)
+                                                    pgloss_color_space space,
+                                                    const pgloss_physical_array_out *p,
+                                                    signed char *status)
 {
     if (n == 0)
         return PGLOSS_OK;
-    if (!physical_array_ok(p) || !q.L || !q.a || !q.b || !q.c || !q.d)
+    if (!q || !p)
         return PGLOSS_ERR_NULL;
-    if (!pgloss__valid_color_space(space))
-        return PGLOSS_ERR_ARGUMENT;
-    const sets k = {.p = p, .space = space, .q_out = q,
-                    .perceptual_loop = PICK_LOOP(pgloss__perceptual_from_physical_loop)};
-    return run(n, status, perceptual_from_physical_chunk, &k);
+    const int space_ok = pgloss__valid_color_space(space);
+    pcall c = {loops()->physical_from_perceptual,
+               {space_ok ? pgloss__from_xyz_matrix(space) : NULL, 0.0}, 5, 6, {{0}}, {{0}}};
+    perceptual_in(q, c.in);
+    for (int k = 0; k < 3; ++k)
+        c.out[k] = out_of(p->rho_d, k);
+    c.out[3] = p->rho_s;
+    c.out[4] = p->alpha_x;
+    c.out[5] = p->alpha_y;
+    pgloss_status st = check(n, &c, -1, 5, space_ok);
+    if (st == PGLOSS_OK && !pgloss__valid_normalization(normalization))
+        st = PGLOSS_ERR_NORMALIZATION;
+    return st != PGLOSS_OK ? st : run(n, &c, status);
 }
 
 pgloss_status pgloss_perceptual_from_physical_batch(size_t n, const pgloss_physical_array *p,
-                                                    pgloss_perceptual_out q, signed char *status)
-{
-    return pgloss_perceptual_from_physical_batch_ex(n, p, PGLOSS_COLOR_SPACE_LINEAR_REC709, q,
-                                                    status);
-}
-
-/* ---- colour ------------------------------------------------------------------------------- */
-
-/* The two colour conversions: three arrays in, three out, a working space. */
-static pgloss_status colour_batch(size_t n, const double *in0, const double *in1,
-                                  const double *in2, double *out0, double *out1, double *out2,
-                                  pgloss_color_space space, signed char *status, chunk_fn f)
+                                                    pgloss_color_space space,
+                                                    const pgloss_perceptual_array_out *q,
+                                                    signed char *status)
 {
     if (n == 0)
         return PGLOSS_OK;
-    if (!in0 || !in1 || !in2 || !out0 || !out1 || !out2)
+    if (!p || !q)
         return PGLOSS_ERR_NULL;
-    if (!pgloss__valid_color_space(space))
-        return PGLOSS_ERR_ARGUMENT;
-    const sets k = {.space = space, .in = {in0, in1, in2}, .out = {out0, out1, out2},
-                    .rgb_loop = PICK_LOOP(pgloss__rgb_from_lab_loop),
-                    .lab_loop = PICK_LOOP(pgloss__lab_from_rgb_loop)};
-    return run(n, status, f, &k);
+    const int space_ok = pgloss__valid_color_space(space);
+    pcall c = {loops()->perceptual_from_physical,
+               {space_ok ? pgloss__to_xyz_matrix(space) : NULL, 0.0}, 6, 5, {{0}}, {{0}}};
+    physical_in(p, c.in);
+    for (int k = 0; k < 3; ++k)
+        c.out[k] = out_of(q->lab, k);
+    c.out[3] = q->c;
+    c.out[4] = q->d;
+    const pgloss_status st = check(n, &c, 5, -1, space_ok);
+    return st != PGLOSS_OK ? st : run(n, &c, status);
 }
 
-static void rgb_from_lab_chunk(const void *ctx, size_t b, size_t m, signed char *st)
+/* ---- colour ----------------------------------------------------------------------------------- */
+
+pgloss_status pgloss_rgb_from_lab_batch(size_t n, pgloss_strided3 lab, pgloss_color_space space,
+                                        pgloss_strided3_out rgb, signed char *status)
 {
-    const sets *k = ctx;
-    const pgloss_lab_array in = {k->in[0] + b, k->in[1] + b, k->in[2] + b};
-    const pgloss_rgb_out_d out = {k->out[0] + b, k->out[1] + b, k->out[2] + b};
-    k->rgb_loop(m, in, pgloss__from_xyz_matrix(k->space), out, st);
+    const int ok = pgloss__valid_color_space(space);
+    return run3(n, loops()->rgb_from_lab, ok ? pgloss__from_xyz_matrix(space) : NULL, 3,
+                in_of(lab, 0), in_of(lab, 1), in_of(lab, 2), out_of(rgb, 0), out_of(rgb, 1),
+                out_of(rgb, 2), ok, status);
 }
 
-static void lab_from_rgb_chunk(const void *ctx, size_t b, size_t m, signed char *st)
+pgloss_status pgloss_lab_from_rgb_batch(size_t n, pgloss_strided3 rgb, pgloss_color_space space,
+                                        pgloss_strided3_out lab, signed char *status)
 {
-    const sets *k = ctx;
-    const pgloss_rgb_array_d in = {k->in[0] + b, k->in[1] + b, k->in[2] + b};
-    const pgloss_lab_out out = {k->out[0] + b, k->out[1] + b, k->out[2] + b};
-    k->lab_loop(m, in, pgloss__to_xyz_matrix(k->space), out, st);
-}
-
-pgloss_status pgloss_rgb_from_lab_batch_ex(size_t n, pgloss_lab_array lab,
-                                           pgloss_color_space space, pgloss_rgb_out_d rgb,
-                                           signed char *status)
-{
-    return colour_batch(n, lab.L, lab.a, lab.b, rgb.r, rgb.g, rgb.b, space, status,
-                        rgb_from_lab_chunk);
-}
-
-pgloss_status pgloss_rgb_from_lab_batch(size_t n, pgloss_lab_array lab, pgloss_rgb_out_d rgb,
-                                        signed char *status)
-{
-    return pgloss_rgb_from_lab_batch_ex(n, lab, PGLOSS_COLOR_SPACE_LINEAR_REC709, rgb, status);
-}
-
-pgloss_status pgloss_lab_from_rgb_batch_ex(size_t n, pgloss_rgb_array_d rgb,
-                                           pgloss_color_space space, pgloss_lab_out lab,
-                                           signed char *status)
-{
-    return colour_batch(n, rgb.r, rgb.g, rgb.b, lab.L, lab.a, lab.b, space, status,
-                        lab_from_rgb_chunk);
-}
-
-pgloss_status pgloss_lab_from_rgb_batch(size_t n, pgloss_rgb_array_d rgb, pgloss_lab_out lab,
-                                        signed char *status)
-{
-    return pgloss_lab_from_rgb_batch_ex(n, rgb, PGLOSS_COLOR_SPACE_LINEAR_REC709, lab, status);
+    const int ok = pgloss__valid_color_space(space);
+    return run3(n, loops()->lab_from_rgb, ok ? pgloss__to_xyz_matrix(space) : NULL, 3,
+                in_of(rgb, 0), in_of(rgb, 1), in_of(rgb, 2), out_of(lab, 0), out_of(lab, 1),
+                out_of(lab, 2), ok, status);
 }

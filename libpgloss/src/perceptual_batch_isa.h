@@ -1,48 +1,35 @@
 // SPDX-FileCopyrightText: 2026 The pgloss authors
 // SPDX-License-Identifier: Apache-2.0
 /* The loops of perceptual_batch_isa.c, one set per ISA built (libpgloss/CMakeLists.txt), for
- * perceptual_batch.c's run-time dispatch. They write every element's status to st (never
- * NULL here) and every output; the arguments are checked by the caller. Not installed. */
+ * perceptual_batch.c. Each takes one chunk of m <= PGLOSS__PCHUNK elements as contiguous
+ * columns: in[k] (read), out[k] (written, never aliasing an input), and writes every
+ * element's status to st. Not installed. */
 #ifndef PGLOSS_PERCEPTUAL_BATCH_ISA_H
 #define PGLOSS_PERCEPTUAL_BATCH_ISA_H
 
 #include <stddef.h>
-#include "pgloss/perceptual_batch.h"
 
-/* M: the working space's XYZ → RGB matrix, row-major (pgloss__from_xyz_matrix); for
- * perceptual_from_physical and lab_from_rgb, its RGB → XYZ matrix (pgloss__to_xyz_matrix).
- * check_physical: norm_ok 1 for a known normalisation, else 0; alpha_y NULL is isotropic. */
-#define PGLOSS__DECLARE_PERCEPTUAL_LOOPS(isa)                                                     \
-    void pgloss__gloss_from_physical_loop_##isa(size_t, const double *, const double *,          \
-                                                const double *, double *, double *, double *,     \
-                                                signed char *);                                   \
-    void pgloss__physical_from_perceptual_loop_##isa(size_t, pgloss_perceptual_array,            \
-                                                     const double *, pgloss_physical_out,         \
-                                                     signed char *);                      \
-    void pgloss__physical_from_gloss_loop_##isa(size_t, const double *, const double *,          \
-                                                const double *, double *, double *, double *,     \
-                                                signed char *);                                   \
-    void pgloss__envelope_contrast_loop_##isa(size_t, const double *, double *, signed char *);   \
-    void pgloss__match_gloss_loop_##isa(size_t, const double *, const double *, const double *,  \
-                                        double *, double *, signed char *);                       \
-    void pgloss__check_physical_loop_##isa(size_t, pgloss_physical_array, double,                \
-                                           signed char *);                                        \
-    void pgloss__check_perceptual_loop_##isa(size_t, pgloss_perceptual_array, const double *,    \
-                                             signed char *);                                      \
-    void pgloss__perceptual_from_physical_loop_##isa(size_t, pgloss_physical_array,              \
-                                                     const double *, pgloss_perceptual_out,       \
-                                                     signed char *);                              \
-    void pgloss__rgb_from_lab_loop_##isa(size_t, pgloss_lab_array, const double *,               \
-                                         pgloss_rgb_out_d, signed char *);                        \
-    void pgloss__lab_from_rgb_loop_##isa(size_t, pgloss_rgb_array_d, const double *,             \
-                                         pgloss_lab_out, signed char *);
+#define PGLOSS__PCHUNK 256
 
-PGLOSS__DECLARE_PERCEPTUAL_LOOPS(baseline)
-#if defined(PGLOSS_HAVE_AVX2)
-PGLOSS__DECLARE_PERCEPTUAL_LOOPS(avx2)
-#endif
-#if defined(PGLOSS_HAVE_AVX512)
-PGLOSS__DECLARE_PERCEPTUAL_LOOPS(avx512)
-#endif
+/* What a loop takes besides its columns: the working space's XYZ → RGB matrix (row-major;
+ * RGB → XYZ for perceptual_from_physical and lab_from_rgb), and for check_physical 1 for a
+ * known normalisation, else 0. */
+typedef struct pgloss__pargs {
+    const double *M;
+    double norm_ok;
+} pgloss__pargs;
+
+typedef void (*pgloss__perceptual_loop)(size_t m, const double *const *in, double *const *out,
+                                        const pgloss__pargs *a, signed char *st);
+
+/* The columns, in order: gloss_from_physical ρd ρs α → L c d; physical_from_gloss L c d →
+ * ρd ρs α; envelope_contrast L → c_max; match_gloss ρd ρs L → ρd ρs; check_physical
+ * r g b ρs αx αy; check_perceptual L a b c d; physical_from_perceptual L a b c d →
+ * r g b ρs αx αy; perceptual_from_physical r g b ρs αx αy → L a b c d; rgb_from_lab
+ * L a b → r g b; lab_from_rgb r g b → L a b. */
+#define PGLOSS__PERCEPTUAL_LOOPS(X)                                                                \
+    X(gloss_from_physical) X(physical_from_gloss) X(envelope_contrast) X(match_gloss)              \
+    X(check_physical) X(check_perceptual) X(physical_from_perceptual)                              \
+    X(perceptual_from_physical) X(rgb_from_lab) X(lab_from_rgb)
 
 #endif

@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The pgloss authors
 // SPDX-License-Identifier: Apache-2.0
-// libFuzzer harness: the BRDF entry points (brdf.h, batch.h, batch_materials.h), every tier and
-// instruction set.
+// libFuzzer harness: the BRDF entry points (brdf.h, batch.h), every tier, instruction set and
+// scalar type.
 // Contracts asserted (from the headers):
 //   - every status is one the function documents; outputs are finite, f, pdf, weight >= 0;
 //     a rejected sample (pdf 0) has weight 0;
@@ -110,9 +110,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, size_t size) {
 
     // Batches: n copies (the fuzzer's element among others) through every tier and ISA.
     const size_t n = 1 + b.byte() % 40;
-    std::vector<float> ox(n, o.v.x), oy(n, o.v.y), oz(n, o.v.z), ix(n, i.v.x), iy(n, i.v.y), iz(n, i.v.z);
-    std::vector<float> u0(n, u[0]), u1(n, u[1]), u2(n, u[2]);
-    const pgloss_vec3_array wo{ox.data(), oy.data(), oz.data()}, wi{ix.data(), iy.data(), iz.data()};
+    // one direction and one set of random numbers for every element (stride 0)
+    const pgloss_strided3 wo{{&o.v.x, &o.v.y, &o.v.z}, 0}, wi{{&i.v.x, &i.v.y, &i.v.z}, 0}, us{{&u[0], &u[1], &u[2]}, 0};
     const double x = exponent(o.v, i.v, m.alpha_x, m.alpha_y);
     const bool regular = regular_material && o.unit && i.unit && o.v.z >= 1e-3f && i.v.z >= 1e-3f && x <= 80;
     // Below cosines of 1e-19 the float exponent squares hx, hy before dividing by hz², so a
@@ -123,10 +122,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, size_t size) {
     for (pgloss_precision tier : {PGLOSS_PRECISION_FLOAT, PGLOSS_PRECISION_FAST, PGLOSS_PRECISION_REFERENCE}) {
         for (pgloss_isa isa : {PGLOSS_ISA_BASELINE, PGLOSS_ISA_AVX2, PGLOSS_ISA_AVX512}) {
             if (!pgloss_isa_supported(isa)) continue;
-            const pgloss_batch_options opt{tier, isa};
+            const pgloss_batch_options opt{tier, isa, PGLOSS_FLOAT32};
             std::vector<float> fr(n, -1), fg(n, -1), fb(n, -1), pd(n, -1);
-            const pgloss_status bs = pgloss_eval_pdf_batch_ex(&opt, &m, lobes, n, wo, wi,
-                                                              pgloss_rgb_out{fr.data(), fg.data(), fb.data()}, pd.data());
+            const auto out3 = [](auto &a, auto &b, auto &c) {
+                return pgloss_strided3_out_soa(a.data(), b.data(), c.data(), sizeof a[0]);
+            };
+            const auto out1 = [](auto &a) { return pgloss_strided_out_of(a.data(), sizeof a[0]); };
+            const pgloss_status bs = pgloss_eval_pdf_batch(&opt, &m, nullptr, lobes, n, wo, wi, out3(fr, fg, fb), out1(pd),
+                                                           nullptr);
             FZ_CHECK(bs == se);
             for (size_t k = 0; k < n; ++k) {
                 FZ_CHECK(fz::finite3(fr[k], fg[k], fb[k]) && std::isfinite(pd[k]));
@@ -149,16 +152,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, size_t size) {
                 all.insert(all.end(), pd.begin(), pd.end());
                 if (float_ref.empty()) float_ref = all;
                 else FZ_CHECK(std::memcmp(all.data(), float_ref.data(), all.size() * sizeof(float)) == 0);
-                // Per-element materials (batch_materials.h): the same material in every element
+                // Per-element materials: the same material in every element
                 // gives the uniform batch's bits; the double path keeps the contracts.
                 std::vector<float> mr(n, m.rho_d[0]), mg(n, m.rho_d[1]), mb(n, m.rho_d[2]), msp(n, m.rho_s),
                     max_(n, m.alpha_x), may(n, m.alpha_y); /* the float values (p's may round to 0) */
-                const pgloss_material_array ma{mr.data(), mg.data(), mb.data(), msp.data(), max_.data(), may.data(),
-                                               p.normalization};
+                const pgloss_physical_array ma{pgloss_strided3_soa(mr.data(), mg.data(), mb.data(), sizeof(float)),
+                                               pgloss_strided_of(msp.data(), sizeof(float)),
+                                               pgloss_strided_of(max_.data(), sizeof(float)),
+                                               pgloss_strided_of(may.data(), sizeof(float)), p.normalization};
                 std::vector<float> er(n, -1), eg(n, -1), eb(n, -1), ep(n, -1);
                 std::vector<signed char> est(n, 99);
-                const pgloss_status es = pgloss_eval_pdf_batch_materials_ex(
-                    &opt, &ma, lobes, n, wo, wi, pgloss_rgb_out{er.data(), eg.data(), eb.data()}, ep.data(), est.data());
+                const pgloss_status es =
+                    pgloss_eval_pdf_batch(&opt, nullptr, &ma, lobes, n, wo, wi, out3(er, eg, eb), out1(ep), est.data());
                 FZ_CHECK(es == se && est[0] == se);
                 // Bit for bit, the sign of zero included (pgloss_inl_material_derive makes a -0
                 // reflectance +0 on both paths).
@@ -166,13 +171,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, size_t size) {
                          std::memcmp(eg.data(), fg.data(), n * sizeof(float)) == 0 &&
                          std::memcmp(eb.data(), fb.data(), n * sizeof(float)) == 0 &&
                          std::memcmp(ep.data(), pd.data(), n * sizeof(float)) == 0);
-                std::vector<double> dox(ox.begin(), ox.end()), doy(oy.begin(), oy.end()), doz(oz.begin(), oz.end()),
-                    dix(ix.begin(), ix.end()), diy(iy.begin(), iy.end()), diz(iz.begin(), iz.end()), dr(n, -1), dg(n, -1),
-                    db(n, -1), dp(n, -1);
-                const pgloss_status ds = pgloss_eval_pdf_batch_d_ex(
-                    &opt, &m, lobes, n, pgloss_vec3_array_d{dox.data(), doy.data(), doz.data()},
-                    pgloss_vec3_array_d{dix.data(), diy.data(), diz.data()}, pgloss_rgb_out_d{dr.data(), dg.data(), db.data()},
-                    dp.data(), nullptr);
+                const double dov[3] = {o.v.x, o.v.y, o.v.z}, div[3] = {i.v.x, i.v.y, i.v.z};
+                std::vector<double> dr(n, -1), dg(n, -1), db(n, -1), dp(n, -1);
+                const pgloss_batch_options dopt{tier, isa, PGLOSS_FLOAT64};
+                const pgloss_status ds = pgloss_eval_pdf_batch(&dopt, &m, nullptr, lobes, n,
+                                                               pgloss_strided3{{&dov[0], &dov[1], &dov[2]}, 0},
+                                                               pgloss_strided3{{&div[0], &div[1], &div[2]}, 0},
+                                                               out3(dr, dg, db), out1(dp), nullptr);
                 FZ_CHECK(ds == se);
                 for (size_t k = 0; k < n; ++k) {
                     FZ_CHECK(fz::finite3(dr[k], dg[k], db[k]) && std::isfinite(dp[k]));
@@ -181,9 +186,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, size_t size) {
             }
             std::vector<float> sx(n), sy(n), sz(n), sp(n), gr(n), gg(n), gb(n);
             std::vector<unsigned char> lb(n);
-            const pgloss_status bss = pgloss_sample_batch_ex(
-                &opt, &m, lobes, n, wo, u0.data(), u1.data(), u2.data(), pgloss_vec3_out{sx.data(), sy.data(), sz.data()},
-                sp.data(), pgloss_rgb_out{gr.data(), gg.data(), gb.data()}, lb.data());
+            const pgloss_status bss = pgloss_sample_batch(&opt, &m, nullptr, lobes, n, wo, us, out3(sx, sy, sz), out1(sp),
+                                                          out3(gr, gg, gb), lb.data(), nullptr);
             FZ_CHECK(documented_sample(bss));
             for (size_t k = 0; k < n; ++k) {
                 FZ_CHECK(fz::finite3(sx[k], sy[k], sz[k]) && std::isfinite(sp[k]) && fz::finite3(gr[k], gg[k], gb[k]));

@@ -117,20 +117,28 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, size_t size) {
     {
         double o1, o2, o3;
         signed char st = 99;
-        const pgloss_status r = pgloss_gloss_from_physical_batch(1, &rd, &rs, &alpha, &o1, &o2, &o3, &st);
+        const auto in = [](const double *x) { return pgloss_strided_of(x, 0); };
+        const auto out = [](double *x) { return pgloss_strided_out_of(x, 0); };
+        const pgloss_status r =
+            pgloss_gloss_from_physical_batch(1, in(&rd), in(&rs), in(&alpha), out(&o1), out(&o2), out(&o3), &st);
         FZ_CHECK(r == st && st == pgloss_gloss_from_physical(rd, rs, alpha, &gl, &gc, &gd));
         FZ_CHECK(same(o1, gl) && same(o2, gc) && same(o3, gd));
     }
     if (norm <= PGLOSS_NORM_BOUNDED) {
-        const pgloss_perceptual_array qa{&q.L, &q.a, &q.b, &q.c, &q.d};
-        double r0, r1, r2, s0, ax, ay;
+        // q's fields as one row (L, a, b, c, d are consecutive doubles)
+        const pgloss_perceptual_array qa{pgloss_strided3_rows(&q.L, sizeof(double)), pgloss_strided_of(&q.c, 0),
+                                         pgloss_strided_of(&q.d, 0)};
+        double rgb[3], s0, ax, ay;
         signed char st = 99;
+        const pgloss_physical_array_out po{pgloss_strided3_out_rows(rgb, sizeof(double)), pgloss_strided_out_of(&s0, 0),
+                                           pgloss_strided_out_of(&ax, 0), pgloss_strided_out_of(&ay, 0)};
         const pgloss_status r =
-            pgloss_physical_from_perceptual_batch(1, qa, norm, pgloss_physical_out{&r0, &r1, &r2, &s0, &ax, &ay}, &st);
+            pgloss_physical_from_perceptual_batch(1, &qa, norm, PGLOSS_COLOR_SPACE_LINEAR_REC709, &po, &st);
+        const double r0 = rgb[0], r1 = rgb[1], r2 = rgb[2];
         FZ_CHECK(r == pq && st == pq);
         FZ_CHECK(same(r0, p.rho_d[0]) && same(r1, p.rho_d[1]) && same(r2, p.rho_d[2]) && same(s0, p.rho_s) &&
                  same(ax, p.alpha_x) && same(ay, p.alpha_y));
-        FZ_CHECK(pgloss_check_perceptual_batch(1, qa, &st) == cq && st == cq);
+        FZ_CHECK(pgloss_check_perceptual_batch(1, &qa, PGLOSS_COLOR_SPACE_LINEAR_REC709, &st) == cq && st == cq);
     }
     return 0;
 }

@@ -49,13 +49,16 @@ int main(void)
         ox[k] = 0.0f; oy[k] = sinf(t); oz[k] = cosf(t);
         ix[k] = sinf(t); iy[k] = 0.0f; iz[k] = cosf(t);
     }
-    const pgloss_vec3_array wo = {ox, oy, oz}, wi = {ix, iy, iz};
-    const pgloss_rgb_out f = {fr, fg, fb};
-    check(pgloss_eval_batch(&m, PGLOSS_LOBE_ALL, N, wo, wi, f) == PGLOSS_OK, "eval_batch status");
+    const pgloss_strided3 wo = pgloss_strided3_soa(ox, oy, oz, sizeof(float));
+    const pgloss_strided3 wi = pgloss_strided3_soa(ix, iy, iz, sizeof(float));
+    const pgloss_strided3_out f = pgloss_strided3_out_soa(fr, fg, fb, sizeof(float));
+    const pgloss_strided_out no_pdf = {NULL, 0};
+    check(pgloss_eval_pdf_batch(NULL, &m, NULL, PGLOSS_LOBE_ALL, N, wo, wi, f, no_pdf, NULL) == PGLOSS_OK,
+          "eval_pdf_batch status");
     const double pi = 3.14159265358979323846;
     for (int k = 0; k < N; ++k) {
         check(fabs(fr[k] - 0.5 / pi) < 1e-6 && fabs(fg[k] - 0.25 / pi) < 1e-6 &&
-              fabs(fb[k] - 0.125 / pi) < 1e-6, "eval_batch: Lambertian rho_d / pi");
+              fabs(fb[k] - 0.125 / pi) < 1e-6, "eval_pdf_batch: Lambertian rho_d / pi");
     }
     check(strcmp(pgloss_status_name(PGLOSS_ERR_ENERGY), "PGLOSS_ERR_ENERGY") == 0, "status_name");
 

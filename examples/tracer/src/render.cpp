@@ -685,15 +685,19 @@ struct Renderer::Impl {
             const size_t b = wf.count[m], n = wf.count[m + 1] - b;
             if (n == 0) continue;
             const pgloss_material &mat = scene.materials[m].ward;
-            const pgloss_vec3_array wo{v[WOX] + b, v[WOY] + b, v[WOZ] + b};
-            const pgloss_vec3_array wi{v[WIX] + b, v[WIY] + b, v[WIZ] + b};
+            constexpr size_t F = sizeof(float);
+            const pgloss_strided3 wo = pgloss_strided3_soa(v[WOX] + b, v[WOY] + b, v[WOZ] + b, F);
+            const pgloss_strided3 wi = pgloss_strided3_soa(v[WIX] + b, v[WIY] + b, v[WIZ] + b, F);
             // Statuses are not needed: the directions are unit and the random numbers finite
             // by construction, and an invalid element gets zeros (its path ends).
-            (void)pgloss_eval_pdf_batch(&mat, mat.lobes, n, wo, wi, pgloss_rgb_out{v[FR] + b, v[FG] + b, v[FB] + b},
-                                        v[FPDF] + b);
-            (void)pgloss_sample_batch(&mat, mat.lobes, n, wo, v[U0] + b, v[U1] + b, v[U2] + b,
-                                      pgloss_vec3_out{v[SX] + b, v[SY] + b, v[SZ] + b}, v[SPDF] + b,
-                                      pgloss_rgb_out{v[SR] + b, v[SG] + b, v[SB] + b}, nullptr);
+            (void)pgloss_eval_pdf_batch(nullptr, &mat, nullptr, mat.lobes, n, wo, wi,
+                                        pgloss_strided3_out_soa(v[FR] + b, v[FG] + b, v[FB] + b, F),
+                                        pgloss_strided_out_of(v[FPDF] + b, F), nullptr);
+            (void)pgloss_sample_batch(nullptr, &mat, nullptr, mat.lobes, n, wo,
+                                      pgloss_strided3_soa(v[U0] + b, v[U1] + b, v[U2] + b, F),
+                                      pgloss_strided3_out_soa(v[SX] + b, v[SY] + b, v[SZ] + b, F),
+                                      pgloss_strided_out_of(v[SPDF] + b, F),
+                                      pgloss_strided3_out_soa(v[SR] + b, v[SG] + b, v[SB] + b, F), nullptr, nullptr);
         }
         for (size_t j = 0; j < total; ++j) {
             const std::uint32_t i = wf.order[j];

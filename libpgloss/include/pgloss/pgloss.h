@@ -16,7 +16,6 @@
 #include "pgloss/status.h"
 #include "pgloss/brdf.h"
 #include "pgloss/batch.h"
-#include "pgloss/batch_materials.h"
 #include "pgloss/color.h"
 #include "pgloss/perceptual.h"
 #include "pgloss/perceptual_batch.h"

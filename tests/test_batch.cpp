@@ -1,11 +1,12 @@
 // SPDX-FileCopyrightText: 2026 The pgloss authors
 // SPDX-License-Identifier: Apache-2.0
 // Per-element materials, the double batch path and the batched perceptual functions
-// (pgloss/batch_materials.h, pgloss/perceptual_batch.h) against their one-at-a-time
-// definitions: a per-element call equals, element by element, the uniform batch called with
-// that element's pgloss_material (bit for bit in the FLOAT tier, on every ISA the CPU has);
-// the double path agrees with the scalar double reference; statuses per element; n = 0,
-// tails and unaligned arrays. The shared vectors run through the same entry points in
+// (pgloss/batch.h, pgloss/perceptual_batch.h) against their one-at-a-time definitions: a
+// per-element call equals, element by element, the batch called with that element's
+// pgloss_material (bit for bit in the FLOAT tier, on every ISA the CPU has); the double path
+// agrees with the scalar double reference; statuses per element; n = 0, tails; and every
+// layout of the strided arrays (rows, columns, broadcast, negative and odd strides, unaligned)
+// gives the bits of plain columns. The shared vectors run through the same entry points in
 // test_vectors.cpp. An ISA this CPU or build lacks is GTEST_SKIPped with the reason
 // (a hardware property, as in test_isa.cpp; PGLOSS_REQUIRE_ISA makes it a failure).
 #include <gtest/gtest.h>
@@ -17,9 +18,7 @@
 #include <string>
 #include <vector>
 
-extern "C" {
-#include "pgloss/pgloss.h"
-}
+#include "batch_util.h"
 
 namespace {
 
@@ -74,11 +73,13 @@ struct Tex {
             }
         }
     }
-    pgloss_material_array mats(pgloss_normalization nm) const {
-        return {m[0].data() + 1, m[1].data() + 1, m[2].data() + 1, m[3].data() + 1, m[4].data() + 1, m[5].data() + 1, nm};
+    pgloss_physical_array mats(pgloss_normalization nm) const {
+        return physical_cols(m[0].data() + 1, m[1].data() + 1, m[2].data() + 1, m[3].data() + 1, m[4].data() + 1,
+                             m[5].data() + 1, nm);
     }
-    pgloss_vec3_array wo() const { return {o[0].data() + 1, o[1].data() + 1, o[2].data() + 1}; }
-    pgloss_vec3_array wi() const { return {i[0].data() + 1, i[1].data() + 1, i[2].data() + 1}; }
+    pgloss_strided3 wo(size_t j = 0) const { return soa(o[0].data() + 1 + j, o[1].data() + 1 + j, o[2].data() + 1 + j); }
+    pgloss_strided3 wi(size_t j = 0) const { return soa(i[0].data() + 1 + j, i[1].data() + 1 + j, i[2].data() + 1 + j); }
+    pgloss_strided3 us(size_t j = 0) const { return soa(u[0].data() + 1 + j, u[1].data() + 1 + j, u[2].data() + 1 + j); }
     pgloss_physical phys(size_t j, pgloss_normalization nm) const {
         pgloss_physical p;
         p.rho_d[0] = m[0][j + 1], p.rho_d[1] = m[1][j + 1], p.rho_d[2] = m[2][j + 1];
@@ -109,25 +110,23 @@ TEST_P(PerIsa, EvalPdfMaterialsEqualsOneMaterialPerCall) {
         for (pgloss_normalization nm : {PGLOSS_NORM_WARD, PGLOSS_NORM_WARD_DUR, PGLOSS_NORM_BOUNDED})
             for (unsigned lobes : {1u, 2u, 3u})
                 for (pgloss_precision prec : {PGLOSS_PRECISION_FLOAT, PGLOSS_PRECISION_FAST, PGLOSS_PRECISION_REFERENCE}) {
-                    const pgloss_batch_options opt{prec, GetParam()};
-                    const pgloss_material_array ma = t.mats(nm);
+                    const pgloss_batch_options opt = batch_options(prec, GetParam());
+                    const pgloss_physical_array ma = t.mats(nm);
                     std::vector<float> r(n), g(n), b(n), p(n);
                     std::vector<signed char> st(n);
                     const pgloss_status all =
-                        pgloss_eval_pdf_batch_materials_ex(&opt, &ma, lobes, n, t.wo(), t.wi(),
-                                                           pgloss_rgb_out{r.data(), g.data(), b.data()}, p.data(), st.data());
+                        pgloss_eval_pdf_batch(&opt, nullptr, &ma, lobes, n, t.wo(), t.wi(),
+                                              soa_out(r.data(), g.data(), b.data()), col_out(p.data()), st.data());
                     pgloss_status first = PGLOSS_OK;
                     for (size_t j = 0; j < n; ++j) {
                         const pgloss_physical ph = t.phys(j, nm);
                         pgloss_material mj;
                         const pgloss_status ms = pgloss_material_init(&mj, &ph);
                         float r1, g1, b1, p1;
-                        const pgloss_batch_options opt1{prec == PGLOSS_PRECISION_FAST ? PGLOSS_PRECISION_FLOAT : prec,
-                                                        GetParam()};
-                        const pgloss_vec3_array o1{t.o[0].data() + 1 + j, t.o[1].data() + 1 + j, t.o[2].data() + 1 + j};
-                        const pgloss_vec3_array i1{t.i[0].data() + 1 + j, t.i[1].data() + 1 + j, t.i[2].data() + 1 + j};
-                        const pgloss_status ds = pgloss_eval_pdf_batch_ex(&opt1, &mj, lobes, 1, o1, i1,
-                                                                          pgloss_rgb_out{&r1, &g1, &b1}, &p1);
+                        const pgloss_batch_options opt1 =
+                            batch_options(prec == PGLOSS_PRECISION_FAST ? PGLOSS_PRECISION_FLOAT : prec, GetParam());
+                        const pgloss_status ds = pgloss_eval_pdf_batch(&opt1, &mj, nullptr, lobes, 1, t.wo(j), t.wi(j),
+                                                                       soa_out(&r1, &g1, &b1), col_out(&p1), nullptr);
                         const pgloss_status want = ms != PGLOSS_OK ? ms : ds;
                         if (first == PGLOSS_OK) first = want;
                         ASSERT_EQ(st[j], static_cast<signed char>(want)) << "element " << j << " n " << n;
@@ -150,15 +149,14 @@ TEST_P(PerIsa, SampleMaterialsEqualsOneMaterialPerCall) {
         for (pgloss_normalization nm : {PGLOSS_NORM_WARD, PGLOSS_NORM_BOUNDED})
             for (unsigned lobes : {1u, 2u, 3u})
                 for (pgloss_precision prec : {PGLOSS_PRECISION_FLOAT, PGLOSS_PRECISION_REFERENCE}) {
-                    const pgloss_batch_options opt{prec, GetParam()};
-                    const pgloss_material_array ma = t.mats(nm);
+                    const pgloss_batch_options opt = batch_options(prec, GetParam());
+                    const pgloss_physical_array ma = t.mats(nm);
                     std::vector<float> x(n), y(n), z(n), p(n), r(n), g(n), b(n);
                     std::vector<unsigned char> lb(n);
                     std::vector<signed char> st(n);
-                    const pgloss_status all = pgloss_sample_batch_materials_ex(
-                        &opt, &ma, lobes, n, t.wo(), t.u[0].data() + 1, t.u[1].data() + 1, t.u[2].data() + 1,
-                        pgloss_vec3_out{x.data(), y.data(), z.data()}, p.data(), pgloss_rgb_out{r.data(), g.data(), b.data()},
-                        lb.data(), st.data());
+                    const pgloss_status all = pgloss_sample_batch(
+                        &opt, nullptr, &ma, lobes, n, t.wo(), t.us(), soa_out(x.data(), y.data(), z.data()),
+                        col_out(p.data()), soa_out(r.data(), g.data(), b.data()), lb.data(), st.data());
                     pgloss_status first = PGLOSS_OK;
                     for (size_t j = 0; j < n; ++j) {
                         const pgloss_physical ph = t.phys(j, nm);
@@ -166,10 +164,9 @@ TEST_P(PerIsa, SampleMaterialsEqualsOneMaterialPerCall) {
                         const pgloss_status ms = pgloss_material_init(&mj, &ph);
                         float x1, y1, z1, p1, r1, g1, b1;
                         unsigned char l1;
-                        const pgloss_vec3_array o1{t.o[0].data() + 1 + j, t.o[1].data() + 1 + j, t.o[2].data() + 1 + j};
-                        const pgloss_status ds = pgloss_sample_batch_ex(
-                            &opt, &mj, lobes, 1, o1, t.u[0].data() + 1 + j, t.u[1].data() + 1 + j, t.u[2].data() + 1 + j,
-                            pgloss_vec3_out{&x1, &y1, &z1}, &p1, pgloss_rgb_out{&r1, &g1, &b1}, &l1);
+                        const pgloss_status ds =
+                            pgloss_sample_batch(&opt, &mj, nullptr, lobes, 1, t.wo(j), t.us(j), soa_out(&x1, &y1, &z1),
+                                                col_out(&p1), soa_out(&r1, &g1, &b1), &l1, nullptr);
                         const pgloss_status want = ms != PGLOSS_OK ? ms : ds;
                         if (first == PGLOSS_OK) first = want;
                         ASSERT_EQ(st[j], static_cast<signed char>(want)) << "element " << j;
@@ -197,23 +194,24 @@ TEST_P(PerIsa, DoublePathAgreesWithScalarReference) {
     }
     std::vector<double> mm[6];
     for (int k = 0; k < 6; ++k) mm[k].assign(t.m[k].begin() + 1, t.m[k].end());
-    const pgloss_vec3_array_d wo{d[0].data(), d[1].data(), d[2].data()}, wi{d[3].data(), d[4].data(), d[5].data()};
-    const pgloss_batch_options opt{PGLOSS_PRECISION_FLOAT, GetParam()};
+    const pgloss_batch_options opt = batch_options(PGLOSS_PRECISION_FLOAT, GetParam(), PGLOSS_FLOAT64);
     for (pgloss_normalization nm : {PGLOSS_NORM_WARD, PGLOSS_NORM_WARD_DUR, PGLOSS_NORM_BOUNDED}) {
-        const pgloss_physical_array pa{mm[0].data(), mm[1].data(), mm[2].data(), mm[3].data(), mm[4].data(), mm[5].data(), nm};
+        const pgloss_physical_array pa =
+            physical_cols(mm[0].data(), mm[1].data(), mm[2].data(), mm[3].data(), mm[4].data(), mm[5].data(), nm);
         std::vector<double> r(n), g(n), b(n), p(n);
         std::vector<signed char> st(n);
-        pgloss_eval_pdf_batch_materials_d_ex(&opt, &pa, PGLOSS_LOBE_ALL, n, wo, wi, pgloss_rgb_out_d{r.data(), g.data(), b.data()},
-                                             p.data(), st.data());
+        pgloss_eval_pdf_batch(&opt, nullptr, &pa, PGLOSS_LOBE_ALL, n, soa(d[0].data(), d[1].data(), d[2].data()),
+                              soa(d[3].data(), d[4].data(), d[5].data()), soa_out(r.data(), g.data(), b.data()),
+                              col_out(p.data()), st.data());
         for (size_t j = 0; j < n; ++j) {
             const pgloss_physical ph = t.phys(j, nm);
             pgloss_material mj;
             const pgloss_status ms = pgloss_material_init(&mj, &ph);
             double r1, g1, b1, p1;
             signed char s1;
-            const pgloss_vec3_array_d o1{wo.x + j, wo.y + j, wo.z + j}, i1{wi.x + j, wi.y + j, wi.z + j};
-            const pgloss_status ds = pgloss_eval_pdf_batch_d_ex(&opt, &mj, PGLOSS_LOBE_ALL, 1, o1, i1,
-                                                                pgloss_rgb_out_d{&r1, &g1, &b1}, &p1, &s1);
+            const pgloss_status ds = pgloss_eval_pdf_batch(
+                &opt, &mj, nullptr, PGLOSS_LOBE_ALL, 1, soa(&d[0][j], &d[1][j], &d[2][j]), soa(&d[3][j], &d[4][j], &d[5][j]),
+                soa_out(&r1, &g1, &b1), col_out(&p1), &s1);
             ASSERT_EQ(st[j], static_cast<signed char>(ms != PGLOSS_OK ? ms : ds)) << j;
             if (ms != PGLOSS_OK) {
                 EXPECT_TRUE(r[j] == 0 && p[j] == 0);
@@ -265,11 +263,11 @@ TEST_P(PerIsa, DoubleSamplerEqualsOneMaterialPerCallScalarAndBaseline) {
             if (j % 59 == 9) o[2][j] = -o[2][j];
             if (j % 61 == 10) o[2][j] = NAN;
         }
-        const pgloss_vec3_array_d wo{o[0].data(), o[1].data(), o[2].data()};
+        const pgloss_strided3 wo = soa(o[0].data(), o[1].data(), o[2].data());
         for (pgloss_normalization nm : {PGLOSS_NORM_WARD, PGLOSS_NORM_WARD_DUR, PGLOSS_NORM_BOUNDED})
             for (unsigned lobes : {1u, 2u, 3u}) {
-                const pgloss_physical_array pa{mm[0].data(), mm[1].data(), mm[2].data(), mm[3].data(),
-                                               mm[4].data(), mm[5].data(), nm};
+                const pgloss_physical_array pa =
+                    physical_cols(mm[0].data(), mm[1].data(), mm[2].data(), mm[3].data(), mm[4].data(), mm[5].data(), nm);
                 struct Out {
                     std::vector<double> v[7];
                     std::vector<unsigned char> lb;
@@ -281,11 +279,11 @@ TEST_P(PerIsa, DoubleSamplerEqualsOneMaterialPerCallScalarAndBaseline) {
                     for (auto &v : r.v) v.assign(n, -7.0);
                     r.lb.assign(n, 77);
                     r.st.assign(n, 99);
-                    const pgloss_batch_options opt{PGLOSS_PRECISION_FLOAT, isa};
-                    r.all = pgloss_sample_batch_materials_d_ex(
-                        &opt, &pa, lobes, n, wo, u[0].data(), u[1].data(), u[2].data(),
-                        pgloss_vec3_out_d{r.v[0].data(), r.v[1].data(), r.v[2].data()}, r.v[3].data(),
-                        pgloss_rgb_out_d{r.v[4].data(), r.v[5].data(), r.v[6].data()}, r.lb.data(), r.st.data());
+                    const pgloss_batch_options opt = batch_options(PGLOSS_PRECISION_FLOAT, isa, PGLOSS_FLOAT64);
+                    r.all = pgloss_sample_batch(&opt, nullptr, &pa, lobes, n, wo, soa(u[0].data(), u[1].data(), u[2].data()),
+                                                soa_out(r.v[0].data(), r.v[1].data(), r.v[2].data()), col_out(r.v[3].data()),
+                                                soa_out(r.v[4].data(), r.v[5].data(), r.v[6].data()), r.lb.data(),
+                                                r.st.data());
                     return r;
                 };
                 const Out a = run(GetParam()), base = run(PGLOSS_ISA_BASELINE);
@@ -293,10 +291,11 @@ TEST_P(PerIsa, DoubleSamplerEqualsOneMaterialPerCallScalarAndBaseline) {
                 // the baseline's f and pdf at the wi that GetParam()'s sampler drew
                 std::vector<double> bf[3], bp(n);
                 for (auto &v : bf) v.assign(n, 0.0);
-                const pgloss_batch_options base_opt{PGLOSS_PRECISION_FLOAT, PGLOSS_ISA_BASELINE};
-                pgloss_eval_pdf_batch_materials_d_ex(
-                    &base_opt, &pa, lobes, n, wo, pgloss_vec3_array_d{a.v[0].data(), a.v[1].data(), a.v[2].data()},
-                    pgloss_rgb_out_d{bf[0].data(), bf[1].data(), bf[2].data()}, bp.data(), nullptr);
+                const pgloss_batch_options base_opt =
+                    batch_options(PGLOSS_PRECISION_FLOAT, PGLOSS_ISA_BASELINE, PGLOSS_FLOAT64);
+                pgloss_eval_pdf_batch(&base_opt, nullptr, &pa, lobes, n, wo,
+                                      soa(a.v[0].data(), a.v[1].data(), a.v[2].data()),
+                                      soa_out(bf[0].data(), bf[1].data(), bf[2].data()), col_out(bp.data()), nullptr);
                 for (size_t j = 0; j < n; ++j) {
                     ASSERT_EQ(a.st[j], base.st[j]) << j;
                     ASSERT_EQ(a.lb[j], base.lb[j]) << j;
@@ -316,7 +315,7 @@ TEST_P(PerIsa, DoubleSamplerEqualsOneMaterialPerCallScalarAndBaseline) {
                     for (size_t j = 0; j < n; ++j)
                         for (int k = 0; k < 7; ++k) ASSERT_EQ(a.v[k][j], b.v[k][j]) << "output " << k << " element " << j;
                 }
-                const pgloss_batch_options opt{PGLOSS_PRECISION_FLOAT, GetParam()};
+                const pgloss_batch_options opt = batch_options(PGLOSS_PRECISION_FLOAT, GetParam(), PGLOSS_FLOAT64);
                 size_t compared = 0;
                 for (size_t j = 0; j < n; ++j) {
                     const pgloss_physical ph = t.phys(j, nm);
@@ -332,10 +331,10 @@ TEST_P(PerIsa, DoubleSamplerEqualsOneMaterialPerCallScalarAndBaseline) {
                     double v1[7];
                     unsigned char l1 = 77;
                     signed char s1 = 99;
-                    const pgloss_vec3_array_d o1{wo.x + j, wo.y + j, wo.z + j};
-                    const pgloss_status ds = pgloss_sample_batch_d_ex(
-                        &opt, &mj, lobes, 1, o1, &u[0][j], &u[1][j], &u[2][j], pgloss_vec3_out_d{&v1[0], &v1[1], &v1[2]},
-                        &v1[3], pgloss_rgb_out_d{&v1[4], &v1[5], &v1[6]}, &l1, &s1);
+                    const pgloss_strided3 o1 = soa(&o[0][j], &o[1][j], &o[2][j]);
+                    const pgloss_status ds = pgloss_sample_batch(
+                        &opt, &mj, nullptr, lobes, 1, o1, soa(&u[0][j], &u[1][j], &u[2][j]), soa_out(&v1[0], &v1[1], &v1[2]),
+                        col_out(&v1[3]), soa_out(&v1[4], &v1[5], &v1[6]), &l1, &s1);
                     ASSERT_EQ(ds, static_cast<pgloss_status>(s1));
                     ASSERT_EQ(a.st[j], s1) << j;
                     ASSERT_EQ(a.lb[j], l1) << j;
@@ -359,9 +358,9 @@ TEST_P(PerIsa, DoubleSamplerEqualsOneMaterialPerCallScalarAndBaseline) {
                     // from the horizon and the rejection borders, where a rounding of wi decides
                     if (a.v[3][j] > 0.0) {
                         double f[3], pe;
-                        const pgloss_vec3_array_d i1{&a.v[0][j], &a.v[1][j], &a.v[2][j]};
-                        ASSERT_EQ(pgloss_eval_pdf_batch_d_ex(&opt, &mj, lobes, 1, o1, i1, pgloss_rgb_out_d{&f[0], &f[1], &f[2]},
-                                                             &pe, nullptr),
+                        ASSERT_EQ(pgloss_eval_pdf_batch(&opt, &mj, nullptr, lobes, 1, o1,
+                                                        soa(&a.v[0][j], &a.v[1][j], &a.v[2][j]),
+                                                        soa_out(&f[0], &f[1], &f[2]), col_out(&pe), nullptr),
                                   PGLOSS_OK);
                         const double c = a.v[2][j] / std::sqrt(a.v[0][j] * a.v[0][j] + a.v[1][j] * a.v[1][j] + a.v[2][j] * a.v[2][j]);
                         EXPECT_NEAR(a.v[3][j], pe, 1e-12 * pe) << j;
@@ -380,38 +379,216 @@ TEST_P(PerIsa, DoubleSamplerEqualsOneMaterialPerCallScalarAndBaseline) {
     }
 }
 
+// ---- strided arrays: every layout gives the bits of plain columns -----------------------------
+
+// k values per element (k = 1 or 3) of type T in a byte buffer, in one of these layouts:
+// columns, (n, k) rows, rows in reverse order (a negative stride), rows at an odd stride from an
+// odd address (unaligned), or one value for every element (stride 0, inputs only).
+enum Layout { kColumns, kRows, kReversed, kOdd, kBroadcast };
+
+template <class T>
+struct Laid {
+    std::vector<unsigned char> buf;
+    ptrdiff_t stride = 0;
+    size_t off[3] = {0, 0, 0};
+    size_t k;
+    Laid(size_t n, size_t k_, Layout l, unsigned char fill = 0xab) : k(k_) {
+        const size_t sz = sizeof(T), rows = l == kBroadcast ? 1 : n;
+        size_t total = 0;
+        if (l == kColumns) {
+            stride = static_cast<ptrdiff_t>(sz);
+            for (size_t c = 0; c < k; ++c) off[c] = c * (rows * sz + 8);
+            total = k * (rows * sz + 8);
+        } else {
+            const size_t row = l == kOdd ? k * sz + 1 : k * sz;
+            const size_t first = l == kOdd ? 1 : 0;
+            for (size_t c = 0; c < k; ++c) off[c] = first + c * sz;
+            total = first + rows * row;
+            stride = l == kBroadcast ? 0 : static_cast<ptrdiff_t>(row);
+            if (l == kReversed) {  // element 0 is the last row
+                for (size_t c = 0; c < k; ++c) off[c] += (rows - 1) * row;
+                stride = -stride;
+            }
+        }
+        buf.assign(total + 16, fill);
+    }
+    unsigned char *at(size_t c, size_t j) { return buf.data() + off[c] + static_cast<ptrdiff_t>(j) * stride; }
+    void set(size_t c, size_t j, T v) { std::memcpy(at(c, j), &v, sizeof v); }
+    T get(size_t c, size_t j) {
+        T v;
+        std::memcpy(&v, at(c, j), sizeof v);
+        return v;
+    }
+    pgloss_strided3 in3() { return pgloss_strided3{{at(0, 0), at(1, 0), at(2, 0)}, stride}; }
+    pgloss_strided3_out out3() { return pgloss_strided3_out{{at(0, 0), at(1, 0), at(2, 0)}, stride}; }
+    pgloss_strided in1() { return pgloss_strided{at(0, 0), stride}; }
+    pgloss_strided_out out1() { return pgloss_strided_out{at(0, 0), stride}; }
+};
+
+template <class T>
+bool same(T a, T b) {
+    return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+// One call's inputs laid out one way, and its outputs: directions (wo; wi or u), materials
+// (ρd as three values per element, ρs, αx, αy as one each) and the outputs (f or wi; pdf;
+// weight). With kBroadcast the inputs hold element `one`'s values, the outputs are rows.
+template <class T>
+struct Call {
+    Laid<T> wo, x, rd, rs, ax, ay, y0, y1, y2;
+    std::vector<unsigned char> lobe;
+    std::vector<signed char> st;
+    pgloss_status all = PGLOSS_OK;
+    Call(const Tex &t, size_t n, Layout l, bool sample, size_t one = 0)
+        : wo(n, 3, l), x(n, 3, l), rd(n, 3, l), rs(n, 1, l), ax(n, 1, l), ay(n, 1, l),
+          y0(n, 3, l == kBroadcast ? kRows : l), y1(n, 1, l == kBroadcast ? kRows : l),
+          y2(n, 3, l == kBroadcast ? kRows : l), lobe(n, 77), st(n, 99) {
+        const size_t rows = l == kBroadcast ? 1 : n;
+        for (size_t j = 0; j < rows; ++j) {
+            const size_t e = l == kBroadcast ? one : j;
+            for (size_t c = 0; c < 3; ++c) {
+                wo.set(c, j, static_cast<T>(t.o[c][e + 1]));
+                x.set(c, j, static_cast<T>(sample ? t.u[c][e + 1] : t.i[c][e + 1]));
+                rd.set(c, j, static_cast<T>(t.m[c][e + 1]));
+            }
+            rs.set(0, j, static_cast<T>(t.m[3][e + 1]));
+            ax.set(0, j, static_cast<T>(t.m[4][e + 1]));
+            ay.set(0, j, static_cast<T>(t.m[5][e + 1]));
+        }
+    }
+    pgloss_physical_array mats(pgloss_normalization nm) {
+        return pgloss_physical_array{rd.in3(), rs.in1(), ax.in1(), ay.in1(), nm};
+    }
+    void run(const pgloss_batch_options *opt, const pgloss_material *m, bool per_element, bool sample, size_t n) {
+        const pgloss_physical_array ma = mats(PGLOSS_NORM_WARD_DUR);
+        const pgloss_physical_array *pm = per_element ? &ma : nullptr;
+        const pgloss_material *one = per_element ? nullptr : m;
+        all = sample ? pgloss_sample_batch(opt, one, pm, 3, n, wo.in3(), x.in3(), y0.out3(), y1.out1(), y2.out3(),
+                                           lobe.data(), st.data())
+                     : pgloss_eval_pdf_batch(opt, one, pm, 3, n, wo.in3(), x.in3(), y0.out3(), y1.out1(), st.data());
+    }
+};
+
+template <class T>
+void strided_layouts_match_columns(pgloss_isa isa) {
+    const size_t n = 300;  // more than one chunk
+    const Tex t(n, true, 17);
+    pgloss_material m;
+    const pgloss_physical ph = t.phys(3, PGLOSS_NORM_WARD_DUR);
+    ASSERT_EQ(pgloss_material_init(&m, &ph), PGLOSS_OK);
+    const pgloss_scalar_type type = sizeof(T) == 8 ? PGLOSS_FLOAT64 : PGLOSS_FLOAT32;
+    for (pgloss_precision prec : {PGLOSS_PRECISION_FLOAT, PGLOSS_PRECISION_FAST, PGLOSS_PRECISION_REFERENCE}) {
+        const pgloss_batch_options opt = batch_options(prec, isa, type);
+        for (int sample = 0; sample < 2; ++sample)
+            for (int per_element = 0; per_element < 2; ++per_element) {
+                Call<T> ref(t, n, kColumns, sample);
+                ref.run(&opt, &m, per_element, sample, n);
+                for (Layout l : {kRows, kReversed, kOdd}) {
+                    Call<T> c(t, n, l, sample);
+                    c.run(&opt, &m, per_element, sample, n);
+                    ASSERT_EQ(c.all, ref.all) << "layout " << l;
+                    for (size_t j = 0; j < n; ++j) {
+                        ASSERT_EQ(c.st[j], ref.st[j]) << j;
+                        ASSERT_EQ(c.lobe[j], ref.lobe[j]) << j;
+                        for (size_t k = 0; k < 3; ++k) {
+                            ASSERT_TRUE(same(c.y0.get(k, j), ref.y0.get(k, j)))
+                                << "layout " << l << " element " << j << " prec " << prec << " sample " << sample;
+                            if (sample) {
+                                ASSERT_TRUE(same(c.y2.get(k, j), ref.y2.get(k, j))) << "weight " << j;
+                            }
+                        }
+                        ASSERT_TRUE(same(c.y1.get(0, j), ref.y1.get(0, j))) << "layout " << l << " element " << j;
+                    }
+                }
+                // one value for every element (stride 0) = that value repeated in columns
+                const size_t one = 5;
+                Call<T> b(t, n, kBroadcast, sample, one);
+                b.run(&opt, &m, per_element, sample, n);
+                Call<T> rep(t, n, kColumns, sample);
+                for (size_t j = 0; j < n; ++j)
+                    for (size_t c = 0; c < 3; ++c) {
+                        rep.wo.set(c, j, rep.wo.get(c, one));
+                        rep.x.set(c, j, rep.x.get(c, one));
+                        rep.rd.set(c, j, rep.rd.get(c, one));
+                        if (c == 0) {
+                            rep.rs.set(0, j, rep.rs.get(0, one));
+                            rep.ax.set(0, j, rep.ax.get(0, one));
+                            rep.ay.set(0, j, rep.ay.get(0, one));
+                        }
+                    }
+                rep.run(&opt, &m, per_element, sample, n);
+                ASSERT_EQ(b.all, rep.all);
+                for (size_t j = 0; j < n; ++j) {
+                    ASSERT_EQ(b.st[j], rep.st[j]) << j;
+                    for (size_t k = 0; k < 3; ++k)
+                        ASSERT_TRUE(same(b.y0.get(k, j), rep.y0.get(k, j))) << "broadcast, element " << j;
+                    ASSERT_TRUE(same(b.y1.get(0, j), rep.y1.get(0, j))) << "broadcast, element " << j;
+                }
+            }
+    }
+}
+
+TEST_P(PerIsa, StridedLayoutsMatchColumnsFloat32) { strided_layouts_match_columns<float>(GetParam()); }
+TEST_P(PerIsa, StridedLayoutsMatchColumnsFloat64) { strided_layouts_match_columns<double>(GetParam()); }
+
 INSTANTIATE_TEST_SUITE_P(Isa, PerIsa, ::testing::ValuesIn(kIsas),
                          [](const ::testing::TestParamInfo<pgloss_isa> &i) { return std::string(pgloss_isa_name(i.param)); });
 
-TEST(BatchMaterials, EmptyNullAndOptions) {
-    const pgloss_vec3_array none{nullptr, nullptr, nullptr};
-    const pgloss_rgb_out fnone{nullptr, nullptr, nullptr};
-    EXPECT_EQ(pgloss_eval_batch_materials(nullptr, 3, 0, none, none, fnone), PGLOSS_OK);
-    EXPECT_EQ(pgloss_eval_batch_materials(nullptr, 3, 1, none, none, fnone), PGLOSS_ERR_NULL);
+TEST(Batch, EmptyNullAndWholeCallErrors) {
+    const pgloss_strided3 none{{nullptr, nullptr, nullptr}, 0};
+    // n == 0: OK whatever else is missing; options are checked first
+    EXPECT_EQ(pgloss_eval_pdf_batch(nullptr, nullptr, nullptr, 3, 0, none, none, no_out3(), no_out(), nullptr), PGLOSS_OK);
+    EXPECT_EQ(pgloss_eval_pdf_batch(nullptr, nullptr, nullptr, 3, 1, none, none, no_out3(), no_out(), nullptr),
+              PGLOSS_ERR_NULL);
     const Tex t(4, false);
-    pgloss_material_array ma = t.mats(PGLOSS_NORM_WARD);
-    float r[4] = {-1, -1, -1, -1}, g[4], b[4];
+    pgloss_physical_array ma = t.mats(PGLOSS_NORM_WARD);
+    float r[4] = {-1, -1, -1, -1}, g[4], b[4], p[4];
+    const pgloss_strided3_out f = soa_out(r, g, b);
     ma.normalization = static_cast<pgloss_normalization>(7);
-    EXPECT_EQ(pgloss_eval_batch_materials(&ma, 3, 4, t.wo(), t.wi(), pgloss_rgb_out{r, g, b}), PGLOSS_ERR_NORMALIZATION);
+    EXPECT_EQ(pgloss_eval_pdf_batch(nullptr, nullptr, &ma, 3, 4, t.wo(), t.wi(), f, no_out(), nullptr),
+              PGLOSS_ERR_NORMALIZATION);
     EXPECT_EQ(r[0], -1.0f) << "nothing written";
     ma.normalization = PGLOSS_NORM_WARD;
-    const pgloss_batch_options bad{static_cast<pgloss_precision>(9), PGLOSS_ISA_AUTO};
-    EXPECT_EQ(pgloss_eval_pdf_batch_materials_ex(&bad, &ma, 3, 4, t.wo(), t.wi(), pgloss_rgb_out{r, g, b}, nullptr, nullptr),
+    const pgloss_batch_options bad{static_cast<pgloss_precision>(9), PGLOSS_ISA_AUTO, PGLOSS_FLOAT32};
+    const pgloss_batch_options bad_type{PGLOSS_PRECISION_FLOAT, PGLOSS_ISA_AUTO, static_cast<pgloss_scalar_type>(2)};
+    EXPECT_EQ(pgloss_eval_pdf_batch(&bad, nullptr, &ma, 3, 4, t.wo(), t.wi(), f, no_out(), nullptr), PGLOSS_ERR_ARGUMENT);
+    EXPECT_EQ(pgloss_eval_pdf_batch(&bad_type, nullptr, &ma, 3, 0, t.wo(), t.wi(), f, no_out(), nullptr),
+              PGLOSS_ERR_ARGUMENT);
+    pgloss_material m;
+    const pgloss_physical ph = t.phys(0, PGLOSS_NORM_WARD);
+    ASSERT_EQ(pgloss_material_init(&m, &ph), PGLOSS_OK);
+    // one material and per-element materials at once; an output with stride 0 for n > 1
+    EXPECT_EQ(pgloss_eval_pdf_batch(nullptr, &m, &ma, 3, 4, t.wo(), t.wi(), f, no_out(), nullptr), PGLOSS_ERR_ARGUMENT);
+    EXPECT_EQ(pgloss_eval_pdf_batch(nullptr, &m, nullptr, 3, 4, t.wo(), t.wi(), f, pgloss_strided_out{p, 0}, nullptr),
+              PGLOSS_ERR_ARGUMENT);
+    EXPECT_EQ(pgloss_eval_pdf_batch(nullptr, &m, nullptr, 3, 1, t.wo(), t.wi(), f, pgloss_strided_out{p, 0}, nullptr),
+              PGLOSS_OK);
+    // neither output, or an incomplete one
+    r[0] = -1;
+    EXPECT_EQ(pgloss_eval_pdf_batch(nullptr, &m, nullptr, 3, 4, t.wo(), t.wi(), no_out3(), no_out(), nullptr),
+              PGLOSS_ERR_NULL);
+    EXPECT_EQ(pgloss_eval_pdf_batch(nullptr, &m, nullptr, 3, 4, t.wo(), t.wi(), soa_out(r, g, static_cast<float *>(nullptr)),
+                                    no_out(), nullptr),
+              PGLOSS_ERR_NULL);
+    EXPECT_EQ(r[0], -1.0f) << "nothing written";
+    // sampling: every output but the lobe is required
+    float x[4], y[4], z[4];
+    EXPECT_EQ(pgloss_sample_batch(nullptr, &m, nullptr, 3, 4, t.wo(), t.us(), soa_out(x, y, z), no_out(), f, nullptr,
+                                  nullptr),
+              PGLOSS_ERR_NULL);
+    EXPECT_EQ(pgloss_sample_batch(nullptr, &m, nullptr, 3, 4, t.wo(), t.us(), soa_out(x, y, z), col_out(p),
+                                  pgloss_strided3_out{{r, g, b}, 0}, nullptr, nullptr),
               PGLOSS_ERR_ARGUMENT);
     // alpha_y NULL: isotropic, αy = αx
     std::vector<float> ax(t.m[4].begin() + 1, t.m[4].end());
-    pgloss_material_array iso = ma, both = ma;
-    iso.alpha_y = nullptr;
-    both.alpha_y = ax.data();
+    pgloss_physical_array iso = ma, both = ma;
+    iso.alpha_y = pgloss_strided{nullptr, 0};
+    both.alpha_y = col(ax.data());
     float r2[4], g2[4], b2[4];
-    EXPECT_EQ(pgloss_eval_batch_materials(&iso, 3, 4, t.wo(), t.wi(), pgloss_rgb_out{r, g, b}), PGLOSS_OK);
-    EXPECT_EQ(pgloss_eval_batch_materials(&both, 3, 4, t.wo(), t.wi(), pgloss_rgb_out{r2, g2, b2}), PGLOSS_OK);
+    EXPECT_EQ(pgloss_eval_pdf_batch(nullptr, nullptr, &iso, 3, 4, t.wo(), t.wi(), f, no_out(), nullptr), PGLOSS_OK);
+    EXPECT_EQ(pgloss_eval_pdf_batch(nullptr, nullptr, &both, 3, 4, t.wo(), t.wi(), soa_out(r2, g2, b2), no_out(), nullptr),
+              PGLOSS_OK);
     for (int j = 0; j < 4; ++j) EXPECT_EQ(r[j], r2[j]);
-    // the double forms
-    const pgloss_vec3_array_d dn{nullptr, nullptr, nullptr};
-    EXPECT_EQ(pgloss_eval_batch_d(nullptr, 3, 0, dn, dn, pgloss_rgb_out_d{nullptr, nullptr, nullptr}), PGLOSS_OK);
-    EXPECT_EQ(pgloss_eval_batch_materials_d(nullptr, 3, 2, dn, dn, pgloss_rgb_out_d{nullptr, nullptr, nullptr}),
-              PGLOSS_ERR_NULL);
 }
 
 // ---- batched perceptual functions: element by element the scalar function, statuses --------
@@ -437,8 +614,9 @@ TEST(PerceptualBatch, EqualsScalarFunctionsElementByElement) {
         if (s < 0 && first == PGLOSS_OK) first = s;
         if (s > 0 && warn == PGLOSS_OK) warn = s;
     };
-    pgloss_status r = pgloss_gloss_from_physical_batch(n, a.data() + 1, b.data() + 1, c.data() + 1, o1.data(), o2.data(),
-                                                       o3.data(), st.data());
+    pgloss_status r = pgloss_gloss_from_physical_batch(n, col(a.data() + 1), col(b.data() + 1), col(c.data() + 1),
+                                                       col_out(o1.data()), col_out(o2.data()), col_out(o3.data()),
+                                                       st.data());
     for (size_t j = 0; j < n; ++j) {
         double x, y, z;
         const pgloss_status s = pgloss_gloss_from_physical(a[j + 1], b[j + 1], c[j + 1], &x, &y, &z);
@@ -450,10 +628,10 @@ TEST(PerceptualBatch, EqualsScalarFunctionsElementByElement) {
     // physical_from_perceptual (Rec. 709 and ACEScg)
     for (pgloss_color_space sp : {PGLOSS_COLOR_SPACE_LINEAR_REC709, PGLOSS_COLOR_SPACE_ACESCG}) {
         first = warn = PGLOSS_OK;
-        r = pgloss_physical_from_perceptual_batch_ex(
-            n, pgloss_perceptual_array{L.data() + 1, A.data() + 1, B.data() + 1, C.data() + 1, D.data() + 1},
-            PGLOSS_NORM_BOUNDED, sp, pgloss_physical_out{o1.data(), o2.data(), o3.data(), o4.data(), o5.data(), o6.data()},
-            st.data());
+        const pgloss_perceptual_array q = perceptual_cols(L.data() + 1, A.data() + 1, B.data() + 1, C.data() + 1, D.data() + 1);
+        const pgloss_physical_array_out po =
+            physical_cols_out(o1.data(), o2.data(), o3.data(), o4.data(), o5.data(), o6.data());
+        r = pgloss_physical_from_perceptual_batch(n, &q, PGLOSS_NORM_BOUNDED, sp, &po, st.data());
         for (size_t j = 0; j < n; ++j) {
             const pgloss_perceptual q{L[j + 1], A[j + 1], B[j + 1], C[j + 1], D[j + 1]};
             pgloss_physical p;
@@ -468,8 +646,8 @@ TEST(PerceptualBatch, EqualsScalarFunctionsElementByElement) {
     }
     // check_perceptual: statuses only, status array optional
     first = warn = PGLOSS_OK;
-    r = pgloss_check_perceptual_batch(n, pgloss_perceptual_array{L.data() + 1, A.data() + 1, B.data() + 1, C.data() + 1, D.data() + 1},
-                                      st.data());
+    const pgloss_perceptual_array q = perceptual_cols(L.data() + 1, A.data() + 1, B.data() + 1, C.data() + 1, D.data() + 1);
+    r = pgloss_check_perceptual_batch(n, &q, PGLOSS_COLOR_SPACE_LINEAR_REC709, st.data());
     for (size_t j = 0; j < n; ++j) {
         const pgloss_perceptual q{L[j + 1], A[j + 1], B[j + 1], C[j + 1], D[j + 1]};
         const pgloss_status s = pgloss_check_perceptual(&q);
@@ -477,30 +655,36 @@ TEST(PerceptualBatch, EqualsScalarFunctionsElementByElement) {
         ASSERT_EQ(st[j], s) << j;
     }
     EXPECT_EQ(r, first != PGLOSS_OK ? first : warn);
-    EXPECT_EQ(pgloss_check_perceptual_batch(n, pgloss_perceptual_array{L.data() + 1, A.data() + 1, B.data() + 1, C.data() + 1,
-                                                                       D.data() + 1},
-                                            nullptr),
-              r);
+    EXPECT_EQ(pgloss_check_perceptual_batch(n, &q, PGLOSS_COLOR_SPACE_LINEAR_REC709, nullptr), r);
     // in place: an output may be the very input array
     std::vector<double> y(L.begin() + 1, L.end()), c2(n);
     std::vector<double> ref(n);
     for (size_t j = 0; j < n; ++j) pgloss_envelope_contrast(y[j], &ref[j]);
-    pgloss_envelope_contrast_batch(n, y.data(), y.data(), nullptr);
+    pgloss_envelope_contrast_batch(n, col(y.data()), col_out(y.data()), nullptr);
     for (size_t j = 0; j < n; ++j) ASSERT_TRUE(eq(y[j], ref[j])) << j;
 }
 
 TEST(PerceptualBatch, EmptyAndWholeCallErrors) {
-    EXPECT_EQ(pgloss_envelope_contrast_batch(0, nullptr, nullptr, nullptr), PGLOSS_OK);
-    EXPECT_EQ(pgloss_envelope_contrast_batch(1, nullptr, nullptr, nullptr), PGLOSS_ERR_NULL);
-    double L = 50, a = 0, c = 0.05, d = 0.95, o = -7;
-    const pgloss_perceptual_array q{&L, &a, &a, &c, &d};
-    const pgloss_physical_out p{&o, &o, &o, &o, &o, nullptr};
-    EXPECT_EQ(pgloss_physical_from_perceptual_batch(1, q, static_cast<pgloss_normalization>(5), p, nullptr),
+    const pgloss_strided none{nullptr, 0};
+    EXPECT_EQ(pgloss_envelope_contrast_batch(0, none, no_out(), nullptr), PGLOSS_OK);
+    EXPECT_EQ(pgloss_envelope_contrast_batch(1, none, no_out(), nullptr), PGLOSS_ERR_NULL);
+    double L = 50, a = 0, c = 0.05, d = 0.95, o = -7, o2[2] = {-7, -7};
+    const pgloss_perceptual_array q = perceptual_cols(&L, &a, &a, &c, &d);
+    const pgloss_physical_array_out p = physical_cols_out(&o, &o, &o, &o, &o, nullptr);
+    const auto rec709 = PGLOSS_COLOR_SPACE_LINEAR_REC709;
+    EXPECT_EQ(pgloss_physical_from_perceptual_batch(1, &q, static_cast<pgloss_normalization>(5), rec709, &p, nullptr),
               PGLOSS_ERR_NORMALIZATION);
     EXPECT_EQ(o, -7) << "nothing written";
-    EXPECT_EQ(pgloss_physical_from_perceptual_batch_ex(1, q, PGLOSS_NORM_WARD, static_cast<pgloss_color_space>(4), p, nullptr),
+    EXPECT_EQ(pgloss_physical_from_perceptual_batch(1, &q, PGLOSS_NORM_WARD, static_cast<pgloss_color_space>(4), &p, nullptr),
               PGLOSS_ERR_ARGUMENT);
-    EXPECT_EQ(pgloss_physical_from_perceptual_batch(1, q, PGLOSS_NORM_WARD, p, nullptr), PGLOSS_OK);
+    EXPECT_EQ(pgloss_physical_from_perceptual_batch(1, nullptr, PGLOSS_NORM_WARD, rec709, &p, nullptr), PGLOSS_ERR_NULL);
+    EXPECT_EQ(pgloss_physical_from_perceptual_batch(1, &q, PGLOSS_NORM_WARD, rec709, &p, nullptr), PGLOSS_OK);
+    // an output with stride 0 for more than one element; one input broadcast to two is fine
+    EXPECT_EQ(pgloss_envelope_contrast_batch(2, pgloss_strided{&L, 0}, pgloss_strided_out{o2, 0}, nullptr),
+              PGLOSS_ERR_ARGUMENT);
+    EXPECT_EQ(o2[0], -7) << "nothing written";
+    EXPECT_EQ(pgloss_envelope_contrast_batch(2, pgloss_strided{&L, 0}, col_out(o2), nullptr), PGLOSS_OK);
+    EXPECT_EQ(o2[0], o2[1]);
 }
 
 }  // namespace
