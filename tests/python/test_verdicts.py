@@ -59,7 +59,7 @@ def test_to_physical_beyond_the_envelope_is_an_error() -> None:
     rho_d = y_from_lightness(95.0)
     rho_s = specular(rho_d, 0.3)
     assert round(rho_d, 3) == 0.876 and round(rho_s, 3) == 0.751 and rho_d + rho_s > 1
-    for convert in (lambda: BRIGHT_AND_GLOSSY.to_physical(), lambda: pgloss.physical_from_perceptual(BRIGHT_AND_GLOSSY)):
+    for convert in (BRIGHT_AND_GLOSSY.to_physical, lambda: pgloss.physical_from_perceptual(BRIGHT_AND_GLOSSY)):
         with pytest.raises(PglossError) as e:
             convert()
         assert e.value.status == Status.ERR_ENVELOPE

@@ -24,11 +24,11 @@ the same name without the prefix. Functions are **array-first**:
   with the same results, bit for bit, on any number; a scalar input gives a Python ``float``.
 
 Precision: the BRDF functions (:func:`eval`, :func:`pdf`, :func:`eval_pdf`, :func:`sample`)
-run the C core's vectorised batches: ``float32`` arrays the float batch (``pgloss_*_batch``,
-``pgloss_*_batch_materials``), giving ``float32``; ``float64`` (and integer) arrays the double
-batch (``pgloss_*_batch_d``, ``pgloss_*_batch_materials_d``: double arithmetic on the double
-directions, the accuracy of the scalar double reference), giving ``float64``. ``out=`` writes
-the big outputs into the caller's arrays. The perceptual and colour functions compute in
+run the C core's strided batches (``pgloss_eval_pdf_batch``, ``pgloss_sample_batch``), which
+read numpy's arrays in place: ``float32`` arrays the float batch, giving ``float32``;
+``float64`` (and integer) arrays the double batch (double arithmetic on the double directions,
+the accuracy of the scalar double reference), giving ``float64``. ``out=`` writes the big
+outputs into the caller's arrays. The perceptual and colour functions compute in
 double (the batched ``pgloss_*_batch`` functions of ``pgloss/perceptual_batch.h`` where the
 core has them); their result is ``float32`` for ``float32`` input and ``float64`` otherwise.
 
@@ -36,7 +36,8 @@ Errors are exceptions: :class:`PglossError` (a :class:`ValueError`) carrying the
 status and reason, the index of the first failing element and, for element-wise calls, the
 status of every element (``status_array``). ``errors="status"`` returns the statuses instead
 of raising (the conversions and element-wise functions), and ``check()`` of an array of paints
-returns them. Values outside the range the paper trusts (α > 0.2) give an
+returns them. A conversion's verdict on a paint is the core's check of it (``check=False``: the
+bare conversion). Values outside the range the paper trusts (α > 0.2) give an
 :class:`AlphaUntrustedWarning`. No function returns NaN or Inf for finite input.
 
 Example::

@@ -26,7 +26,8 @@ def _material(function: str, m: Any) -> Material:
 
 
 def _directions(function: str, names: Tuple[str, str], a: Any, b: Any, extra: Tuple[int, ...] = ()):
-    """(..., 3) arrays → flat contiguous (n*3) arrays of one dtype, and the batch shape (the
+    """(..., 3) arrays → (n, 3) arrays of one dtype, views where numpy can make them (stride 0
+    for a direction shared by every element: the core reads strides), and the batch shape (the
     broadcast of both leading shapes and ``extra``, the material's shape)."""
     arrs = []
     for name, v in zip(names, (a, b)):
@@ -37,8 +38,8 @@ def _directions(function: str, names: Tuple[str, str], a: Any, b: Any, extra: Tu
         what = f"{names[0]}{arrs[0].shape}, {names[1]}{arrs[1].shape}" + (f", material{extra}" if extra else "")
         raise ValueError(f"pgloss.{function}: shapes do not broadcast: {what}") from None
     dtype = _out_dtype((a, b), arrs)
-    flat = [np.ascontiguousarray(np.broadcast_to(x, shape + (3,)), dtype=dtype).reshape(-1) for x in arrs]
-    return flat, shape, dtype
+    rows = [np.broadcast_to(np.asarray(x, dtype=dtype), shape + (3,)).reshape(-1, 3) for x in arrs]
+    return rows, shape, dtype
 
 
 def material_init(physical: Physical) -> Material:
@@ -143,25 +144,22 @@ def _brdf(function: str, material: Any, wo: Any, wi: Any, lobes: Any, want_f: bo
     (o, i), shape, dtype = _directions(function, ("wo", "wi"), wo, wi, () if arr is None else arr.shape)
     specs = [("f", shape + (3,) if want_f else None, dtype), ("pdf", shape if want_pdf else None, dtype)]
     f_out, p_out = _outs(function, out, specs, [np.asarray(wo), np.asarray(wi)] + _material_inputs(arr))
-    flat_f = None if f_out is None else f_out.reshape(-1)
-    flat_p = None if p_out is None else p_out.reshape(-1)
-    f64 = dtype != np.float32
-    if arr is None:
-        call = _core.eval_f64 if f64 else _core.eval_f32
-        f, p, st, idx = call(m, mask, o, i, want_f, want_pdf, flat_f, flat_p)
-        statuses = None
-    else:
-        call = _core.eval_materials_f64 if f64 else _core.eval_materials_f32
-        f, p, statuses, st, idx = call(arr._material_block(shape), int(arr.normalization), mask, o, i, want_f,
-                                       want_pdf, flat_f, flat_p)
-    f = (f_out if f_out is not None else f.reshape(shape + (3,))) if want_f else None
-    if want_pdf:
-        p = p_out if p_out is not None else (float(p[0]) if shape == () else p.reshape(shape))
-    else:
-        p = None
+    n = o.shape[0]
+    f = (np.empty(shape + (3,), dtype) if f_out is None else f_out) if want_f else None
+    p = (np.empty(shape, dtype) if p_out is None else p_out) if want_pdf else None
+    statuses = np.empty(n, np.int8)
+    st, idx, whole = _core.eval_pdf(m, None if arr is None else arr._core_arrays(shape, dtype), mask, o.T, i.T,
+                                    None if f is None else f.reshape(n, 3).T, None if p is None else p.reshape(n),
+                                    statuses)
+    if whole:  # nothing written: the outputs of a failed element
+        for x in (f, p):
+            if x is not None:
+                x[...] = 0
+    if want_pdf and p_out is None and shape == ():
+        p = float(p)
     result = (f, p) if want_f and want_pdf else (f if want_f else p)
     if st < 0:
-        _raise_brdf(function, st, idx, shape, result, statuses)
+        _raise_brdf(function, st, idx, shape, result, None if arr is None else statuses)
     return result
 
 
@@ -265,8 +263,8 @@ def sample(material: Union[Physical, Material, Sequence[Physical]], wo: ArrayLik
     wo : array_like, shape (..., 3)
         Directions towards the viewer.
     u : array_like, shape (..., 3)
-        Uniform numbers in [0, 1) (others are clamped to [0, 1 − 2⁻²⁴] in float32,
-        [0, 1 − 2⁻⁵³] in float64); ``u[..., 0]`` chooses the lobe (specular if <
+        Uniform numbers in [0, 1) (others are clamped to [0, 1 − 2⁻²⁴], in float64 as in
+        float32, so that both draw the same directions); ``u[..., 0]`` chooses the lobe (specular if <
         :func:`specular_probability`), ``u[..., 1:]`` the direction (Walter 2005 for the
         specular lobe, a concentric-disk cosine lobe for the diffuse one). The leading shapes
         of ``wo`` and ``u`` broadcast.
@@ -295,21 +293,19 @@ def sample(material: Union[Physical, Material, Sequence[Physical]], wo: ArrayLik
     specs = [("wi", shape + (3,), dtype), ("pdf", shape, dtype), ("weight", shape + (3,), dtype),
              ("lobe", shape, np.uint8)]
     outs = _outs(fn, out, specs, [np.asarray(wo), np.asarray(u)] + _material_inputs(arr))
-    flat = [None if x is None else x.reshape(-1) for x in outs]
-    f64 = dtype != np.float32
-    if arr is None:
-        call = _core.sample_f64 if f64 else _core.sample_f32
-        wi, p, w, lobe, st, idx = call(m, mask, o, uu, *flat)
-        statuses = None
-    else:
-        call = _core.sample_materials_f64 if f64 else _core.sample_materials_f32
-        wi, p, w, lobe, statuses, st, idx = call(arr._material_block(shape), int(arr.normalization), mask, o, uu,
-                                                 *flat)
+    wi, p, w, lobe = (np.empty(s[1], s[2]) if x is None else x for s, x in zip(specs, outs))
+    n = o.shape[0]
+    statuses = np.empty(n, np.int8)
+    st, idx, whole = _core.sample(m, None if arr is None else arr._core_arrays(shape, dtype), mask, o.T, uu.T,
+                                  wi.reshape(n, 3).T, p.reshape(n), w.reshape(n, 3).T, lobe.reshape(n), statuses)
+    if whole:  # nothing written: the outputs of a rejected sample
+        for x in (wi, p, w, lobe):
+            x[...] = 0
+        wi[..., 2] = 1
     if shape == () and out is None:
-        rec = SampleRecord(wi.reshape(3), float(p[0]), w.reshape(3), Lobe(int(lobe[0])))
+        rec = SampleRecord(wi, float(p), w, Lobe(int(lobe)))
     else:
-        got = [wi.reshape(shape + (3,)), p.reshape(shape), w.reshape(shape + (3,)), lobe.reshape(shape)]
-        rec = SampleRecord(*(g if x is None else x for g, x in zip(got, outs)))
+        rec = SampleRecord(wi, p, w, lobe)
     if st < 0:
-        _raise_brdf(fn, st, idx, shape, rec, statuses)
+        _raise_brdf(fn, st, idx, shape, rec, None if arr is None else statuses)
     return rec

@@ -55,7 +55,8 @@ def _broadcast(function: str, names: Sequence[str], values: Sequence[Any]):
     except ValueError:
         shapes = ", ".join(f"{n}{a.shape}" for n, a in zip(names, arrays))
         raise ValueError(f"pgloss.{function}: shapes do not broadcast: {shapes}") from None
-    flat = [np.ascontiguousarray(np.broadcast_to(a, shape), dtype=np.float64).reshape(-1) for a in arrays]
+    # Flat float64 views where numpy can make them (stride 0 for a scalar): the core reads strides.
+    flat = [np.broadcast_to(np.asarray(a, dtype=np.float64), shape).reshape(-1) for a in arrays]
     return flat, shape, _out_dtype(values, arrays)
 
 
@@ -99,9 +100,8 @@ def _normalization(function: str, value: Any) -> Union["Normalization", int]:
     return v  # unknown: kept, the core reports it
 
 
-def _color_space(function: str, value: Any) -> np.ndarray:
-    """The working space as a one-element column for the core; unknown ints reach the core,
-    which answers ERR_ARGUMENT."""
+def _color_space(function: str, value: Any) -> int:
+    """The working space for the core; unknown ints reach the core, which answers ERR_ARGUMENT."""
     try:
         v = operator.index(value)
     except TypeError:
@@ -109,7 +109,7 @@ def _color_space(function: str, value: Any) -> np.ndarray:
                         f"not {type(value).__name__}") from None
     if not -2**31 <= v < 2**31:
         raise PglossError(Status.ERR_ARGUMENT, function)
-    return np.array([float(v)], dtype=np.float64)
+    return v
 
 
 def _float(function: str, name: str, v: Any) -> float:

@@ -13,7 +13,8 @@ import numpy as np
 
 from . import _core
 from ._core import Material
-from ._inputs import ArrayLike, _as_real, _channels, _color_space, _float, _normalization, _out_dtype, _shape_out
+from ._inputs import (_F32_MAX, ArrayLike, _as_real, _channels, _color_space, _float, _normalization, _out_dtype,
+                      _shape_out)
 from ._perceptual import gloss_distance
 from ._status import ColorSpace, Normalization, PglossError, _errors, _finish, _status_out, _verdict
 
@@ -45,8 +46,16 @@ def _view(a: Union[float, np.ndarray], shape: Tuple[int, ...]) -> np.ndarray:
 
 
 def _flat(a: Union[float, np.ndarray], shape: Tuple[int, ...]) -> np.ndarray:
-    """A field as a flat, C-contiguous float64 column of the broadcast shape."""
-    return np.ascontiguousarray(_view(a, shape)).reshape(-1)
+    """A field as a flat float64 array of the broadcast shape: a view where numpy can make one
+    (stride 0 for one value), as the core's strided batches read it."""
+    return _view(a, shape).reshape(-1)
+
+
+def _to_float32(a: np.ndarray) -> np.ndarray:
+    """Doubles rounded to float as the C API receives them: beyond float range ±inf (a plain cast
+    rounds values just above FLT_MAX down to it)."""
+    with np.errstate(over="ignore"):
+        return np.where(np.abs(a) > _F32_MAX, np.copysign(np.inf, a), a).astype(np.float32)
 
 
 def _index_of(shape: Tuple[int, ...], key: Any) -> np.ndarray:
@@ -284,37 +293,36 @@ class Physical(_PaintShape):
     def _fields(self) -> Tuple[float, float, float, float, float, float]:
         return (*self._rho_d, self._rho_s, self._alpha_x, self._alpha_y)
 
-    def _columns(self, shape: Optional[Tuple[int, ...]] = None) -> List[np.ndarray]:
-        """The six fields as flat contiguous float64 columns, broadcast to ``shape`` (default
-        the paint's own): rho_d r, g, b, rho_s, alpha_x, alpha_y."""
+    def _core_arrays(self, shape: Optional[Tuple[int, ...]] = None, dtype: Any = np.float64) -> Tuple[Any, ...]:
+        """The paints as the core's batches read them (``pgloss_physical_array``): ρd as a
+        (3, n) array, ρs, αx, αy as (n,) arrays, broadcast to ``shape`` (default the paints' own;
+        n = its size) as views where numpy can (stride 0 for a field of one value), and the
+        normalisation.
+
+        ``dtype`` float64: the fields themselves. float32 (the float batch reads float32
+        parameters): the fields rounded to float, beyond float range ±inf (which the core
+        reports as NONFINITE, as ``pgloss_material_init`` does for a double beyond FLT_MAX),
+        built on the first float32 call and kept, as one paint's :class:`Material` is: the
+        fields are read-only copies, so it cannot go stale, and a texture evaluated many times
+        is rounded once."""
         shape = self.shape if shape is None else shape
-        if self._shape is None:
-            cols = [_flat(x, shape) for x in self._rho_d]
+        if dtype == np.float32:
+            if self._block is None:
+                block = _to_float32(np.stack([_view(x, self.shape) for x in self._six()]))
+                block.flags.writeable = False
+                self._block = block
+            rd, *rest = self._block[0:3], *self._block[3:]
         else:
-            cols = [_flat(self._rho_d[k], shape) for k in range(3)]
-        return cols + [_flat(v, shape) for v in (self._rho_s, self._alpha_x, self._alpha_y)]
+            rd, *rest = np.asarray(self._rho_d, dtype=np.float64), self._rho_s, self._alpha_x, self._alpha_y
+        lead = (1,) * (len(shape) - self.ndim)
+        rd = np.broadcast_to(np.reshape(rd, (3,) + lead + self.shape), (3,) + shape).reshape(3, -1)
+        rest = [np.broadcast_to(np.reshape(np.asarray(x, dtype=dtype), lead + self.shape), shape).reshape(-1)
+                for x in rest]
+        return (rd, *rest, int(self._normalization))
 
-    def _material_block(self, shape: Tuple[int, ...]) -> np.ndarray:
-        """An array of paints as the core's per-element batches read it (``pgloss_material_array``):
-        a C-contiguous float32 ``(6, n)`` block — ρd r, g, b, ρs, αx, αy, each rounded to float
-        (beyond float range ±inf, which the core reports as NONFINITE) — broadcast to the
-        batch's ``shape`` (n = its size).
-
-        The rounded block of the paints' own shape is built on the first BRDF call and kept, as
-        one paint's :class:`Material` is: the fields are read-only copies (see :class:`Physical`),
-        so it cannot go stale, and a texture evaluated many times is rounded once. It costs half
-        the memory of the float64 fields. A batch of another shape (the paints broadcast against
-        the directions) gets a broadcast copy of it."""
-        block = self._block
-        if block is None:
-            block = _core.material_columns(*self._columns()).reshape((6,) + self.shape)
-            block.flags.writeable = False
-            self._block = block
-        n = int(np.prod(shape, dtype=np.int64))
-        if shape != self.shape:
-            lead = (1,) * (len(shape) - self.ndim)
-            block = np.ascontiguousarray(np.broadcast_to(block.reshape((6,) + lead + self.shape), (6,) + shape))
-        return block.reshape(6, n)
+    def _six(self) -> List[Any]:
+        """ρd r, g, b, ρs, αx, αy (floats, or arrays of the paints' shape)."""
+        return [*self._rho_d, self._rho_s, self._alpha_x, self._alpha_y]
 
     # Conversions ------------------------------------------------------------------------------
     def material(self) -> Material:
@@ -432,8 +440,8 @@ class Physical(_PaintShape):
             return self._key() == other._key()
         if self._shape != other._shape or int(self._normalization) != int(other._normalization):
             return False
-        return all(bool(np.array_equal(a, b)) for a, b in
-                   zip(self._columns(), other._columns()))
+        return all(bool(np.array_equal(_view(a, self.shape), _view(b, self.shape)))
+                   for a, b in zip(self._six(), other._six()))
 
     def __hash__(self) -> int:
         if self._shape is not None:
@@ -554,9 +562,11 @@ class Perceptual(_PaintShape):
         """Distinctness-of-image gloss (eq. 3)."""
         return self._v[4]
 
-    def _columns(self, shape: Optional[Tuple[int, ...]] = None) -> List[np.ndarray]:
-        shape = self.shape if shape is None else shape
-        return [_flat(x, shape) for x in self._v]
+    def _core_arrays(self) -> Tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The paints as the core's batches read them (``pgloss_perceptual_array``): L*, a*, b*
+        as one (3, n) array (a copy: the core reads them with one stride), c and d as (n,) views."""
+        lab = np.stack([_flat(x, self.shape) for x in self._v[0:3]])
+        return lab, _flat(self._v[3], self.shape), _flat(self._v[4], self.shape)
 
     def check(self, space: Union[ColorSpace, int] = ColorSpace.LINEAR_REC709) -> Any:
         """Is this inside the model? First reason it is not (``pgloss_check_perceptual``:
@@ -705,7 +715,8 @@ def check_physical(physical: Union[Physical, ArrayLike]) -> Any:
     (normalisation ``WARD``): an int8 array of :class:`Status` values, of the paints' shape
     (``pgloss_check_physical_batch``)."""
     physical, _ = _paint_arg("check_physical", physical, Physical)
-    st = _core.check_physical(*physical._columns(), int(physical.normalization))[0]
+    st = np.empty(physical.size, np.int8)
+    _core.check_physical(physical._core_arrays(), st)
     return _status_out(st, physical.shape)
 
 
@@ -722,8 +733,9 @@ def check_perceptual(perceptual: Union[Perceptual, ArrayLike],
     — the way to find the texels of a texture that are out of gamut or beyond the envelope
     without an exception."""
     perceptual, _ = _paint_arg("check_perceptual", perceptual, Perceptual)
-    sp = int(_color_space("check_perceptual", space)[0])
-    st = _core.check_perceptual(*perceptual._columns(), sp)[0]
+    sp = _color_space("check_perceptual", space)
+    st = np.empty(perceptual.size, np.int8)
+    _core.check_perceptual(*perceptual._core_arrays(), sp, st)
     return _status_out(st, perceptual.shape)
 
 
@@ -765,16 +777,20 @@ def physical_from_perceptual(perceptual: Union[Perceptual, ArrayLike],
     perceptual, dtype = _paint_arg(fn, perceptual, Perceptual)
     want_status = _errors(fn, errors)
     norm = _normalization(fn, normalization)
-    sp = int(_color_space(fn, space)[0])
-    cols = perceptual._columns()
-    res = _core.physical_from_perceptual(*cols, int(norm), sp)
-    st = _verdict(res[5], _core.check_perceptual(*cols, sp)[0]) if check else res[5]
-    shape = perceptual.shape
+    sp = _color_space(fn, space)
+    q = perceptual._core_arrays()
+    shape, n = perceptual.shape, perceptual.size
+    block = np.zeros((5, n))  # ρd r, g, b (channel-first, as a Physical stores them), ρs, α; 0 if unwritten
+    st = np.empty(n, np.int8)
+    _core.physical_from_perceptual(*q, int(norm), sp, block[0:3], block[3], block[4], st)
+    if check:
+        checked = np.empty(n, np.int8)
+        _core.check_perceptual(*q, sp, checked)
+        st = _verdict(st, checked)
     if shape == ():
-        v = [float(r[0]) for r in res[:5]]
+        v = [float(x) for x in block[:, 0]]
         out = Physical(v[0:3], v[3], alpha_x=v[4], alpha_y=v[4], normalization=norm)
     else:
-        block = res[6]  # the outputs' (5, n) block: rho_d r, g, b rows are channel-first already
         alpha = block[4].reshape(shape)  # αx = αy (eq. 8): one array for both
         out = Physical._adopt(block[0:3].reshape((3,) + shape), block[3].reshape(shape), alpha, alpha,
                               normalization=norm)
@@ -800,14 +816,18 @@ def perceptual_from_physical(physical: Union[Physical, ArrayLike],
     fn = "perceptual_from_physical"
     physical, dtype = _paint_arg(fn, physical, Physical)
     want_status = _errors(fn, errors)
-    sp = int(_color_space(fn, space)[0])
-    cols = physical._columns()
-    norm = int(physical.normalization)
-    res = _core.perceptual_from_physical(*cols, norm, sp)
-    st = _verdict(res[5], _core.check_physical(*cols, norm)[0]) if check else res[5]
-    shape = physical.shape
+    sp = _color_space(fn, space)
+    p = physical._core_arrays()
+    shape, n = physical.shape, physical.size
+    block = np.zeros((5, n))  # L*, a*, b*, c, d; 0 if unwritten (an error of the whole call)
+    st = np.empty(n, np.int8)
+    _core.perceptual_from_physical(p, sp, block[0:3], block[3], block[4], st)
+    if check:
+        checked = np.empty(n, np.int8)
+        _core.check_physical(p, checked)
+        st = _verdict(st, checked)
     if shape == ():
-        out = Perceptual(*(float(r[0]) for r in res[:5]))
+        out = Perceptual(*(float(x) for x in block[:, 0]))
     else:
-        out = Perceptual._adopt([r.reshape(shape) for r in res[:5]])
+        out = Perceptual._adopt([r.reshape(shape) for r in block])
     return _finish(fn, want_status, _paint_out(fn, out, dtype), st, shape)

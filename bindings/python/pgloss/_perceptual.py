@@ -22,29 +22,45 @@ def _vectorised(function: str, names: Sequence[str], values: Sequence[Any], n_ou
     checks of the same elements, merged after the function's own (_verdict)."""
     want_status = _errors(function, errors)
     flat, shape, dtype = _broadcast(function, names, values)
-    res = getattr(_core, function)(*flat)
-    outs = tuple(_shape_out(function, r, shape, dtype) for r in res[:n_out])
-    st = res[n_out] if check is None else _verdict(res[n_out], *check(*flat))
+    n = flat[0].size
+    # Zeros: an error of the whole call (an unknown space…) writes nothing, and 0 is what a failed
+    # element gets.
+    res, st = np.zeros((n_out, n)), np.empty(n, np.int8)
+    getattr(_core, function)(*flat, *res, st)
+    outs = tuple(_shape_out(function, r, shape, dtype) for r in res)
+    if check is not None:
+        st = _verdict(st, *check(*flat))
     return _finish(function, want_status, outs[0] if n_out == 1 else outs, st, shape, stacklevel=5)
 
 
 def _grey_physical_check(rho_d: np.ndarray, rho_s: np.ndarray, alpha: np.ndarray) -> List[np.ndarray]:
     """The core's verdict on grey paints (ρd, ρs, α): pgloss_check_physical (ENERGY included)."""
-    return [_core.check_physical(rho_d, rho_d, rho_d, rho_s, alpha, alpha, int(Normalization.WARD))[0]]
+    st = np.empty(rho_d.size, np.int8)
+    _core.check_physical((np.broadcast_to(rho_d, (3, rho_d.size)), rho_s, alpha, alpha, int(Normalization.WARD)), st)
+    return [st]
 
 
 def _grey_perceptual_check(L: np.ndarray, c: np.ndarray, d: np.ndarray) -> List[np.ndarray]:
     """The core's verdict on grey paints (L*, 0, 0, c, d): pgloss_check_perceptual (ENVELOPE)."""
-    zero = np.zeros_like(L)
-    return [_core.check_perceptual(L, zero, zero, c, d, int(ColorSpace.LINEAR_REC709))[0]]
+    lab = np.zeros((3, L.size))
+    lab[0] = L
+    st = np.empty(L.size, np.int8)
+    _core.check_perceptual(lab, c, d, int(ColorSpace.LINEAR_REC709), st)
+    return [st]
 
 
 def _gloss_pairs_check(c1: np.ndarray, d1: np.ndarray, c2: np.ndarray, d2: np.ndarray) -> List[np.ndarray]:
     """The core's verdict on gloss pairs (c, d), which is physical_from_gloss's on c and d:
     NEGATIVE (c < 0), ALPHA (d ≥ 1), the warning for d < 0.8. Its lightness check is passed
     with L* = 0 (ρd = 0), a lightness the pair's verdict does not depend on."""
-    L = np.zeros_like(c1)
-    return [_core.physical_from_gloss(L, c, d)[3] for c, d in ((c1, d1), (c2, d2))]
+    n = c1.size
+    L, out = np.zeros(n), np.empty((3, n))
+    sts = []
+    for c, d in ((c1, d1), (c2, d2)):
+        st = np.empty(n, np.int8)
+        _core.physical_from_gloss(L, c, d, *out, st)
+        sts.append(st)
+    return sts
 
 
 def lightness_from_luminance(Y: ArrayLike, *, errors: str = "raise") -> Any:
@@ -155,7 +171,8 @@ def isogloss_contour(c0: float, d0: float, D: float, n: int = 64) -> Tuple[np.nd
         raise TypeError(f"pgloss.{fn}: n must be an int, not {type(n).__name__}") from None
     if count < 0:
         raise ValueError(f"pgloss.{fn}: n must be >= 0, got {count}")
-    c, d, st = _core.isogloss_contour(_float(fn, "c0", c0), _float(fn, "d0", d0), _float(fn, "D", D), count)
+    c, d = np.zeros(count), np.zeros(count)
+    st = _core.isogloss_contour(_float(fn, "c0", c0), _float(fn, "d0", d0), _float(fn, "D", D), c, d)
     _check(fn, np.array([st]), (), (c, d), scalar=True)
     return c, d
 
@@ -187,10 +204,15 @@ def _triple(function: str, name: str, value: Any, n_out: int, space: Any, errors
     a = _channels(function, name, value, 3)
     shape = a.shape[:-1]
     dtype = _out_dtype((value,), (a,))
-    cols = [np.ascontiguousarray(a[..., k], dtype=np.float64).reshape(-1) for k in range(3)]
-    res = getattr(_core, function)(*cols, int(sp[0]))
+    rows = np.asarray(a, dtype=np.float64).reshape(-1, 3)  # (n, 3) rows, a view where numpy can
+    n = rows.shape[0]
+    st = np.empty(n, np.int8)
     if n_out == 3:
-        out = _shape_out(function, np.stack(res[:3], axis=-1), shape + (3,), dtype)
+        res = np.zeros((n, 3))  # as _vectorised's
+        getattr(_core, function)(rows.T, sp, res.T, st)
+        out = _shape_out(function, res, shape + (3,), dtype)
     else:
-        out = _shape_out(function, res[0], shape, dtype)
-    return _finish(function, want_status, out, res[n_out], shape, stacklevel=5)
+        res = np.zeros(n)
+        getattr(_core, function)(*rows.T, sp, res, st)
+        out = _shape_out(function, res, shape, dtype)
+    return _finish(function, want_status, out, st, shape, stacklevel=5)
