@@ -51,11 +51,19 @@ def _flat(a: Union[float, np.ndarray], shape: Tuple[int, ...]) -> np.ndarray:
     return _view(a, shape).reshape(-1)
 
 
-def _to_float32(a: np.ndarray) -> np.ndarray:
-    """Doubles rounded to float as the C API receives them: beyond float range ±inf (a plain cast
-    rounds values just above FLT_MAX down to it)."""
+def _to_float32(fields: Sequence[Any], shape: Tuple[int, ...]) -> np.ndarray:
+    """Fields (floats or arrays broadcasting to ``shape``) rounded to float as the C API receives
+    them, as one (len(fields),) + shape float32 block: beyond float range ±inf (a cast rounds the
+    doubles just above FLT_MAX down to it, which is checked where the cast gave ±FLT_MAX)."""
+    block = np.empty((len(fields),) + shape, np.float32)
     with np.errstate(over="ignore"):
-        return np.where(np.abs(a) > _F32_MAX, np.copysign(np.inf, a), a).astype(np.float32)
+        for k, x in enumerate(fields):
+            np.copyto(block[k], x, casting="unsafe")
+    edge = np.abs(block) == _F32_MAX
+    if edge.any():
+        wide = np.stack([_view(x, shape) for x in fields])[edge]
+        block[edge] = np.where(np.abs(wide) > _F32_MAX, np.copysign(np.inf, wide), wide)
+    return block
 
 
 def _index_of(shape: Tuple[int, ...], key: Any) -> np.ndarray:
@@ -308,7 +316,7 @@ class Physical(_PaintShape):
         shape = self.shape if shape is None else shape
         if dtype == np.float32:
             if self._block is None:
-                block = _to_float32(np.stack([_view(x, self.shape) for x in self._six()]))
+                block = _to_float32(self._six(), self.shape)
                 block.flags.writeable = False
                 self._block = block
             rd, *rest = self._block[0:3], *self._block[3:]

@@ -337,6 +337,21 @@ void bmap(py::array status, Batch batch) {
 
 pgloss_color_space space_of(int s) { return enum_of<pgloss_color_space>(s); }
 
+// A batch of three (n,) inputs and three (n,) outputs (gloss_from_physical, physical_from_gloss).
+using ThreeToThree = pgloss_status (*)(size_t, pgloss_strided, pgloss_strided, pgloss_strided, pgloss_strided_out,
+                                       pgloss_strided_out, pgloss_strided_out, signed char *);
+auto three_to_three(ThreeToThree batch) {
+    return [batch](py::array a, py::array b, py::array c, py::array x, py::array y, py::array z, py::array status) {
+        const size_t n = length(status);
+        const In1 i0 = in1(a, n, f64(), "an input"), i1 = in1(b, n, f64(), "an input"), i2 = in1(c, n, f64(), "an input");
+        const Out1 o0 = out1(x, n, f64(), "an output"), o1 = out1(y, n, f64(), "an output"),
+                   o2 = out1(z, n, f64(), "an output");
+        bmap(status, [&](size_t k, size_t m, signed char *s) {
+            return static_cast<int>(batch(m, i0.at(k), i1.at(k), i2.at(k), o0.at(k), o1.at(k), o2.at(k), s));
+        });
+    };
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_core, mod) {
@@ -506,22 +521,10 @@ PYBIND11_MODULE(_core, mod) {
     }, py::arg("c0"), py::arg("d0"), py::arg("D"), py::arg("c"), py::arg("d"));
 
     // The batches of pgloss/perceptual_batch.h: (inputs), (outputs), status.
-    mod.def("gloss_from_physical", [](A rd, A rs, A al, A L, A c, A d, A st) {
-        const size_t n = length(st);
-        const In1 x0 = in1(rd, n, f64(), "rho_d"), x1 = in1(rs, n, f64(), "rho_s"), x2 = in1(al, n, f64(), "alpha");
-        const Out1 y0 = out1(L, n, f64(), "L"), y1 = out1(c, n, f64(), "c"), y2 = out1(d, n, f64(), "d");
-        bmap(st, [&](size_t b, size_t m, signed char *s) {
-            return (int)pgloss_gloss_from_physical_batch(m, x0.at(b), x1.at(b), x2.at(b), y0.at(b), y1.at(b), y2.at(b), s);
-        });
-    }, py::arg("rho_d"), py::arg("rho_s"), py::arg("alpha"), py::arg("L"), py::arg("c"), py::arg("d"), py::arg("status"));
-    mod.def("physical_from_gloss", [](A L, A c, A d, A rd, A rs, A al, A st) {
-        const size_t n = length(st);
-        const In1 x0 = in1(L, n, f64(), "L"), x1 = in1(c, n, f64(), "c"), x2 = in1(d, n, f64(), "d");
-        const Out1 y0 = out1(rd, n, f64(), "rho_d"), y1 = out1(rs, n, f64(), "rho_s"), y2 = out1(al, n, f64(), "alpha");
-        bmap(st, [&](size_t b, size_t m, signed char *s) {
-            return (int)pgloss_physical_from_gloss_batch(m, x0.at(b), x1.at(b), x2.at(b), y0.at(b), y1.at(b), y2.at(b), s);
-        });
-    }, py::arg("L"), py::arg("c"), py::arg("d"), py::arg("rho_d"), py::arg("rho_s"), py::arg("alpha"), py::arg("status"));
+    mod.def("gloss_from_physical", three_to_three(pgloss_gloss_from_physical_batch), py::arg("rho_d"), py::arg("rho_s"),
+            py::arg("alpha"), py::arg("L"), py::arg("c"), py::arg("d"), py::arg("status"));
+    mod.def("physical_from_gloss", three_to_three(pgloss_physical_from_gloss_batch), py::arg("L"), py::arg("c"),
+            py::arg("d"), py::arg("rho_d"), py::arg("rho_s"), py::arg("alpha"), py::arg("status"));
     mod.def("envelope_contrast", [](A L, A c_max, A st) {
         const size_t n = length(st);
         const In1 x = in1(L, n, f64(), "L");
