@@ -481,6 +481,10 @@ def test_benchmarks_run() -> None:
     assert r.returncode == 0, r.stderr
     assert "| gloss_from_physical, 16,384 paints | gloss_from_physical (L, c, d + statuses, check=False) |" in r.stdout
     assert "| gloss_from_physical, 16,384 paints | on 3 threads |" in r.stdout
+    r = subprocess.run([sys.executable, str(bench / "bench_calls.py"), "--n", "4096", "--repeat", "1"],
+                       capture_output=True, text=True, timeout=300)
+    assert r.returncode == 0, r.stderr
+    assert "| eval, one material per pair, float64 |" in r.stdout
     r = subprocess.run([sys.executable, str(bench / "bench_threads.py"), "--repeat", "1", "--threads", "2"],
                        capture_output=True, text=True, timeout=300)
     assert r.returncode == 0, r.stderr
