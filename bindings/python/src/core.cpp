@@ -352,6 +352,20 @@ auto three_to_three(ThreeToThree batch) {
     };
 }
 
+// A colour conversion: (3, n) in, (3, n) out, in a working space (rgb_from_lab, lab_from_rgb).
+using ColourConversion = pgloss_status (*)(size_t, pgloss_strided3, pgloss_color_space, pgloss_strided3_out,
+                                           signed char *);
+auto colour_conversion(ColourConversion batch) {
+    return [batch](py::array from, int space, py::array to, py::array status) {
+        const size_t n = length(status);
+        const In3 x = in3(from, n, f64(), "the input");
+        const Out3 y = out3(to, n, f64(), "the output");
+        bmap(status, [&](size_t b, size_t m, signed char *s) {
+            return static_cast<int>(batch(m, x.at(b), space_of(space), y.at(b), s));
+        });
+    };
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_core, mod) {
@@ -540,22 +554,10 @@ PYBIND11_MODULE(_core, mod) {
         });
     }, py::arg("rho_d"), py::arg("rho_s"), py::arg("L_target"), py::arg("rho_d_out"), py::arg("rho_s_out"),
        py::arg("status"));
-    mod.def("rgb_from_lab", [](A lab, int space, A rgb, A st) {
-        const size_t n = length(st);
-        const In3 x = in3(lab, n, f64(), "lab");
-        const Out3 y = out3(rgb, n, f64(), "rgb");
-        bmap(st, [&](size_t b, size_t m, signed char *s) {
-            return (int)pgloss_rgb_from_lab_batch(m, x.at(b), space_of(space), y.at(b), s);
-        });
-    }, py::arg("lab"), py::arg("space"), py::arg("rgb"), py::arg("status"));
-    mod.def("lab_from_rgb", [](A rgb, int space, A lab, A st) {
-        const size_t n = length(st);
-        const In3 x = in3(rgb, n, f64(), "rgb");
-        const Out3 y = out3(lab, n, f64(), "lab");
-        bmap(st, [&](size_t b, size_t m, signed char *s) {
-            return (int)pgloss_lab_from_rgb_batch(m, x.at(b), space_of(space), y.at(b), s);
-        });
-    }, py::arg("rgb"), py::arg("space"), py::arg("lab"), py::arg("status"));
+    mod.def("rgb_from_lab", colour_conversion(pgloss_rgb_from_lab_batch), py::arg("lab"), py::arg("space"),
+            py::arg("rgb"), py::arg("status"));
+    mod.def("lab_from_rgb", colour_conversion(pgloss_lab_from_rgb_batch), py::arg("rgb"), py::arg("space"),
+            py::arg("lab"), py::arg("status"));
     // Paints: physical = (rho_d (3, n), rho_s, alpha_x, alpha_y, normalization) as for eval_pdf;
     // perceptual = (lab (3, n), c, d).
     mod.def("check_physical", [](py::tuple p, A st) {
