@@ -21,7 +21,7 @@ bash scripts/bootstrap.sh apt g++ cmake python3 python3-venv python3-dev
 root=$PWD
 venv=.venv-py
 py=$venv/bin/python
-pins=(scikit-build-core==1.1.2 pybind11==3.1.0 numpy==2.4.6 scipy==1.17.1 matplotlib==3.11.2 scikit-learn==1.9.1 pytest==9.2.0 colour-science==0.4.7)
+pins=(scikit-build-core==1.1.2 pybind11==3.1.0 numpy==2.4.6 scipy==1.17.1 matplotlib==3.11.2 scikit-learn==1.9.1 pytest==9.2.0 colour-science==0.4.7 pybind11-stubgen==3.0.0)
 if [[ ! -x $py ]] || [[ "$(cat "$venv/.pgloss-pins" 2>/dev/null)" != "${pins[*]}" ]]; then
   echo "== creating $venv (${pins[*]})"
   rm -rf "$venv"

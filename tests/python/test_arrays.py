@@ -52,7 +52,9 @@ def _elementwise(fn: str, file: str, names: Tuple[str, ...], outs: Tuple[str, ..
     if not cs:
         return 0
     args = [np.array([num(c["input"][n]) for c in cs]) for n in names]
-    res, st = getattr(pgloss, fn)(*args, errors="status")
+    # The vectors are the C functions' own verdicts: the conversions without the model's check.
+    kw = {"check": False} if fn in ("gloss_from_physical", "physical_from_gloss") else {}
+    res, st = getattr(pgloss, fn)(*args, errors="status", **kw)
     res = res if isinstance(res, tuple) else (res,)
     assert st.dtype == np.int8 and st.shape == (len(cs),)
     for k, c in enumerate(cs):
@@ -105,7 +107,7 @@ def test_vectors_physical_from_perceptual_batched(fn: str, file: str, vector_rep
     for (norm, space), group in _group(cs, lambda c: (int(c["input"]["normalization"]),
                                                         int(c["input"].get("space", 0)))).items():
         q = Perceptual(*_perceptual_cols(group))
-        p, st = q.to_physical(norm, space, errors="status")
+        p, st = q.to_physical(norm, space, errors="status", check=False)
         assert p.shape == q.shape == (len(group),) and st.shape == q.shape
         for k, c in enumerate(group):
             chk.ran(fn + "_batch")
@@ -125,7 +127,7 @@ def test_vectors_perceptual_from_physical_batched(fn: str, file: str, vector_rep
     assert cs
     for (norm, space), group in _group(cs, lambda c: (int(c["input"]["p"]["normalization"]),
                                                         int(c["input"].get("space", 0)))).items():
-        q, st = _physical_array(group).to_perceptual(space, errors="status")
+        q, st = _physical_array(group).to_perceptual(space, errors="status", check=False)
         for k, c in enumerate(group):
             chk.ran(fn + "_batch")
             chk.status(fn + "_batch", c, Status(int(st[k])).c_name)
@@ -303,8 +305,11 @@ def test_sequence_of_physical_is_an_array_material() -> None:
     wo, wi = np.array([0.0, 0.3, 1.0]), np.array([[0.1, -0.3, 1.0], [0.5, 0.0, 1.0]])
     f = pgloss.eval(ps, wo, wi)
     assert f.shape == (2, 3)
+    # float64 directions: the array reads the paints' double parameters, one paint's Material holds
+    # them rounded to float (pgloss_material): the same up to that rounding.
     for k, p in enumerate(ps):
-        np.testing.assert_allclose(f[k], pgloss.eval(p, wo, wi[k]), rtol=1e-12)
+        np.testing.assert_allclose(f[k], pgloss.eval(p, wo, wi[k]), rtol=1e-6)
+        np.testing.assert_allclose(f[k], pgloss.eval(Physical.stack([p]), wo, wi[k])[0], rtol=1e-15)
     f2 = pgloss.eval([p.material() for p in ps], wo, wi)
     np.testing.assert_array_equal(f, f2)
     with pytest.raises(ValueError, match="normalizations"):
@@ -413,7 +418,9 @@ def test_broadcasting_of_materials_against_directions() -> None:
     for a in range(5):
         for b in range(4):
             for c in range(3):
-                np.testing.assert_allclose(f[a, b, c], pgloss.eval(tex[b, c], wo, wi[a, 0, 0]), rtol=1e-12)
+                # the texel's double parameters against its Material's floats (float64 directions)
+                np.testing.assert_allclose(f[a, b, c], pgloss.eval(tex[b, c], wo, wi[a, 0, 0]), rtol=1e-6)
+                np.testing.assert_array_equal(f[a, b, c], pgloss.eval(tex[b:b + 1, c], wo, wi[a, 0, 0])[0])
     assert pgloss.pdf(tex, wo, wo).shape == (4, 3)
     assert pgloss.sample(tex, wo, np.full((2, 1, 1, 3), 0.3)).wi.shape == (2, 4, 3, 3)
     with pytest.raises(ValueError, match=r"shapes do not broadcast: .*material\(4, 3\)"):

@@ -65,4 +65,4 @@ def test_benchmark_script_runs() -> None:
     proc = subprocess.run([sys.executable, str(bench), "--n", "20000", "--repeat", "2"], capture_output=True,
                           text=True, timeout=120)
     assert proc.returncode == 0, proc.stderr
-    assert "C pgloss_eval_batch" in proc.stdout and "Python float32 / C batched (best)" in proc.stdout
+    assert "C pgloss_eval_pdf_batch" in proc.stdout and "Python float32 / C batched (best)" in proc.stdout

@@ -56,10 +56,11 @@ def test_wheel_metadata() -> None:
     # The licence text travels in the wheel (PEP 639: .dist-info/licenses/).
     lic = next(n for n in w.namelist() if n.endswith(".dist-info/licenses/LICENSE"))
     assert w.read(lic) == (ROOT / "LICENSE").read_bytes()
-    # Only the package: the pure-Python modules, the stubs, py.typed and the extension.
+    # Only the package: the pure-Python modules (typed inline), the extension's stub, py.typed and
+    # the extension.
     files = [n for n in w.namelist() if ".dist-info/" not in n]
     assert all(n.startswith("pgloss/") for n in files), files
-    for f in ("pgloss/__init__.py", "pgloss/__init__.pyi", "pgloss/py.typed", "pgloss/cli.py"):
+    for f in ("pgloss/__init__.py", "pgloss/_paints.py", "pgloss/_core.pyi", "pgloss/py.typed", "pgloss/cli.py"):
         assert f in files
     assert any(n.startswith("pgloss/_core.") and n.endswith(".so") for n in files)
 

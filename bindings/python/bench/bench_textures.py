@@ -7,12 +7,12 @@ formulas, all in one run. Not a test: it prints a Markdown table.
 Rows (median of --repeat runs after a warm-up, time.perf_counter around the public call):
 
 * ``physical_from_perceptual`` on N² texels (default 4096²) with every element's validity
-  (``Perceptual.to_physical(errors="status")``: LIGHTNESS, NEGATIVE, ALPHA, GAMUT… per texel),
-  and with the full model check added (``Perceptual.check()``: envelope and energy too), against
-  numpy's bare eqs. 6–7 (Y = f⁻¹(L*), ρs = (c + ∛(Y/2))³ − Y/2, α = 1 − d) plus Lab → linear
+  (``Perceptual.to_physical(errors="status", check=False)``: LIGHTNESS, NEGATIVE, ALPHA, GAMUT…
+  per texel), and with the full model check (the default, ``check=True``: envelope and energy
+  too), against numpy's bare eqs. 6–7 (Y = f⁻¹(L*), ρs = (c + ∛(Y/2))³ − Y/2, α = 1 − d) plus Lab → linear
   Rec. 709 RGB, without any check. Target: pgloss (with validity) ≤ numpy bare.
-* ``gloss_from_physical`` on N² paints against numpy's bare eq. 4 (c = ∛(ρs + ρd/2) − ∛(ρd/2),
-  c alone). Target: ≤ numpy.
+* ``gloss_from_physical`` on N² paints (``check=False``; and the default, with the core's check of
+  each paint) against numpy's bare eq. 4 (c = ∛(ρs + ρd/2) − ∛(ρd/2), c alone). Target: ≤ numpy.
 * ``eval`` on N²/16 direction pairs: one material for all (the uniform batch) and one material per
   pair (an array ``Physical``), float32. Target: per-element ≤ 2× uniform. Both sides are
   compiled once and kept (one paint's ``Material``; an array's float block): the first call on
@@ -183,24 +183,29 @@ def main(argv=None) -> int:
         tex = pgloss.Perceptual(L, a, b, c, d)
 
         t_np = timed(lambda: numpy_physical_from_perceptual(L, a, b, c, d), rep)
-        t_pg = timed(lambda: tex.to_physical(errors="status"), rep)
-        t_pg_check = timed(lambda: (tex.to_physical(errors="status"), tex.check()), rep)
-        row(f"physical_from_perceptual, {N}² texels", "to_physical(errors=\"status\") (validity per texel)", t_pg,
-            "numpy eqs. 6–7 + Lab→RGB, no checks", t_np, "≤ 1")
-        row(f"physical_from_perceptual + check, {N}² texels", "to_physical + check() (full model check)", t_pg_check,
-            "numpy eqs. 6–7 + Lab→RGB, no checks", t_np, "")
-        threaded.append((f"physical_from_perceptual, {N}² texels", lambda: tex.to_physical(errors="status"),
-                         "numpy eqs. 6–7 + Lab→RGB, no checks", t_np))
+        t_pg = timed(lambda: tex.to_physical(errors="status", check=False), rep)
+        t_pg_check = timed(lambda: tex.to_physical(errors="status"), rep)
+        row(f"physical_from_perceptual, {N}² texels", "to_physical(errors=\"status\", check=False) (validity per "
+            "texel)", t_pg, "numpy eqs. 6–7 + Lab→RGB, no checks", t_np, "≤ 1")
+        row(f"physical_from_perceptual + check, {N}² texels", "to_physical(errors=\"status\") (the default: the full "
+            "model check too)", t_pg_check, "numpy eqs. 6–7 + Lab→RGB, no checks", t_np, "")
+        threaded.append((f"physical_from_perceptual, {N}² texels",
+                         lambda: tex.to_physical(errors="status", check=False), "numpy eqs. 6–7 + Lab→RGB, no checks",
+                         t_np))
 
         rd = rng.uniform(0.0, 0.9, n)
         rs = rng.uniform(0.0, 0.1, n)
         al = rng.uniform(0.02, 0.2, n)
         t_np = timed(lambda: numpy_contrast_gloss(rd, rs), rep)
-        t_pg = timed(lambda: pgloss.gloss_from_physical(rd, rs, al, errors="status"), rep)
-        row(f"gloss_from_physical, {n:,} paints", "gloss_from_physical (L, c, d + statuses)", t_pg,
+        t_pg = timed(lambda: pgloss.gloss_from_physical(rd, rs, al, errors="status", check=False), rep)
+        t_pg_check = timed(lambda: pgloss.gloss_from_physical(rd, rs, al, errors="status"), rep)
+        row(f"gloss_from_physical, {n:,} paints", "gloss_from_physical (L, c, d + statuses, check=False)", t_pg,
             "numpy eq. 4 (c only)", t_np, "≤ 1")
+        row(f"gloss_from_physical + check, {n:,} paints", "gloss_from_physical (the default: check_physical too)",
+            t_pg_check, "numpy eq. 4 (c only)", t_np, "")
         threaded.append((f"gloss_from_physical, {n:,} paints",
-                         lambda: pgloss.gloss_from_physical(rd, rs, al, errors="status"), "numpy eq. 4 (c only)", t_np))
+                         lambda: pgloss.gloss_from_physical(rd, rs, al, errors="status", check=False),
+                         "numpy eq. 4 (c only)", t_np))
 
     if args.only != "perceptual":
         rng = np.random.default_rng([18, 1])  # its own stream: the same data with or without --only

@@ -64,7 +64,7 @@ def main(argv=None) -> int:
         f = np.empty((n, 3), np.float32)
         per = pgloss.Physical(rng.uniform(0.0, 0.8, (n, 3)), rs, al)
         return {
-            "gloss_from_physical": lambda: pgloss.gloss_from_physical(rd, rs, al, errors="status"),
+            "gloss_from_physical": lambda: pgloss.gloss_from_physical(rd, rs, al, errors="status", check=False),
             "contrast_gloss (scalar per element)": lambda: pgloss.contrast_gloss(rd, rs, errors="status"),
             "eval float32, one material": lambda: pgloss.eval(uniform, wo, wi, out=f),
             "eval float32, per-element": lambda: pgloss.eval(per, wo, wi, out=f),
@@ -112,8 +112,10 @@ def textures(T: int, rep: int) -> int:
     per = pgloss.Physical(rng.uniform(0.0, 0.8, (m, 3)), rng.uniform(0.0, 0.1, m), rng.uniform(0.03, 0.2, m))
     f32, f64 = np.empty((m, 3), np.float32), np.empty((m, 3))
     calls = {
-        f"to_physical(errors=\"status\"), {N}² texels": lambda: tex.to_physical(errors="status"),
-        f"gloss_from_physical, {n:,} paints": lambda: pgloss.gloss_from_physical(rd, rs, al, errors="status"),
+        f"to_physical(errors=\"status\", check=False), {N}² texels":
+            lambda: tex.to_physical(errors="status", check=False),
+        f"gloss_from_physical, {n:,} paints":
+            lambda: pgloss.gloss_from_physical(rd, rs, al, errors="status", check=False),
         f"eval float32, one material, {m:,} pairs": lambda: pgloss.eval(uniform, wo32, wi32, out=f32),
         f"eval float32, per-pair materials, {m:,} pairs": lambda: pgloss.eval(per, wo32, wi32, out=f32),
         f"eval float64, one material, {m:,} pairs": lambda: pgloss.eval(uniform, wo64, wi64, out=f64),

@@ -103,7 +103,7 @@ def direction(theta_deg: float, phi_deg: float) -> List[float]:
 
 def to_physical(v: List[float], norm: pgloss.Normalization) -> int:
     q = pgloss.Perceptual(*v)
-    st, p = _call(lambda: pgloss.physical_from_perceptual(q, norm))
+    st, p = _call(lambda: pgloss.physical_from_perceptual(q, norm, check=False))
     if st >= 0 or st == pgloss.Status.ERR_GAMUT:
         rd = p.rho_d  # type: ignore[union-attr]
         print(f"rho_d = ({rd[0]:.6f}, {rd[1]:.6f}, {rd[2]:.6f})  rho_s = {p.rho_s:.6f}  "  # type: ignore[union-attr]
@@ -114,7 +114,7 @@ def to_physical(v: List[float], norm: pgloss.Normalization) -> int:
 
 
 def _to_perceptual(p: pgloss.Physical) -> int:
-    st, q = _call(lambda: pgloss.perceptual_from_physical(p))
+    st, q = _call(lambda: pgloss.perceptual_from_physical(p, check=False))
     if st >= 0:
         print(f"L* = {q.L:.4f}  a* = {q.a:.4f}  b* = {q.b:.4f}  c = {q.c:.6f}  d = {q.d:.6f}")  # type: ignore[union-attr]
     if st < 0:
@@ -142,7 +142,7 @@ def match(v: List[float], norm: pgloss.Normalization) -> int:
 
 
 def distance(v: List[float], norm: pgloss.Normalization) -> int:
-    st, D = _call(lambda: pgloss.gloss_distance(*v))
+    st, D = _call(lambda: pgloss.gloss_distance(*v, check=False))
     if st >= 0:
         print(f"D = {D:.6f}")
     return report(st)

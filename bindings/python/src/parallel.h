@@ -3,8 +3,8 @@
 // parallel.h — the array calls of pgloss._core over several threads.
 //
 // The C core is single-threaded by design (no global state: its users thread it). The binding
-// splits one long array call into contiguous blocks of whole units (a unit is the loop's own
-// chunk: 128 direction pairs, or a slice of paints) and runs them on std::threads started for
+// splits one long array call into contiguous blocks of whole units (a unit is one call of the
+// C batch over kUnit elements, core.cpp) and runs them on std::threads started for
 // the call and joined before it returns (no pool: nothing outlives a call, so fork() is safe).
 // Each unit's outputs depend on that unit's inputs only, so the outputs are the same bits for
 // any thread count; what a block reports (its first failing element) is merged in block order,
