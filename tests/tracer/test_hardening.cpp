@@ -11,9 +11,11 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <cfloat>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -22,6 +24,7 @@
 namespace {
 
 namespace fs = std::filesystem;
+using namespace std::string_literals;
 
 const std::string kHead = "camera position=0,0,3 look_at=0,0,0\nenvironment radiance=1\nmaterial m diffuse=0.5\n";
 
@@ -97,13 +100,32 @@ TEST_F(ObjFile, MalformedNumbersAreErrors) {
     EXPECT_EQ(with(tri + "f 1 2 3.9\n"), where + ":4: bad face vertex '3.9' (v, v/t, v/t/n or v//n, whole numbers)");
     EXPECT_EQ(with("v 0 0 0abc\n"), where + ":1: bad vertex coordinate '0abc'");
     EXPECT_EQ(with("v 0 0\n"), where + ":1: a vertex is 'v x y z [w]'");
-    EXPECT_EQ(with(tri + "f 1 2 4\n"), where + ":4: face index out of range");
+    EXPECT_EQ(with(tri + "f 1 2 4\n"), where + ":4: face vertex '4': vertex index 4 out of range (3 defined above)");
     // A vertex that overflows float after the scene's scale.
     EXPECT_EQ(with("v 1e38 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", " scale=10"),
               "bad.scene:4: mesh: field 'file': " + (dir / "t.obj").string() +
                   ": vertex 1 outside ±10000000 after scale and translate");
     // The usual forms stay accepted: v, v/t, v/t/n, v//n, negative (relative) indices, comments.
     EXPECT_EQ(with(tri + "vt 0 0\nvn 0 0 1\nf 1/1/1 2//1 -1/1 # a comment\n"), "");
+}
+
+TEST_F(ObjFile, TextureAndNormalIndicesOutOfRangeAreErrors) {
+    // The tracer reads neither vt nor vn, but an index past them means a broken file (a
+    // truncated export, indices of another file): it was silently accepted.
+    const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    const std::string where = "bad.scene:4: mesh: field 'file': " + (dir / "t.obj").string();
+    EXPECT_EQ(with(tri + "vt 0 0\nf 1/1 2/2 3/1\n"),
+              where + ":5: face vertex '2/2': texture coordinate (vt) index 2 out of range (1 defined above)");
+    EXPECT_EQ(with(tri + "f 1/1 2/1 3/1\n"),
+              where + ":4: face vertex '1/1': texture coordinate (vt) index 1 out of range (0 defined above)");
+    EXPECT_EQ(with(tri + "vn 0 0 1\nf 1//1 2//1 3//7\n"),
+              where + ":5: face vertex '3//7': normal (vn) index 7 out of range (1 defined above)");
+    EXPECT_EQ(with(tri + "vt 0 0\nvn 0 0 1\nf 1/1/1 2/1/-2 3/1/1\n"),
+              where + ":6: face vertex '2/1/-2': normal (vn) index -2 out of range (1 defined above)");
+    // Defined after the face that uses them: also out of range (OBJ indices refer backwards).
+    EXPECT_EQ(with(tri + "f 1/1 2/1 3/1\nvt 0 0\n"),
+              where + ":4: face vertex '1/1': texture coordinate (vt) index 1 out of range (0 defined above)");
+    EXPECT_EQ(with(tri + "vt 0 0\nvt 1 0\nvn 0 0 1\nf 1/-1/1 2/-2/-1 3/2/1\n"), "");
 }
 
 TEST_F(ObjFile, OneFileInstancedManyTimes) {
@@ -149,6 +171,67 @@ TEST_F(ObjFile, OnlyBoundedRegularFilesAreRead) {
     } catch (const pgt::SceneError &e) {
         EXPECT_STREQ(e.what(), "/dev/zero: scene file is not a regular file");
     }
+}
+
+TEST(Hardening, SceneBytesInMessagesAreEscaped) {
+    // An ANSI escape sequence in a scene reached the terminal; a NUL cut the message short.
+    std::string esc = error_of(kHead + "sphere center=0,0,0 radius=\x1b[2J\x1b[31mred material=m\n");
+    EXPECT_EQ(esc, "bad.scene:4: sphere: field 'radius': expected a number, got '\\x1b[2J\\x1b[31mred'");
+    std::string nul = error_of(kHead + "sph\0ere radius=1\n"s);
+    EXPECT_EQ(nul, "bad.scene:4: sph\\x00ere: unknown keyword (image, camera, render, tonemap, material, sphere, box, "
+                   "quad, mesh, light, environment)");
+    // A number with a NUL inside was read up to the NUL ("1\0x" as 1).
+    EXPECT_EQ(error_of(kHead + "sphere center=0,0,0 radius=1\0x material=m\n"s),
+              "bad.scene:4: sphere: field 'radius': expected a number, got '1\\x00x'");
+    // OBJ lines too (their bytes reach the message through the scene's error).
+    fs::path dir = fs::path(PGLOSS_TEST_OUT) / "obj-escape";
+    fs::create_directories(dir);
+    std::ofstream(dir / "t.obj") << "v 0 0 \x1b]0;title\x07\n";
+    EXPECT_EQ(error_of(kHead + "mesh file=t.obj material=m\n", dir.string()),
+              "bad.scene:4: mesh: field 'file': " + (dir / "t.obj").string() +
+                  ":1: bad vertex coordinate '\\x1b]0;title\\x07'");
+}
+
+TEST(Hardening, PrintableEscapesControlsAndBrokenUtf8Only) {
+    EXPECT_EQ(pgt::printable("plain ± × ρ é 日本 🙂"), "plain ± × ρ é 日本 🙂");     // UTF-8 stays
+    EXPECT_EQ(pgt::printable("a\0b\tc\nd\x7f"s), "a\\x00b\\x09c\\x0ad\\x7f");  // C0, DEL
+    EXPECT_EQ(pgt::printable("\xc2\x9b" "2J"), "\\xc2\\x9b2J");                       // C1 CSI (U+009B)
+    EXPECT_EQ(pgt::printable("\xff\xc0\xaf \xe2\x82 \xed\xa0\x80"),                    // not UTF-8
+              "\\xff\\xc0\\xaf \\xe2\\x82 \\xed\\xa0\\x80");
+    EXPECT_EQ(pgt::printable("abc\xe2\x80\xaexyz"), "abc\\u{202e}xyz");                // bidi override
+    const std::string once = pgt::printable("\x1b[31m \xff \xe2\x80\xae ρ");
+    EXPECT_EQ(pgt::printable(once), once);  // idempotent: a quoted message is not escaped twice
+}
+
+TEST(Hardening, ManyMaterialsParseInLinearTime) {
+    // 50,000 materials: with a linear search per name (each new one checked against all before)
+    // this took about 20 s; a hash look-up takes well under a second. A generous bound for a
+    // loaded machine; the 200,000-material figure is in the test's commit message.
+    std::string text = kHead;
+    const int n = 50000;
+    for (int i = 0; i < n; ++i) text += "material m" + std::to_string(i) + " diffuse=0.5\n";
+    text += "sphere center=0,0,0 radius=1 material=m" + std::to_string(n - 1) + "\n";
+    auto t0 = std::chrono::steady_clock::now();
+    pgt::Scene sc = pgt::parse_scene(text, "many.scene", ".");
+    double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    ASSERT_EQ(sc.materials.size(), size_t(n) + 1);
+    EXPECT_EQ(sc.spheres[0].material, n);
+    EXPECT_EQ(sc.find_material("m123"), 124);
+    EXPECT_EQ(sc.find_material("nope"), -1);
+    EXPECT_LT(s, 8.0) << "parsing " << n << " materials took " << s << " s";
+    // Duplicates are still found through the index.
+    EXPECT_EQ(error_of(kHead + "material m diffuse=0.2\n"), "bad.scene:4: material: material 'm' defined twice");
+    // A material replaced by name keeps its index; materials added directly are still found.
+    sc.set_material("m7", pgloss_physical{{0.2, 0.2, 0.2}, 0.05, 0.1, 0.1, PGLOSS_NORM_WARD});
+    EXPECT_EQ(sc.find_material("m7"), 8);
+    EXPECT_DOUBLE_EQ(sc.materials[8].physical.rho_s, 0.05);
+    pgt::Material extra;
+    extra.name = "direct";
+    sc.materials.push_back(extra);
+    EXPECT_EQ(sc.find_material("direct"), n + 1);
+    sc.set_material("after", pgloss_physical{{0.2, 0.2, 0.2}, 0.0, 0.1, 0.1, PGLOSS_NORM_WARD});
+    EXPECT_EQ(sc.find_material("after"), n + 2);
+    EXPECT_EQ(sc.find_material("direct"), n + 1);
 }
 
 pgt::Scene small_scene() {
