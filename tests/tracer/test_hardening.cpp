@@ -20,6 +20,7 @@
 #include <fstream>
 #include <string>
 #include <thread>
+#include <vector>
 
 namespace {
 
@@ -321,6 +322,84 @@ TEST(Hardening, ImagesAreWrittenWholeOrNotAtAll) {
     size_t files = 0;
     for (auto &e : fs::directory_iterator(dir)) files += e.is_regular_file() ? 1 : 0;
     EXPECT_EQ(files, 1u);
+    // A failed final rename says why (the removal of the temporary file used to overwrite the
+    // reason: "cannot write …: Success"): here the final name is a non-empty folder.
+    fs::create_directories(dir / "c.exr" / "inside");
+    try {
+        pgt::write_exr(img, (dir / "c.exr").string());
+        ADD_FAILURE() << "write_exr onto a folder returned";
+    } catch (const std::runtime_error &e) {
+        const std::string what = e.what();
+        EXPECT_EQ(what.find("Success"), std::string::npos) << what;
+        EXPECT_EQ(what, "cannot write " + (dir / "c.exr").string() + ": " + std::strerror(EISDIR)) << what;
+    }
+    files = 0;
+    for (auto &e : fs::directory_iterator(dir)) files += e.is_regular_file() ? 1 : 0;
+    EXPECT_EQ(files, 1u);  // no temporary left behind
+}
+
+// A contact sheet's labels fit their cells: out/fig12.png cut its bottom-right label at the
+// sheet's edge and the labels ran into the next cell (their width was never measured).
+TEST(Hardening, ContactSheetLabelsStayInTheirCells) {
+    const float bg = std::lround(0.08f * 255) / 255.0f;
+    auto is_bg = [&](const pgt::Image &im, int x, int y) {
+        const float *p = &im.rgb[3 * (size_t(y) * size_t(im.width) + size_t(x))];
+        return std::fabs(p[0] - bg) < 0.6f / 255 && std::fabs(p[1] - bg) < 0.6f / 255 && std::fabs(p[2] - bg) < 0.6f / 255;
+    };
+    fs::path dir = fs::path(PGLOSS_TEST_OUT) / "sheet";
+    fs::create_directories(dir);
+    const int pad = 6;  // image.cpp's margin between cells
+    // Fig. 12's labels (DejaVu through OIIO: ASCII), and a long one that only fits broken into lines.
+    const std::vector<std::string> labels = {
+        "black rho_s .099 alpha .04\nc .183  d .96", "white rho_s .099 alpha .04\nc .0578  d .96",
+        "grey rho_s .0413 alpha .04\nc .0578  d .96", "a label much longer than any cell is wide, which must wrap",
+        "short", "black rho_s .0125 alpha .04\nc .057  d .96"};
+    for (int cw : {80, 160, 256}) {
+        const int chh = cw * 3 / 4;
+        std::vector<pgt::SheetCell> cells;
+        for (const std::string &l : labels) {
+            pgt::SheetCell c;
+            c.display.width = cw, c.display.height = chh;
+            c.display.rgb.assign(size_t(3 * cw * chh), 0.0f);
+            for (size_t i = 2; i < c.display.rgb.size(); i += 3) c.display.rgb[i] = 1.0f;  // pure blue
+            c.label = l;
+            cells.push_back(c);
+        }
+        const std::string png = (dir / ("sheet" + std::to_string(cw) + ".png")).string();
+        pgt::write_png(pgt::contact_sheet(cells, 3, "Fig. 12: same physical gloss (top), same perceptual gloss (bottom)"), png);
+        pgt::Image im = pgt::read_image(png);
+        const int W = im.width, H = im.height;
+        ASSERT_EQ(W, pad + 3 * (cw + pad));
+        // The cells' rows: where the first column's image is blue.
+        std::vector<int> tops;
+        for (int y = 0; y < H; ++y) {
+            const float *p = &im.rgb[3 * (size_t(y) * size_t(W) + size_t(pad))];
+            bool blue = p[2] > 0.99f && p[0] < 0.01f;
+            const float *q = y ? p - 3 * size_t(W) : nullptr;
+            if (blue && !(q && q[2] > 0.99f && q[0] < 0.01f)) tops.push_back(y);
+        }
+        ASSERT_EQ(tops.size(), 2u) << cw;
+        for (int r = 0; r < 2; ++r) {
+            const int label_top = tops[size_t(r)] + chh, label_end = r == 0 ? tops[1] - pad : H - pad;
+            for (int col = 0; col < 3; ++col) {
+                const int x0 = pad + col * (cw + pad);
+                int text = 0;
+                for (int y = tops[size_t(r)]; y < (r == 0 ? tops[1] : H); ++y) {
+                    for (int x = x0 + cw; x < x0 + cw + pad; ++x)  // the gap after the cell, the sheet's edge
+                        ASSERT_TRUE(is_bg(im, x, y)) << "cw " << cw << ": text in the gap at (" << x << ", " << y << ")";
+                    if (y >= label_top && y < label_end) {
+                        for (int x = x0; x < x0 + cw; ++x) text += !is_bg(im, x, y);
+                        // Not cut at the cell's edge: the label's last columns stay empty.
+                        for (int x = x0 + cw - 2; x < x0 + cw; ++x)
+                            ASSERT_TRUE(is_bg(im, x, y)) << "cw " << cw << ": label cut at (" << x << ", " << y << ")";
+                    }
+                }
+                EXPECT_GT(text, 10) << "cw " << cw << ": no label drawn under cell " << 3 * r + col;
+            }
+        }
+        for (int y = H - pad; y < H; ++y)  // below the last labels: nothing
+            for (int x = 0; x < W; ++x) ASSERT_TRUE(is_bg(im, x, y)) << "cw " << cw << ": text in the bottom margin";
+    }
 }
 
 }  // namespace
