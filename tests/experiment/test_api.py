@@ -11,7 +11,6 @@ import itertools
 import json
 import os
 import shutil
-import socket
 import sqlite3
 import struct
 import subprocess
@@ -24,7 +23,7 @@ from typing import List, Optional
 import numpy as np
 import pytest
 
-from conftest import LEVELS_C, LEVELS_D, MAGNITUDE, N, PAIRS, PY, ROOT, TOKEN, TRACER, Server, free_port, pgloss_cli
+from conftest import LEVELS_C, LEVELS_D, MAGNITUDE, N, PAIRS, PY, ROOT, TOKEN, TRACER, Server, pgloss_cli
 
 
 def stored(db: Path) -> List[tuple]:
@@ -372,24 +371,14 @@ def test_serve_refuses_a_database_it_cannot_use(manifest: Path, server_factory, 
 
 def test_request_log_hides_the_token(manifest: Path, tmp_path: Path):
     """The request log (stderr) does not carry the experimenter's token from the query."""
-    port = free_port()
-    proc = subprocess.Popen([PY, "-m", "pgloss", "experiment", "serve", str(manifest), "--db", str(tmp_path / "t.sqlite"),
-                             "--port", str(port), "--token", "s3cret-t0ken"], stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE, text=True)
+    srv = Server(manifest, tmp_path / "t.sqlite", token="s3cret-t0ken", log=True).start()
     try:
-        srv = Server(manifest, tmp_path / "t.sqlite", port)
-        for _ in range(600):
-            try:
-                socket.create_connection(("127.0.0.1", port), timeout=0.2).close()
-                break
-            except OSError:
-                time.sleep(0.05)
         assert srv.request("/api/progress?token=s3cret-t0ken")[0] == 200
         assert srv.request("/export/magnitude.csv?x=1&token=s3cret-t0ken&y=2")[0] == 200
         assert srv.request("/experimenter?token=wrong-guess")[0] == 403
     finally:
-        proc.terminate()
-        out, err = proc.communicate(timeout=10)
+        srv.stop()
+    out, err = srv.output
     assert "s3cret-t0ken" in out  # printed once at start, for the experimenter
     assert "s3cret-t0ken" not in err and "wrong-guess" not in err, err
     assert "GET /api/progress?token=… HTTP" in err and "/export/magnitude.csv?x=1&token=…&y=2" in err, err
