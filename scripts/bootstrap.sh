@@ -10,6 +10,7 @@
 #                        git; no compiler: the project's own needs are installed in the root)
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/step.sh
 
 want=(build-essential cmake ninja-build)
 mode=${1:-core}
@@ -33,7 +34,7 @@ if ((${#missing[@]})); then
   # Wait for another apt (a second script, unattended-upgrades) instead of failing on its lock.
   lock=(-o DPkg::Lock::Timeout=600)
   "${sudo_cmd[@]}" apt-get "${lock[@]}" update -qq
-  "${sudo_cmd[@]}" apt-get "${lock[@]}" install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+  step "apt-get install" "${sudo_cmd[@]}" apt-get "${lock[@]}" install -y -q --no-install-recommends "${missing[@]}"
 fi
 
 if [[ $mode == test ]]; then
@@ -44,6 +45,6 @@ if [[ $mode == test ]]; then
     echo "bootstrap: creating $venv (mpmath 1.3.0)"
     rm -rf "$venv"
     /usr/bin/python3 -m venv "$venv"
-    "$venv/bin/pip" install -q --disable-pip-version-check mpmath==1.3.0
+    step "pip install mpmath" "$venv/bin/pip" install --disable-pip-version-check mpmath==1.3.0
   fi
 fi

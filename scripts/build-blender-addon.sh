@@ -6,6 +6,7 @@
 # pgloss Python package (built with .venv-py, CPython 3.11 as Blender 4.2–5.x). Quick when re-run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/step.sh
 PGLOSS_PY_SETUP_ONLY=1 bash scripts/test-python.sh >/dev/null
 py=$PWD/.venv-py/bin/python
 build=build-blender
@@ -16,7 +17,7 @@ if [[ "$(cat "$build/.wheel-sources" 2>/dev/null)" != "$sources" ]] || ! ls "$bu
   rm -rf "$build/wheels"
   mkdir -p "$build/wheels"
   CMAKE_BUILD_PARALLEL_LEVEL="${CMAKE_BUILD_PARALLEL_LEVEL:-2}" \
-    "$py" -m pip wheel -q --disable-pip-version-check --no-deps --no-build-isolation -w "$build/wheels" .
+    step "pip wheel ." "$py" -m pip wheel -v --disable-pip-version-check --no-deps --no-build-isolation -w "$build/wheels" .
   echo "$sources" >"$build/.wheel-sources"
 fi
 wheel=$(basename "$(ls "$build"/wheels/pgloss-*.whl | head -1)")

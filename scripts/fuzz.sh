@@ -9,14 +9,15 @@
 #   scripts/fuzz.sh [SECONDS] [HARNESS…]      harnesses: brdf perceptual scene cli
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/step.sh
 secs=${1:-60}
 shift || true
 harnesses=("$@")
 ((${#harnesses[@]})) || harnesses=(brdf perceptual scene cli)
 bash scripts/bootstrap.sh apt clang libclang-rt-14-dev libglm-dev
 echo "== fuzz: build (clang, libFuzzer, ASan + UBSan)"
-cmake --preset fuzz >/dev/null
-cmake --build --preset fuzz --target $(printf 'fuzz_%s ' "${harnesses[@]}") >/dev/null
+step "configure (fuzz)" cmake --preset fuzz
+step "build the fuzzers" cmake --build --preset fuzz --target $(printf 'fuzz_%s ' "${harnesses[@]}")
 mkdir -p build-fuzz/findings build-fuzz/logs
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ASAN_OPTIONS=abort_on_error=1:detect_leaks=1
 

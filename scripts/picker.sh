@@ -9,9 +9,11 @@
 #   bash scripts/picker.sh --build    build only (what scripts/test-web.sh uses)
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/step.sh
 bash scripts/bootstrap.sh apt clang lld llvm wasi-libc libclang-rt-14-dev-wasm32 python3
-cmake -S web/picker/wasm -B build-web/wasm -G Ninja -DCMAKE_TOOLCHAIN_FILE="$PWD/cmake/wasm32-wasi.cmake" >/dev/null
-cmake --build build-web/wasm -j2 >/dev/null
+step "configure (build-web/wasm)" cmake -S web/picker/wasm -B build-web/wasm -G Ninja \
+  -DCMAKE_TOOLCHAIN_FILE="$PWD/cmake/wasm32-wasi.cmake"
+step "build pgloss.wasm" cmake --build build-web/wasm -j2
 site=build-web/site
 rm -rf "$site"
 mkdir -p "$site"

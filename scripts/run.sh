@@ -15,8 +15,10 @@ cd "$(dirname "$0")/.."
 # and find_package(OpenImageIO) fails without them.
 bash scripts/bootstrap.sh apt g++ pkg-config libembree-dev libopenimageio-dev openimageio-tools \
   libopencolorio-dev libglm-dev fonts-dejavu-core
-cmake --preset release -DPGLOSS_BUILD_TESTS=OFF -DPGLOSS_BUILD_EXAMPLES=ON >/dev/null
-cmake --build --preset release >/dev/null
+source scripts/step.sh  # progress every 10 s; a failing step prints its output (a compile error)
+[[ -f build/build.ninja ]] || echo "== first build of the core, the pgloss tool and pgloss-tracer (a few minutes on 2 cores)"
+step "configure (build/)" cmake --preset release -DPGLOSS_BUILD_TESTS=OFF -DPGLOSS_BUILD_EXAMPLES=ON
+step "build (build/)" cmake --build --preset release
 if (($#)); then
   exec ./build/tools/pgloss "$@"
 fi

@@ -10,6 +10,7 @@
 # Nothing is skipped: with PGLOSS_REQUIRE_ALL=1 (CI, scripts/test.sh) a skipped test is a failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/step.sh
 export PGLOSS_REQUIRE_ALL="${PGLOSS_REQUIRE_ALL:-1}"
 start=$SECONDS
 bash scripts/bootstrap.sh apt chromium python3 python3-venv g++ pkg-config libembree-dev libopenimageio-dev \
@@ -17,9 +18,9 @@ bash scripts/bootstrap.sh apt chromium python3 python3-venv g++ pkg-config libem
 
 echo "== Python binding (.venv-py), pgloss-tracer (stimuli)"
 PGLOSS_PY_SETUP_ONLY=1 bash scripts/test-python.sh
-cmake -S . -B build-tracer-test -G Ninja -DCMAKE_BUILD_TYPE=Release -DPGLOSS_BUILD_CLI=OFF \
-  -DPGLOSS_BUILD_EXAMPLES=ON -DPGLOSS_BUILD_TRACER_TESTS=ON >/dev/null
-cmake --build build-tracer-test --target pgloss-tracer >/dev/null
+step "configure (build-tracer-test)" cmake -S . -B build-tracer-test -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  -DPGLOSS_BUILD_CLI=OFF -DPGLOSS_BUILD_EXAMPLES=ON -DPGLOSS_BUILD_TRACER_TESTS=ON
+step "build pgloss-tracer" cmake --build build-tracer-test --target pgloss-tracer
 bash scripts/venv-web.sh
 
 echo "== pytest tests/experiment (headless Chromium $(chromium --version 2>/dev/null | awk '{print $2}'))"

@@ -12,6 +12,7 @@
 # glslangValidator, EGL or llvmpipe is a failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/step.sh
 export PGLOSS_REQUIRE_ALL="${PGLOSS_REQUIRE_ALL:-1}"
 
 bash scripts/bootstrap.sh apt python3 python3-venv glslang-tools spirv-tools \
@@ -23,7 +24,7 @@ if [[ ! -x $venv/bin/python ]] || ! cmp -s "$req" "$venv/.requirements"; then
   echo "test-glsl: creating $venv from $req"
   rm -rf "$venv"
   /usr/bin/python3 -m venv "$venv"
-  "$venv/bin/pip" install -q --disable-pip-version-check -r "$req"
+  step "pip install -r $req" "$venv/bin/pip" install --disable-pip-version-check -r "$req"
   cp "$req" "$venv/.requirements"
 fi
 

@@ -8,6 +8,7 @@
 # Nothing is skipped: with PGLOSS_REQUIRE_ALL=1 (CI sets it) a missing dependency is a failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/step.sh
 export PGLOSS_REQUIRE_ALL="${PGLOSS_REQUIRE_ALL:-1}"
 # python3.11 + venv; a C compiler for the C core that decides float-boundary cases
 # (tests/osl/cref.py); the X/GL client libraries that bpy's module loads at import.
@@ -22,7 +23,7 @@ if [[ ! -x $venv/bin/python ]] || ! $venv/bin/python -c "$check_pins" 2>/dev/nul
   echo "test-osl: creating $venv (${pins[*]}, about 400 MB download)"
   rm -rf "$venv"
   /usr/bin/python3 -m venv "$venv"
-  "$venv/bin/pip" install -q --disable-pip-version-check "${pins[@]}"
+  step "pip install (pins)" "$venv/bin/pip" install --disable-pip-version-check "${pins[@]}"
 fi
 $venv/bin/python -c 'import sys; assert sys.version_info[:2] == (3, 11), "bpy 5.0.1 needs CPython 3.11"'
 [[ ${PGLOSS_OSL_SETUP_ONLY:-0} == 1 ]] && exit 0

@@ -15,6 +15,7 @@
 # (build-py/, see pyproject.toml) is kept, so a reinstall recompiles only what changed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/step.sh
 export PGLOSS_REQUIRE_ALL="${PGLOSS_REQUIRE_ALL:-1}"
 bash scripts/bootstrap.sh apt g++ cmake python3 python3-venv python3-dev
 
@@ -26,7 +27,7 @@ if [[ ! -x $py ]] || [[ "$(cat "$venv/.pgloss-pins" 2>/dev/null)" != "${pins[*]}
   echo "== creating $venv (${pins[*]})"
   rm -rf "$venv"
   /usr/bin/python3 -m venv "$venv"
-  "$py" -m pip install -q --disable-pip-version-check "${pins[@]}"
+  step "pip install (pins)" "$py" -m pip install --disable-pip-version-check "${pins[@]}"
   echo "${pins[*]}" >"$venv/.pgloss-pins"
 fi
 
@@ -34,9 +35,10 @@ fi
 sources=$(find pyproject.toml CMakeLists.txt libpgloss bindings/python -type f \
             -not -path '*/__pycache__/*' -print0 | sort -z | xargs -0 sha256sum | sha256sum | cut -c1-16)
 if [[ "$(cat "$venv/.pgloss-installed" 2>/dev/null)" != "$sources" ]] || ! (cd / && "$root/$py" -c "import pgloss._core") 2>/dev/null; then
-  echo "== pip install . (sources changed)"
+  echo "== pip install . (sources changed; a first build takes a few minutes)"
   export CMAKE_BUILD_PARALLEL_LEVEL="${CMAKE_BUILD_PARALLEL_LEVEL:-2}"
-  "$py" -m pip install -q --disable-pip-version-check --no-build-isolation --force-reinstall --no-deps .
+  # -v: scikit-build-core's CMake and Ninja output ([n/N]), which step shows as progress
+  step "pip install ." "$py" -m pip install -v --disable-pip-version-check --no-build-isolation --force-reinstall --no-deps .
   echo "$sources" >"$venv/.pgloss-installed"
 fi
 
@@ -44,9 +46,9 @@ fi
 [[ ${PGLOSS_PY_SETUP_ONLY:-0} == 1 ]] && exit 0
 
 echo "== the C tool (build-py/cli), the reference of python -m pgloss's subcommands"
-cmake -S . -B build-py/cli -DCMAKE_BUILD_TYPE=Release -DPGLOSS_BUILD_PYTHON=OFF -DPGLOSS_BUILD_TESTS=OFF \
-  -DPGLOSS_INSTALL=OFF >/dev/null
-cmake --build build-py/cli --target pgloss_cli -j2 >/dev/null
+step "configure (build-py/cli)" cmake -S . -B build-py/cli -DCMAKE_BUILD_TYPE=Release -DPGLOSS_BUILD_PYTHON=OFF \
+  -DPGLOSS_BUILD_TESTS=OFF -DPGLOSS_INSTALL=OFF
+step "build (build-py/cli)" cmake --build build-py/cli --target pgloss_cli -j2
 export PGLOSS_CLI="$PWD/build-py/cli/tools/pgloss"
 
 bash scripts/check-python-dist.sh

@@ -7,13 +7,14 @@
 # machine's cores. Any report fails the run (halt_on_error). Quick when run again.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/step.sh
 export PGLOSS_REQUIRE_ALL="${PGLOSS_REQUIRE_ALL:-1}"
 bash scripts/bootstrap.sh test
 bash scripts/bootstrap.sh apt clang libclang-rt-14-dev pkg-config libembree-dev libopenimageio-dev \
   openimageio-tools libopencolorio-dev libglm-dev fonts-dejavu-core
 echo "== TSan: configure + build build-tsan (clang -fsanitize=thread)"
-cmake --preset tsan >/dev/null
-cmake --build --preset tsan --target test_threads pgloss_tracer_cli >/dev/null
+step "configure (tsan)" cmake --preset tsan
+step "build (tsan)" cmake --build --preset tsan --target test_threads pgloss_tracer_cli
 export TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1"
 echo "== TSan: test_threads"
 build-tsan/tests/test_threads

@@ -12,6 +12,7 @@
 # (CI, scripts/test.sh) a skipped test is a failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/step.sh
 export PGLOSS_REQUIRE_ALL="${PGLOSS_REQUIRE_ALL:-1}"
 start=$SECONDS
 bash scripts/bootstrap.sh apt clang lld llvm wasi-libc libclang-rt-14-dev-wasm32 nodejs chromium \
@@ -29,9 +30,9 @@ node tests/web/vectors.mjs build-web/wasm/pgloss.wasm
 echo "== Python binding (expected values), pgloss-tracer (reference render)"
 PGLOSS_PY_SETUP_ONLY=1 bash scripts/test-python.sh
 # The same configuration as scripts/test-tracer.sh, so that the two share one build folder.
-cmake -S . -B build-tracer-test -G Ninja -DCMAKE_BUILD_TYPE=Release -DPGLOSS_BUILD_CLI=OFF \
-  -DPGLOSS_BUILD_EXAMPLES=ON -DPGLOSS_BUILD_TRACER_TESTS=ON >/dev/null
-cmake --build build-tracer-test --target pgloss-tracer >/dev/null
+step "configure (build-tracer-test)" cmake -S . -B build-tracer-test -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  -DPGLOSS_BUILD_CLI=OFF -DPGLOSS_BUILD_EXAMPLES=ON -DPGLOSS_BUILD_TRACER_TESTS=ON
+step "build pgloss-tracer" cmake --build build-tracer-test --target pgloss-tracer
 
 venv=.venv-web
 bash scripts/venv-web.sh

@@ -6,12 +6,13 @@
 # browser download. Kept while the pins are unchanged.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/step.sh
 venv=.venv-web
 pins=(playwright==1.49.1 pytest==8.3.4 numpy==2.2.1)
 if [[ ! -x $venv/bin/python ]] || [[ "$(cat "$venv/.pgloss-pins" 2>/dev/null)" != "${pins[*]}" ]]; then
   echo "== creating $venv (${pins[*]})"
   rm -rf "$venv"
   /usr/bin/python3 -m venv "$venv"
-  PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 "$venv/bin/pip" install -q --disable-pip-version-check "${pins[@]}"
+  PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 step "pip install (pins)" "$venv/bin/pip" install --disable-pip-version-check "${pins[@]}"
   echo "${pins[*]}" >"$venv/.pgloss-pins"
 fi

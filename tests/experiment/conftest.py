@@ -69,14 +69,17 @@ def manifest() -> Path:
 class Server:
     """`python -m pgloss experiment serve` in a subprocess, on a fixed port so that it can be restarted."""
 
-    def __init__(self, manifest: Path, db: Path, port: Optional[int] = None):
+    def __init__(self, manifest: Path, db: Path, port: Optional[int] = None, token: str = TOKEN, log: bool = False):
         self.manifest, self.db, self.port = manifest, db, port or free_port()
+        self.token, self.log = token, log  # log: the request log on stderr (else --quiet)
         self.proc: Optional[subprocess.Popen] = None
         self.url = f"http://127.0.0.1:{self.port}"
+        self.output = ("", "")  # stdout, stderr, once stopped
 
     def start(self) -> "Server":
         self.proc = subprocess.Popen([PY, "-m", "pgloss", "experiment", "serve", str(self.manifest), "--db",
-                                      str(self.db), "--port", str(self.port), "--token", TOKEN, "--quiet"],
+                                      str(self.db), "--port", str(self.port), "--token", self.token]
+                                     + ([] if self.log else ["--quiet"]),
                                      stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
         deadline = time.monotonic() + 60
         while time.monotonic() < deadline:
@@ -101,12 +104,10 @@ class Server:
         if self.proc is not None and self.proc.poll() is None:
             self.proc.terminate()
             try:
-                self.proc.wait(10)
+                self.output = self.proc.communicate(timeout=10)
             except subprocess.TimeoutExpired:
                 self.proc.kill()
-                self.proc.wait(5)
-            self.proc.stdout.close()
-            self.proc.stderr.close()
+                self.output = self.proc.communicate(timeout=5)
 
     def request(self, path: str, body: Any = None, *, raw: Optional[bytes] = None,
                 headers: Optional[Dict[str, str]] = None) -> Tuple[int, Any]:

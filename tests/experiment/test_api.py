@@ -4,20 +4,26 @@
 idempotent resubmission, concurrent subjects, and the seed reproducing the trial order."""
 from __future__ import annotations
 
+import csv
 import hashlib
+import io
 import itertools
 import json
+import os
+import shutil
 import sqlite3
 import struct
 import subprocess
+import tempfile
 import threading
 import time
 from pathlib import Path
-from typing import List
+from typing import List, Optional
 
 import numpy as np
+import pytest
 
-from conftest import LEVELS_C, LEVELS_D, MAGNITUDE, N, PAIRS, PY, TOKEN, pgloss_cli
+from conftest import LEVELS_C, LEVELS_D, MAGNITUDE, N, PAIRS, PY, ROOT, TOKEN, TRACER, Server, pgloss_cli
 
 
 def stored(db: Path) -> List[tuple]:
@@ -72,7 +78,7 @@ def test_bad_specs(tmp_path: Path):
         run = pgloss_cli("experiment", "stimuli", spec, "--out", str(tmp_path), "--tracer", "/bin/true", check=False)
         assert run.returncode == 2 and why in run.stderr, (spec, run.stderr)
     run = pgloss_cli("experiment", "stimuli", "--out", str(tmp_path), "--tracer", str(tmp_path / "nope"), check=False)
-    assert run.returncode == 2 and "PGLOSS_TRACER" in run.stderr
+    assert run.returncode == 2 and f"--tracer {tmp_path / 'nope'}: no pgloss-tracer program there" in run.stderr
 
 
 def test_bad_requests_store_nothing(manifest: Path, server_factory, tmp_path: Path):
@@ -246,3 +252,177 @@ def test_seed_reproduces_trial_order(manifest: Path, server_factory):
             for ses in (a, b):
                 flat = [t[0] for t in ses["trials"]]
                 assert len(flat) == MAGNITUDE and all(sorted(flat[k:k + N]) == sorted(ids) for k in (0, N, 2 * N))
+
+
+# ---- faults and bad input found by an audit under load (each was a 500, a traceback or a leak) ----
+
+def test_export_under_live_load(manifest: Path, server_factory):
+    """The export while new subjects start and answer: every poll 200, and every response in the
+    export has its subject's seed. Seeds and responses were read in two transactions: a subject
+    who started in between had responses but no seed (KeyError, a 500 in 23 of 140 polls)."""
+    srv = server_factory(manifest).start()
+    stop = threading.Event()
+    started: List[str] = []
+
+    def writer(w: int):
+        k = 0
+        while not stop.is_set():
+            subject = f"live{w}-{k:04d}"
+            status, ses = srv.request("/api/session", {"subject": subject, "procedure": "pairs"})
+            if status == 200:
+                srv.request("/api/response", {"sitting": ses["sitting"], "subject": subject, "procedure": "pairs",
+                                              "trial": 0, "stimuli": ses["trials"][0], "rating": 50, "rt_ms": 800})
+                started.append(subject)
+            k += 1
+
+    threads = [threading.Thread(target=writer, args=(w,)) for w in range(6)]
+    for t in threads:
+        t.start()
+    statuses = []
+    try:
+        deadline = time.monotonic() + 30
+        while len(statuses) < 150 and time.monotonic() < deadline:
+            status, text = srv.request(f"/export/responses.csv?token={TOKEN}")
+            statuses.append(status)
+            if status == 200:
+                rows = list(csv.DictReader(io.StringIO(text)))
+                assert all(r["seed"].isdigit() for r in rows), rows[:3]
+    finally:
+        stop.set()
+        for t in threads:
+            t.join(30)
+    bad = [s for s in statuses if s != 200]
+    print(f"\nexport under load: {len(statuses)} polls while {len(started)} subjects started and answered, "
+          f"{len(bad)} not 200")
+    assert len(started) >= 5 and len(statuses) >= 10
+    assert not bad, bad
+
+
+def test_hostile_bodies_and_paths_are_4xx(manifest: Path, server_factory):
+    """Bodies and paths that made the server answer 500: JSON nested 2,000 deep (RecursionError),
+    a 401-digit number (int too large for a float), a 300-character /static/ name (File name too
+    long). Each is a 4xx naming the reason, nothing is stored, and the server goes on."""
+    srv = server_factory(manifest).start()
+    _, ses = srv.request("/api/session", {"subject": "hostile", "procedure": "pairs"})
+    good = {"sitting": ses["sitting"], "subject": "hostile", "procedure": "pairs", "trial": 0,
+            "stimuli": ses["trials"][0], "rating": 40, "rt_ms": 1234.5}
+    huge = "9" * 401
+    cases = [
+        ("nested 2000 deep", ("[" * 2000 + "]" * 2000).encode(), 400, "nested too deeply"),
+        ("nested in a field", json.dumps(good).replace('"rating": 40', '"rating": ' + "[" * 1900 + "]" * 1900).encode(),
+         400, "nested too deeply"),
+        ("401-digit rt_ms", json.dumps(good).replace("1234.5", huge).encode(), 400, "rt_ms"),
+        ("401-digit rating", json.dumps(good).replace('"rating": 40', '"rating": ' + huge).encode(), 400, "rating"),
+        ("401-digit trial", json.dumps(good).replace('"trial": 0', '"trial": ' + huge).encode(), 404, "trial"),
+        ("401-digit sitting", json.dumps(good).replace(f'"sitting": {ses["sitting"]}', '"sitting": ' + huge).encode(),
+         404, "sitting"),
+        ("negative 401 digits", json.dumps(good).replace("1234.5", "-" + huge).encode(), 400, "rt_ms"),
+        ("1e400 rt_ms", json.dumps(good).replace("1234.5", "1e400").encode(), 400, "rt_ms"),
+    ]
+    for name, raw, want, words in cases:
+        status, reply = srv.request("/api/response", raw=raw)
+        assert status == want and words in reply["error"], (name, status, reply)
+    for path in ("/static/" + "a" * 300 + ".js", "/static/" + "b" * 5000 + ".css", "/stimuli/" + "s" * 300,
+                 "/export/pairs/" + "x" * 300 + f".csv?token={TOKEN}", "/" + "z" * 300):
+        status, _ = srv.request(path)
+        assert status == 404, (path[:40], status)
+    assert srv.request("/static/experiment.js")[0] == 200
+    assert stored(srv.db) == []
+    assert srv.request("/api/response", good)[0] == 200
+
+
+def _serve(manifest: Path, db: Path, *extra: str, user: Optional[int] = None, timeout: float = 60):
+    """`experiment serve` expected to refuse to start: its CompletedProcess (a TimeoutExpired
+    means it started and served, the failure)."""
+    preexec = None
+    if user is not None:
+        def preexec():  # noqa: F811 - the server as an unprivileged user (root ignores file modes)
+            os.setgroups([])
+            os.setgid(user)
+            os.setuid(user)
+    return subprocess.run([PY, "-m", "pgloss", "experiment", "serve", str(manifest), "--db", str(db), "--port", "0",
+                           "--quiet", *extra], capture_output=True, text=True, timeout=timeout, preexec_fn=preexec)
+
+
+def test_serve_refuses_a_database_it_cannot_use(manifest: Path, server_factory, tmp_path: Path):
+    """A database in a missing folder: a message, not a traceback. A read-only database: refused
+    at start with the reason (it started and then answered 500 to every response)."""
+    run = _serve(manifest, Path("/nonexistent-pgloss-folder/x.sqlite"))
+    assert run.returncode == 2 and "Traceback" not in run.stderr, run.stderr
+    assert "no folder /nonexistent-pgloss-folder for the database" in run.stderr, run.stderr
+    # A folder anyone may write to, holding a database file nobody may (the server runs as
+    # nobody when the test is root, whom file modes do not stop).
+    folder = Path(tempfile.mkdtemp(prefix="pgloss-ro-"))
+    try:
+        folder.chmod(0o777)
+        db = folder / "ro.sqlite"
+        server_factory(manifest, db).start().stop()  # a database with this manifest's tables
+        db.chmod(0o444)
+        user = 65534 if os.geteuid() == 0 else None
+        try:
+            run = _serve(manifest, db, user=user, timeout=30)
+        except subprocess.TimeoutExpired:
+            pytest.fail("the server started on a read-only database")
+        assert run.returncode == 2 and "Traceback" not in run.stderr, run.stderr
+        assert f"{db}: the database cannot be written (attempt to write a readonly database)" in run.stderr, run.stderr
+    finally:
+        shutil.rmtree(folder, ignore_errors=True)
+
+
+def test_request_log_hides_the_token(manifest: Path, tmp_path: Path):
+    """The request log (stderr) does not carry the experimenter's token from the query."""
+    srv = Server(manifest, tmp_path / "t.sqlite", token="s3cret-t0ken", log=True).start()
+    try:
+        assert srv.request("/api/progress?token=s3cret-t0ken")[0] == 200
+        assert srv.request("/export/magnitude.csv?x=1&token=s3cret-t0ken&y=2")[0] == 200
+        assert srv.request("/experimenter?token=wrong-guess")[0] == 403
+    finally:
+        srv.stop()
+    out, err = srv.output
+    assert "s3cret-t0ken" in out  # printed once at start, for the experimenter
+    assert "s3cret-t0ken" not in err and "wrong-guess" not in err, err
+    assert "GET /api/progress?token=… HTTP" in err and "/export/magnitude.csv?x=1&token=…&y=2" in err, err
+
+
+def test_long_grid_spec(tmp_path: Path):
+    """A grid longer than a file name (255 bytes) is a grid: it failed with "File name too long"."""
+    levels = ",".join(f"{0.03 + 0.001 * k:.3f}" for k in range(60))
+    spec = f"rho_d={levels} rho_s=0.033 alpha=0.07"
+    assert len(spec.encode()) > 255
+    run = pgloss_cli("experiment", "stimuli", spec, "--dry-run", check=False)
+    assert run.returncode == 0, run.stderr
+    assert len(run.stdout.split()) == 61
+
+
+def test_tracer_and_scene_found_where_the_user_has_them(manifest: Path, tmp_path: Path):
+    """Without --tracer: the tracer built in the checkout around the working directory (the
+    message said "at None"); outside the checkout, with --tracer: the scene of the tracer's
+    checkout (it was looked for in the working directory only)."""
+    env = {k: v for k, v in os.environ.items() if k != "PGLOSS_TRACER"}
+    env["PATH"] = "/usr/bin:/bin"
+    spec = "rho_d=0.193 rho_s=0.033,0.066,0.099 alpha=0.07"
+    small = ["--size", "8x8", "--spp", "1"]
+    outside = tmp_path / "elsewhere"
+    outside.mkdir()
+
+    def cli(*args: str, cwd: Path) -> subprocess.CompletedProcess:
+        return subprocess.run([PY, "-m", "pgloss", "experiment", "stimuli", spec, *args], capture_output=True,
+                              text=True, timeout=300, cwd=cwd, env=env)
+
+    # In the checkout, no --tracer, no PGLOSS_TRACER, not on PATH: the checkout's build.
+    run = cli("--out", str(tmp_path / "a"), *small, cwd=ROOT / "tests")
+    assert run.returncode == 0, run.stderr
+    m = json.loads((tmp_path / "a/manifest.json").read_text())
+    assert m["renderer"]["scene"] == "stimulus.scene" and len(m["stimuli"]) == 3
+    # Outside it, with --tracer: the scene of the tracer's checkout.
+    run = cli("--out", str(tmp_path / "b"), "--tracer", TRACER, *small, cwd=outside)
+    assert run.returncode == 0, run.stderr
+    assert json.loads((tmp_path / "b/manifest.json").read_text())["renderer"]["scene_sha256"] == m["renderer"]["scene_sha256"]
+    # No tracer anywhere (no checkout found: here the venv is inside one, so that search is
+    # switched off): a message that says where it looked and what to do.
+    code = ("import pgloss.experiment.stimuli as s\ns._checkouts = lambda *starts: []\n"
+            "try:\n    s.find_tracer(None)\nexcept s.SpecError as e:\n    print(e)\n")
+    run = subprocess.run([PY, "-c", code], capture_output=True, text=True, timeout=60, cwd=outside, env=env)
+    assert run.returncode == 0 and "None" not in run.stdout, run.stdout + run.stderr
+    assert run.stdout.startswith("no pgloss-tracer: not on PATH. Build it with `bash scripts/run.sh`"), run.stdout
+    assert "--tracer PATH" in run.stdout

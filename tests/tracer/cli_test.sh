@@ -32,11 +32,23 @@ check "--out s.exr writes s.exr" 0 "" test -s s.exr -a -s s.png -a ! -e s.exr.ex
 check "--version"  0 "pgloss-tracer "                             "$tracer" --version
 check "--help"     0 "usage: pgloss-tracer"                       "$tracer" --help
 check "no scene"   1 "nope.scene: cannot open scene file (no such file)" "$tracer" render nope.scene
+# Arguments are echoed escaped: an ANSI sequence in one does not reach the terminal.
+check "--spp ESC[2J" 2 "--spp wants a whole number, not '\x1b[2J'" "${r[@]}" --spp $'\e[2J'
+check "--mode ESC" 2 "--mode must be mis, brdf or light, not '\x1b]0;x\x07'" "${r[@]}" --mode $'\e]0;x\a'
+check "scene ESC" 1 "\x1b[31m.scene: cannot open scene file (no such file)" "$tracer" render $'\e[31m.scene'
 
 # SIGINT in the middle of a long render: what was rendered is written whole, exit 130.
 "${r[@]}" --size 64x48 --spp 10000000 --out int >int.log 2>&1 &
 pid=$!
-sleep 2
+# A background job of a script starts with SIGINT ignored, until the tracer installs its handler
+# (after loading the scene): a SIGINT sent before that is lost and the render runs on. Wait until
+# the process catches SIGINT (bit 2 of SigCgt in /proc), up to 60 s on a loaded machine.
+for _ in $(seq 600); do
+  cgt=$(awk '/^SigCgt:/ {print $2}' /proc/$pid/status 2>/dev/null) || break
+  [[ -n $cgt ]] && (((16#$cgt >> 1) & 1)) && break
+  sleep 0.1
+done
+sleep 1
 kill -INT $pid
 wait $pid
 check "SIGINT: exit 130 and a message" 130 "pgloss-tracer: interrupted; wrote the" bash -c "cat int.log; exit $?"

@@ -11,17 +11,21 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <cfloat>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <thread>
+#include <vector>
 
 namespace {
 
 namespace fs = std::filesystem;
+using namespace std::string_literals;
 
 const std::string kHead = "camera position=0,0,3 look_at=0,0,0\nenvironment radiance=1\nmaterial m diffuse=0.5\n";
 
@@ -97,13 +101,32 @@ TEST_F(ObjFile, MalformedNumbersAreErrors) {
     EXPECT_EQ(with(tri + "f 1 2 3.9\n"), where + ":4: bad face vertex '3.9' (v, v/t, v/t/n or v//n, whole numbers)");
     EXPECT_EQ(with("v 0 0 0abc\n"), where + ":1: bad vertex coordinate '0abc'");
     EXPECT_EQ(with("v 0 0\n"), where + ":1: a vertex is 'v x y z [w]'");
-    EXPECT_EQ(with(tri + "f 1 2 4\n"), where + ":4: face index out of range");
+    EXPECT_EQ(with(tri + "f 1 2 4\n"), where + ":4: face vertex '4': vertex index 4 out of range (3 defined above)");
     // A vertex that overflows float after the scene's scale.
     EXPECT_EQ(with("v 1e38 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", " scale=10"),
               "bad.scene:4: mesh: field 'file': " + (dir / "t.obj").string() +
                   ": vertex 1 outside ±10000000 after scale and translate");
     // The usual forms stay accepted: v, v/t, v/t/n, v//n, negative (relative) indices, comments.
     EXPECT_EQ(with(tri + "vt 0 0\nvn 0 0 1\nf 1/1/1 2//1 -1/1 # a comment\n"), "");
+}
+
+TEST_F(ObjFile, TextureAndNormalIndicesOutOfRangeAreErrors) {
+    // The tracer reads neither vt nor vn, but an index past them means a broken file (a
+    // truncated export, indices of another file): it was silently accepted.
+    const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    const std::string where = "bad.scene:4: mesh: field 'file': " + (dir / "t.obj").string();
+    EXPECT_EQ(with(tri + "vt 0 0\nf 1/1 2/2 3/1\n"),
+              where + ":5: face vertex '2/2': texture coordinate (vt) index 2 out of range (1 defined above)");
+    EXPECT_EQ(with(tri + "f 1/1 2/1 3/1\n"),
+              where + ":4: face vertex '1/1': texture coordinate (vt) index 1 out of range (0 defined above)");
+    EXPECT_EQ(with(tri + "vn 0 0 1\nf 1//1 2//1 3//7\n"),
+              where + ":5: face vertex '3//7': normal (vn) index 7 out of range (1 defined above)");
+    EXPECT_EQ(with(tri + "vt 0 0\nvn 0 0 1\nf 1/1/1 2/1/-2 3/1/1\n"),
+              where + ":6: face vertex '2/1/-2': normal (vn) index -2 out of range (1 defined above)");
+    // Defined after the face that uses them: also out of range (OBJ indices refer backwards).
+    EXPECT_EQ(with(tri + "f 1/1 2/1 3/1\nvt 0 0\n"),
+              where + ":4: face vertex '1/1': texture coordinate (vt) index 1 out of range (0 defined above)");
+    EXPECT_EQ(with(tri + "vt 0 0\nvt 1 0\nvn 0 0 1\nf 1/-1/1 2/-2/-1 3/2/1\n"), "");
 }
 
 TEST_F(ObjFile, OneFileInstancedManyTimes) {
@@ -149,6 +172,67 @@ TEST_F(ObjFile, OnlyBoundedRegularFilesAreRead) {
     } catch (const pgt::SceneError &e) {
         EXPECT_STREQ(e.what(), "/dev/zero: scene file is not a regular file");
     }
+}
+
+TEST(Hardening, SceneBytesInMessagesAreEscaped) {
+    // An ANSI escape sequence in a scene reached the terminal; a NUL cut the message short.
+    std::string esc = error_of(kHead + "sphere center=0,0,0 radius=\x1b[2J\x1b[31mred material=m\n");
+    EXPECT_EQ(esc, "bad.scene:4: sphere: field 'radius': expected a number, got '\\x1b[2J\\x1b[31mred'");
+    std::string nul = error_of(kHead + "sph\0ere radius=1\n"s);
+    EXPECT_EQ(nul, "bad.scene:4: sph\\x00ere: unknown keyword (image, camera, render, tonemap, material, sphere, box, "
+                   "quad, mesh, light, environment)");
+    // A number with a NUL inside was read up to the NUL ("1\0x" as 1).
+    EXPECT_EQ(error_of(kHead + "sphere center=0,0,0 radius=1\0x material=m\n"s),
+              "bad.scene:4: sphere: field 'radius': expected a number, got '1\\x00x'");
+    // OBJ lines too (their bytes reach the message through the scene's error).
+    fs::path dir = fs::path(PGLOSS_TEST_OUT) / "obj-escape";
+    fs::create_directories(dir);
+    std::ofstream(dir / "t.obj") << "v 0 0 \x1b]0;title\x07\n";
+    EXPECT_EQ(error_of(kHead + "mesh file=t.obj material=m\n", dir.string()),
+              "bad.scene:4: mesh: field 'file': " + (dir / "t.obj").string() +
+                  ":1: bad vertex coordinate '\\x1b]0;title\\x07'");
+}
+
+TEST(Hardening, PrintableEscapesControlsAndBrokenUtf8Only) {
+    EXPECT_EQ(pgt::printable("plain ± × ρ é 日本 🙂"), "plain ± × ρ é 日本 🙂");     // UTF-8 stays
+    EXPECT_EQ(pgt::printable("a\0b\tc\nd\x7f"s), "a\\x00b\\x09c\\x0ad\\x7f");  // C0, DEL
+    EXPECT_EQ(pgt::printable("\xc2\x9b" "2J"), "\\xc2\\x9b2J");                       // C1 CSI (U+009B)
+    EXPECT_EQ(pgt::printable("\xff\xc0\xaf \xe2\x82 \xed\xa0\x80"),                    // not UTF-8
+              "\\xff\\xc0\\xaf \\xe2\\x82 \\xed\\xa0\\x80");
+    EXPECT_EQ(pgt::printable("abc\xe2\x80\xaexyz"), "abc\\u{202e}xyz");                // bidi override
+    const std::string once = pgt::printable("\x1b[31m \xff \xe2\x80\xae ρ");
+    EXPECT_EQ(pgt::printable(once), once);  // idempotent: a quoted message is not escaped twice
+}
+
+TEST(Hardening, ManyMaterialsParseInLinearTime) {
+    // 50,000 materials: with a linear search per name (each new one checked against all before)
+    // this took about 20 s; a hash look-up takes well under a second. A generous bound for a
+    // loaded machine; the 200,000-material figure is in the test's commit message.
+    std::string text = kHead;
+    const int n = 50000;
+    for (int i = 0; i < n; ++i) text += "material m" + std::to_string(i) + " diffuse=0.5\n";
+    text += "sphere center=0,0,0 radius=1 material=m" + std::to_string(n - 1) + "\n";
+    auto t0 = std::chrono::steady_clock::now();
+    pgt::Scene sc = pgt::parse_scene(text, "many.scene", ".");
+    double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    ASSERT_EQ(sc.materials.size(), size_t(n) + 1);
+    EXPECT_EQ(sc.spheres[0].material, n);
+    EXPECT_EQ(sc.find_material("m123"), 124);
+    EXPECT_EQ(sc.find_material("nope"), -1);
+    EXPECT_LT(s, 8.0) << "parsing " << n << " materials took " << s << " s";
+    // Duplicates are still found through the index.
+    EXPECT_EQ(error_of(kHead + "material m diffuse=0.2\n"), "bad.scene:4: material: material 'm' defined twice");
+    // A material replaced by name keeps its index; materials added directly are still found.
+    sc.set_material("m7", pgloss_physical{{0.2, 0.2, 0.2}, 0.05, 0.1, 0.1, PGLOSS_NORM_WARD});
+    EXPECT_EQ(sc.find_material("m7"), 8);
+    EXPECT_DOUBLE_EQ(sc.materials[8].physical.rho_s, 0.05);
+    pgt::Material extra;
+    extra.name = "direct";
+    sc.materials.push_back(extra);
+    EXPECT_EQ(sc.find_material("direct"), n + 1);
+    sc.set_material("after", pgloss_physical{{0.2, 0.2, 0.2}, 0.0, 0.1, 0.1, PGLOSS_NORM_WARD});
+    EXPECT_EQ(sc.find_material("after"), n + 2);
+    EXPECT_EQ(sc.find_material("direct"), n + 1);
 }
 
 pgt::Scene small_scene() {
@@ -238,6 +322,84 @@ TEST(Hardening, ImagesAreWrittenWholeOrNotAtAll) {
     size_t files = 0;
     for (auto &e : fs::directory_iterator(dir)) files += e.is_regular_file() ? 1 : 0;
     EXPECT_EQ(files, 1u);
+    // A failed final rename says why (the removal of the temporary file used to overwrite the
+    // reason: "cannot write …: Success"): here the final name is a non-empty folder.
+    fs::create_directories(dir / "c.exr" / "inside");
+    try {
+        pgt::write_exr(img, (dir / "c.exr").string());
+        ADD_FAILURE() << "write_exr onto a folder returned";
+    } catch (const std::runtime_error &e) {
+        const std::string what = e.what();
+        EXPECT_EQ(what.find("Success"), std::string::npos) << what;
+        EXPECT_EQ(what, "cannot write " + (dir / "c.exr").string() + ": " + std::strerror(EISDIR)) << what;
+    }
+    files = 0;
+    for (auto &e : fs::directory_iterator(dir)) files += e.is_regular_file() ? 1 : 0;
+    EXPECT_EQ(files, 1u);  // no temporary left behind
+}
+
+// A contact sheet's labels fit their cells: out/fig12.png cut its bottom-right label at the
+// sheet's edge and the labels ran into the next cell (their width was never measured).
+TEST(Hardening, ContactSheetLabelsStayInTheirCells) {
+    const float bg = std::lround(0.08f * 255) / 255.0f;
+    auto is_bg = [&](const pgt::Image &im, int x, int y) {
+        const float *p = &im.rgb[3 * (size_t(y) * size_t(im.width) + size_t(x))];
+        return std::fabs(p[0] - bg) < 0.6f / 255 && std::fabs(p[1] - bg) < 0.6f / 255 && std::fabs(p[2] - bg) < 0.6f / 255;
+    };
+    fs::path dir = fs::path(PGLOSS_TEST_OUT) / "sheet";
+    fs::create_directories(dir);
+    const int pad = 6;  // image.cpp's margin between cells
+    // Fig. 12's labels (DejaVu through OIIO: ASCII), and a long one that only fits broken into lines.
+    const std::vector<std::string> labels = {
+        "black rho_s .099 alpha .04\nc .183  d .96", "white rho_s .099 alpha .04\nc .0578  d .96",
+        "grey rho_s .0413 alpha .04\nc .0578  d .96", "a label much longer than any cell is wide, which must wrap",
+        "short", "black rho_s .0125 alpha .04\nc .057  d .96"};
+    for (int cw : {80, 160, 256}) {
+        const int chh = cw * 3 / 4;
+        std::vector<pgt::SheetCell> cells;
+        for (const std::string &l : labels) {
+            pgt::SheetCell c;
+            c.display.width = cw, c.display.height = chh;
+            c.display.rgb.assign(size_t(3 * cw * chh), 0.0f);
+            for (size_t i = 2; i < c.display.rgb.size(); i += 3) c.display.rgb[i] = 1.0f;  // pure blue
+            c.label = l;
+            cells.push_back(c);
+        }
+        const std::string png = (dir / ("sheet" + std::to_string(cw) + ".png")).string();
+        pgt::write_png(pgt::contact_sheet(cells, 3, "Fig. 12: same physical gloss (top), same perceptual gloss (bottom)"), png);
+        pgt::Image im = pgt::read_image(png);
+        const int W = im.width, H = im.height;
+        ASSERT_EQ(W, pad + 3 * (cw + pad));
+        // The cells' rows: where the first column's image is blue.
+        std::vector<int> tops;
+        for (int y = 0; y < H; ++y) {
+            const float *p = &im.rgb[3 * (size_t(y) * size_t(W) + size_t(pad))];
+            bool blue = p[2] > 0.99f && p[0] < 0.01f;
+            const float *q = y ? p - 3 * size_t(W) : nullptr;
+            if (blue && !(q && q[2] > 0.99f && q[0] < 0.01f)) tops.push_back(y);
+        }
+        ASSERT_EQ(tops.size(), 2u) << cw;
+        for (int r = 0; r < 2; ++r) {
+            const int label_top = tops[size_t(r)] + chh, label_end = r == 0 ? tops[1] - pad : H - pad;
+            for (int col = 0; col < 3; ++col) {
+                const int x0 = pad + col * (cw + pad);
+                int text = 0;
+                for (int y = tops[size_t(r)]; y < (r == 0 ? tops[1] : H); ++y) {
+                    for (int x = x0 + cw; x < x0 + cw + pad; ++x)  // the gap after the cell, the sheet's edge
+                        ASSERT_TRUE(is_bg(im, x, y)) << "cw " << cw << ": text in the gap at (" << x << ", " << y << ")";
+                    if (y >= label_top && y < label_end) {
+                        for (int x = x0; x < x0 + cw; ++x) text += !is_bg(im, x, y);
+                        // Not cut at the cell's edge: the label's last columns stay empty.
+                        for (int x = x0 + cw - 2; x < x0 + cw; ++x)
+                            ASSERT_TRUE(is_bg(im, x, y)) << "cw " << cw << ": label cut at (" << x << ", " << y << ")";
+                    }
+                }
+                EXPECT_GT(text, 10) << "cw " << cw << ": no label drawn under cell " << 3 * r + col;
+            }
+        }
+        for (int y = H - pad; y < H; ++y)  // below the last labels: nothing
+            for (int x = 0; x < W; ++x) ASSERT_TRUE(is_bg(im, x, y)) << "cw " << cw << ": text in the bottom margin";
+    }
 }
 
 }  // namespace

@@ -401,3 +401,115 @@ def test_screenshot(browser: Browser, base_url: str) -> None:
     page.locator("#view-panel").screenshot(path=str(OUT / "picker-match.png"))
     assert (OUT / "picker.png").stat().st_size > 10_000
     print(f"\n(e) screenshots: {OUT / 'picker.png'}, {OUT / 'picker-match.png'}")
+
+
+# ---- defects found by a new user (each test failed before its fix) ------------------------
+
+CANVAS_MAX = """() => {  // the brightest 8-bit channel on the view canvas (WebGL, preserveDrawingBuffer)
+    const v = document.getElementById('view'), c = document.createElement('canvas');
+    c.width = v.width; c.height = v.height;
+    const g = c.getContext('2d');
+    g.drawImage(v, 0, 0);
+    const d = g.getImageData(0, 0, c.width, c.height).data;
+    let m = 0;
+    for (let i = 0; i < d.length; i += 4) m = Math.max(m, d[i], d[i + 1], d[i + 2]);
+    return m;
+}"""
+
+
+def test_match_labels_hidden_in_paint_view(browser: Browser, base_url: str) -> None:
+    """Back from "match gloss" to "paint", the six match labels go: `#match-labels { display:
+    grid }` overrode the `hidden` attribute, and they stayed with stale values. Nothing on the
+    page with `hidden` may show."""
+    page = open_page(browser, f"{base_url}/index.html?autorun=0&size=64x48")
+    page.check("input[name=view][value=match]")
+    assert page.locator("#match-labels").is_visible()
+    assert page.locator("#match-labels div").count() == 6
+    page.check("input[name=view][value=single]")
+    assert page.locator("#match-labels").is_hidden()
+    shown = page.evaluate("[...document.querySelectorAll('[hidden]')].filter((e) => getComputedStyle(e).display "
+                          "!== 'none').map((e) => e.id || e.tagName)")
+    assert shown == [], shown
+
+
+def test_export_link_follows_every_change(browser: Browser, base_url: str) -> None:
+    """The JSON export's "link" is the page's address after the change, not before it
+    (exportText read location.href before writeHash updated it)."""
+    page = open_page(browser, f"{base_url}/index.html?autorun=0&size=64x48#mode=perceptual&L=50&a=0&b=0&c=0.05&d=0.95")
+    for key, value in (("c", 0.071), ("L", 42.5), ("d", 0.91)):
+        set_control(page, key, value)
+        link = json.loads(page.input_value("#export"))["link"]
+        assert link == page.evaluate("location.href") and f"{key}={value}" in link, (key, link)
+    page.check("input[name=view][value=match]")
+    assert "view=match" in json.loads(page.input_value("#export"))["link"]
+    page.check("input[name=mode][value=physical]")
+    assert "mode=physical" in json.loads(page.input_value("#export"))["link"]
+
+
+def test_out_of_gamut_paint_is_not_shown_as_rendered(browser: Browser, base_url: str) -> None:
+    """An out-of-gamut paint: the note under the view gives the status the status line gives
+    (it said PGLOSS_ERR_NEGATIVE under PGLOSS_ERR_GAMUT), and the canvas is emptied (it kept the
+    previous paint's image). In the match view a tile whose paint the core refuses is black, not
+    a black sphere in a lit room."""
+    page = open_page(browser, f"{base_url}/index.html?autorun=0&size=64x48#mode=perceptual&L=51.04&a=0&b=0&c=0.087&d=0.93")
+    page.evaluate("() => { for (let i = 0; i < 4; i++) window.picker.tracer.step(1); }")
+    assert page.evaluate(CANVAS_MAX) > 40  # the grey paint is on the canvas
+    set_control(page, "b", -120.0)
+    status, reason = page.inner_text("#out-status"), page.inner_text("#out-reason")
+    assert status == "PGLOSS_ERR_GAMUT"
+    note = page.inner_text("#view-note")
+    assert note.startswith(f"Not rendered — {status}: {reason}"), note
+    assert "PGLOSS_ERR_NEGATIVE" not in note
+    assert page.evaluate(CANVAS_MAX) == 0
+    set_control(page, "b", 0.0)  # a valid paint renders again
+    page.evaluate("() => window.picker.tracer.step(2)")
+    assert page.locator("#view-note").is_hidden() and page.evaluate(CANVAS_MAX) > 40
+    # Physical mode, α = 0 (PGLOSS_ERR_ALPHA): every match tile's paint is refused.
+    page.check("input[name=mode][value=physical]")
+    set_control(page, "alpha", 0.0)
+    page.check("input[name=view][value=match]")
+    page.evaluate("() => { for (let i = 0; i < 4; i++) window.picker.tracer.step(1); }")
+    assert page.evaluate(CANVAS_MAX) == 0
+    assert not page.errors, page.errors  # type: ignore[attr-defined]
+
+
+def _significant(number: str) -> int:
+    mantissa = re.sub(r"[eE].*$", "", number).lstrip("-").replace(".", "").lstrip("0")
+    return len(mantissa)
+
+
+def test_numbers_shown_and_exported_without_float_noise(browser: Browser, base_url: str) -> None:
+    """Number boxes and exports show at most 6 significant digits (0.050000000000000044 was shown
+    for α = 1 − 0.95, 0.08699999999999998 exported for c); the URL hash keeps the exact doubles,
+    so that the link reproduces the state bit for bit."""
+    page = open_page(browser, f"{base_url}/index.html?autorun=0&size=64x48#mode=perceptual&L=51.04&a=0&b=0&c=0.087&d=0.95")
+    page.check("input[name=mode][value=physical]")
+    assert page.input_value("#num-alpha") == "0.05"
+    for key in ("rd_r", "rd_g", "rd_b", "rho_s", "alpha"):
+        assert _significant(page.input_value(f"#num-{key}")) <= 6, (key, page.input_value(f"#num-{key}"))
+    page.check("input[name=mode][value=perceptual]")
+    assert page.input_value("#num-c") == "0.087" and page.input_value("#num-d") == "0.95"
+    exact = page.evaluate("({...window.picker.state})")
+    for kind in ("json", "scene", "osl", "glsl"):
+        page.check(f"input[name=export][value={kind}]")
+        text = page.input_value("#export")
+        if kind == "json":
+            j = json.loads(text)
+            assert j["perceptual"]["c"] == 0.087 and j["perceptual"]["d"] == 0.95 and j["physical"]["alpha"] == 0.05
+            text = text.replace(j["link"], "")
+        noisy = [n for n in re.findall(r"-?\d+\.\d+(?:[eE][-+]?\d+)?", text) if _significant(n) > 6]
+        assert not noisy, (kind, noisy)
+    # The link is exact: the state it opens is the same doubles.
+    again = open_page(browser, json.loads(page.evaluate("JSON.stringify({l: location.href})"))["l"])
+    state = again.evaluate("({...window.picker.state})")
+    assert all(state[k] == exact[k] for k in ("L", "a", "b", "c", "d")), (state, exact)
+
+
+def test_readme_states_the_wasm_size() -> None:
+    """The README's "a WASI reactor of about N kB" is the built module's size to ±10 % (it said
+    38 kB of a 48 kB file)."""
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    m = re.search(r"WASI reactor of about (\d+) kB", readme)
+    assert m, "the README no longer states the module's size"
+    size = (SITE / "pgloss.wasm").stat().st_size / 1000
+    assert abs(size - int(m.group(1))) <= 0.1 * size, (m.group(1), size)

@@ -32,9 +32,16 @@ const state = { ...DEFAULT };
 let model = null;  // the last conversion: what is displayed and rendered
 
 // ---- formatting -------------------------------------------------------------------------
+// What a person reads and what the exports carry: 6 significant digits. A step of 1e-6
+// relative moves L* by < 1e-4 and c, d by < 1e-6 — far below a just-noticeable difference and
+// the ΔD 0.04 isogloss step — and hides a double's rounding noise (1 − 0.95 =
+// 0.050000000000000044, c = 0.08699999999999998 after a round trip through ρs). The state and
+// the URL hash keep the exact doubles, so that a link reproduces the paint bit for bit.
 const fmt = (x, digits = 6) => (Number.isFinite(x) ? Number(x.toPrecision(digits)).toString() : String(x));
 const exact = (x) => String(x);  // shortest round-trip decimal of the double
-const glslFloat = (x) => { const s = exact(x); return /[.eE]/.test(s) ? s : `${s}.0`; };
+const glslFloat = (x) => { const s = fmt(x); return /[.eE]/.test(s) ? s : `${s}.0`; };
+// A number for the JSON export: rounded as shown, not-finite values as null (JSON has no NaN).
+const jsonNum = (x) => (Number.isFinite(x) ? Number(x.toPrecision(6)) : null);
 const statusClass = (st) => (st === 0 ? 'ok' : st > 0 ? 'warn' : 'bad');
 
 // ---- the model: state → numbers from the C core ---------------------------------------
@@ -125,7 +132,7 @@ function bindControl(key) {
 function showControl(key, outOfModel) {
   const rng = $(`rng-${key}`), num = $(`num-${key}`);
   rng.value = state[key];  // the slider shows the nearest end; the number box the exact value
-  if (document.activeElement !== num) num.value = exact(state[key]);
+  if (document.activeElement !== num) num.value = fmt(state[key]);  // the exact value stays in state
   const lo = Number(rng.min), hi = Number(rng.max);
   const row = rng.closest('.ctl');
   row.classList.toggle('out', outOfModel || state[key] < lo || state[key] > hi);
@@ -252,25 +259,27 @@ function pickFromPlot(ev) {
 function exportText(m, kind) {
   const q = m.perceptual, p = m.physical, rd = p.rho_d;
   if (kind === 'json') {
-    return JSON.stringify({ perceptual: q, physical: { rho_d: rd, rho_s: p.rho_s, alpha: p.alpha, normalization: 'ward' },
-      status: m.name, reason: m.status === 0 ? null : m.reason, envelope_c: m.envelope,
+    // Rounded as shown; `link` (the URL hash) carries the exact doubles for a bit-exact round trip.
+    const perceptual = Object.fromEntries(PERCEPTUAL_KEYS.map((k) => [k, jsonNum(q[k])]));
+    return JSON.stringify({ perceptual, physical: { rho_d: rd.map(jsonNum), rho_s: jsonNum(p.rho_s), alpha: jsonNum(p.alpha),
+      normalization: 'ward' }, status: m.name, reason: m.status === 0 ? null : m.reason, envelope_c: jsonNum(m.envelope),
       link: location.href }, null, 2);
   }
   if (kind === 'scene') {
     return [`# examples/tracer scene line (replace the stimulus scene's \`material paint\`)`,
       state.mode === 'perceptual'
-        ? `material paint perceptual L=${exact(q.L)} a=${exact(q.a)} b=${exact(q.b)} c=${exact(q.c)} d=${exact(q.d)}`
-        : `# perceptual: L=${exact(q.L)} a=${exact(q.a)} b=${exact(q.b)} c=${exact(q.c)} d=${exact(q.d)}`,
-      `${state.mode === 'perceptual' ? '# the same paint, physical: ' : ''}material paint physical rho_d=${rd.map(exact).join(',')} rho_s=${exact(p.rho_s)} alpha=${exact(p.alpha)}`,
+        ? `material paint perceptual L=${fmt(q.L)} a=${fmt(q.a)} b=${fmt(q.b)} c=${fmt(q.c)} d=${fmt(q.d)}`
+        : `# perceptual: L=${fmt(q.L)} a=${fmt(q.a)} b=${fmt(q.b)} c=${fmt(q.c)} d=${fmt(q.d)}`,
+      `${state.mode === 'perceptual' ? '# the same paint, physical: ' : ''}material paint physical rho_d=${rd.map((x) => fmt(x)).join(',')} rho_s=${fmt(p.rho_s)} alpha=${fmt(p.alpha)}`,
       m.status < 0 ? `# ${m.name}: ${m.reason} (the tracer refuses a perceptual paint outside the model)` : ''].filter(Boolean).join('\n');
   }
   if (kind === 'osl') {
     return [`// osl/pgloss_material.osl parameters (OSL shader-group syntax)`,
       `param int use_physical ${state.mode === 'physical' ? 1 : 0} ;`,
-      `param float Lightness ${exact(q.L)} ;`, `param float a_star ${exact(q.a)} ;`, `param float b_star ${exact(q.b)} ;`,
-      `param float contrast_gloss ${exact(q.c)} ;`, `param float distinctness_gloss ${exact(q.d)} ;`,
-      `param color rho_d ${rd.map(exact).join(' ')} ;`, `param float rho_s ${exact(p.rho_s)} ;`,
-      `param float alpha ${exact(p.alpha)} ;`].join('\n');
+      `param float Lightness ${fmt(q.L)} ;`, `param float a_star ${fmt(q.a)} ;`, `param float b_star ${fmt(q.b)} ;`,
+      `param float contrast_gloss ${fmt(q.c)} ;`, `param float distinctness_gloss ${fmt(q.d)} ;`,
+      `param color rho_d ${rd.map((x) => fmt(x)).join(' ')} ;`, `param float rho_s ${fmt(p.rho_s)} ;`,
+      `param float alpha ${fmt(p.alpha)} ;`].join('\n');
   }
   return [`// glsl/pgloss.glsl (after #include "pgloss.glsl")`,
     `pgloss_perceptual q = pgloss_perceptual(${[q.L, q.a, q.b, q.c, q.d].map(glslFloat).join(', ')});`,
@@ -315,9 +324,14 @@ function updateRender(m) {
     tracer.setPaints([m.physical], 1, 1);
     note.hidden = m.status >= 0;
     note.style.maxWidth = `${Math.max(canvas.width, 240)}px`;
+    // The paint's own status, as the status line shows it; the physical check's reason (a
+    // negative ρd for an out-of-gamut colour) says why it cannot be rendered.
     note.textContent = m.renderable
       ? `Outside the model — ${m.name}: ${m.reason}. Rendered as computed, not clamped.`
-      : `Not rendered — ${m.physicalCheck.name}: ${pg.statusString(m.physicalCheck.status)}`;
+      : `Not rendered — ${m.name}: ${m.reason}` +
+        (m.physicalCheck.status !== m.status ? ` (its physical parameters: ${pg.statusString(m.physicalCheck.status)})` : '');
+    // Nothing of the previous paint may stay on the canvas as if it were this one's render.
+    if (!m.renderable) tracer.blank();
   }
 }
 
@@ -359,9 +373,9 @@ function update(opts = {}) {
   if (state.mode === 'perceptual') $('rng-c').closest('.ctl').classList.toggle('out', model.status === -6 || model.status === -5 || state.c > Number($('rng-c').max));
   showReadout(model);
   drawPlot(model);
+  writeHash();  // before the export, whose `link` is the hash just written
   $('export').value = exportText(model, state.export);
   updateRender(model);
-  writeHash();
 }
 
 function applyModeUI() {

@@ -91,6 +91,16 @@ export class Tracer {
     }
   }
 
+  // An empty (black) canvas and no accumulation: for a paint that cannot be rendered.
+  blank() {
+    const gl = this.gl;
+    this.reset();
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    gl.viewport(0, 0, this.canvas.width, this.canvas.height);
+    gl.clearColor(0, 0, 0, 1);
+    gl.clear(gl.COLOR_BUFFER_BIT);
+  }
+
   // paints: up to 6 of {rho_d: [r,g,b], rho_s, alpha} (physical, from the C core), in
   // reading order over a tilesX × tilesY grid.
   setPaints(paints, tilesX = 1, tilesY = 1) {

@@ -219,7 +219,13 @@ void main() {
     vec2 in_tile = from_top - vec2(tile) * u_tile_size;
     int k = clamp(tile.y * u_tiles_x + tile.x, 0, 5);
     pgloss_material paint;
-    pgloss_material_init(paint, pgloss_physical(u_rho_d[k], u_rho_s[k], u_alpha[k], u_alpha[k], PGLOSS_NORM_WARD));
+    // A paint the core refuses (negative ρ, α <= 0, not finite) leaves its tile black: its
+    // material would be black (pgloss_material_init), which would pass for a render of a black
+    // paint in a lit room.
+    if (pgloss_material_init(paint, pgloss_physical(u_rho_d[k], u_rho_s[k], u_alpha[k], u_alpha[k], PGLOSS_NORM_WARD)) < 0) {
+        o_sum = vec4(0.0);
+        return;
+    }
 
     uint pix = uint(ip.y) * 65536u + uint(ip.x);
     for (int s = 0; s < u_spp; ++s) {

@@ -13,6 +13,8 @@
 
 namespace pgt {
 
+CliError::CliError(const std::string &what) : std::runtime_error(printable(what)) {}
+
 namespace {
 
 // Whole-string numbers: "3x", "abc", "" and out-of-range values are errors that name the option.

@@ -9,8 +9,9 @@
 
 namespace pgt {
 
+// The message is printable() (scene.hpp): arguments are echoed in it.
 struct CliError : std::runtime_error {
-    using std::runtime_error::runtime_error;
+    explicit CliError(const std::string &what);
 };
 
 struct CliOptions {

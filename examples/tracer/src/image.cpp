@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <sstream>
 #include <stdexcept>
 
 namespace OCIO = OCIO_NAMESPACE;
@@ -48,7 +49,8 @@ void write_image_atomically(const std::string &path, const OIIO::ImageSpec &spec
     std::error_code ec;
     if (err.empty()) fs::rename(tmp, final_path, ec);
     if (!err.empty() || ec) {
-        fs::remove(tmp, ec);
+        std::error_code ignored;  // not ec: the removal's success would replace the rename's reason
+        fs::remove(tmp, ignored);
         throw std::runtime_error("cannot write " + path + ": " + (err.empty() ? ec.message() : err));
     }
 }
@@ -112,16 +114,99 @@ void write_png(const Image &disp, const std::string &path) {
     write_image_atomically(path, spec, OIIO::TypeDesc::UINT8, px.data());
 }
 
+namespace {
+
+// The extent of `text` at `size` px relative to the first line's baseline origin (OIIO's
+// text_size); an empty ROI when the font cannot be found.
+OIIO::ROI text_extent(const std::string &text, int size, const std::string &font) {
+    return OIIO::ImageBufAlgo::text_size(text, size, font);
+}
+
+// How far right of its origin text's widest line reaches at `size` px, with a pixel for the
+// anti-aliased edge (0 when the font cannot be found).
+int text_width(const std::string &text, int size, const std::string &font) {
+    OIIO::ROI r = text_extent(text, size, font);
+    return r.defined() ? r.xend + 1 : 0;
+}
+
+// The largest size from `start` down to 9 px at which every text is at most `width` wide.
+int fitting_size(const std::vector<std::string> &texts, int start, int width, const std::string &font) {
+    int size = start;
+    for (; size > 9; --size) {
+        bool fits = true;
+        for (const std::string &t : texts) fits = fits && text_width(t, size, font) <= width;
+        if (fits) break;
+    }
+    return size;
+}
+
+// `text` with every line that is wider than `width` broken between words.
+std::string wrap(const std::string &text, int width, int size, const std::string &font) {
+    std::string out, line;
+    std::istringstream lines(text);
+    while (std::getline(lines, line)) {
+        if (text_width(line, size, font) <= width) {  // kept as written (double spaces too)
+            out += line + "\n";
+            continue;
+        }
+        std::istringstream words(line);
+        std::string w, cur;
+        while (words >> w) {
+            std::string next = cur.empty() ? w : cur + " " + w;
+            if (!cur.empty() && text_width(next, size, font) > width) {
+                out += cur + "\n";
+                next = w;
+            }
+            cur = next;
+        }
+        out += cur + "\n";
+    }
+    if (!out.empty()) out.pop_back();
+    return out;
+}
+
+// Draws `text` on background `bg` into sheet's box (x, y, w, h), first baseline `ascent` below
+// y, clipped to the box: a label too long for its cell is cut at the cell's edge instead of
+// running into the next.
+void text_in_box(OIIO::ImageBuf &sheet, int x, int y, int w, int h, int ascent, const std::string &text, int size,
+                 const std::string &font, const float *colour, const float *bg) {
+    OIIO::ImageBuf box(OIIO::ImageSpec(w, h, 3, OIIO::TypeDesc::FLOAT));
+    OIIO::ImageBufAlgo::fill(box, {bg, 3});
+    OIIO::ImageBufAlgo::render_text(box, 0, ascent, text, size, font, {colour, 3});
+    OIIO::ImageBufAlgo::paste(sheet, x, y, 0, 0, box);
+}
+
+}  // namespace
+
 Image contact_sheet(const std::vector<SheetCell> &cells, int columns, const std::string &title) {
     if (cells.empty()) return {};
     const int cw = cells[0].display.width, ch = cells[0].display.height;
-    const int pad = 6, font = std::max(10, cw / 13), label_h = 2 * font + 6, title_h = font + 16;
     const int rows = (int(cells.size()) + columns - 1) / columns;
-    const int W = pad + columns * (cw + pad), H = title_h + rows * (ch + label_h + pad);
-    OIIO::ImageBuf sheet(OIIO::ImageSpec(W, H, 3, OIIO::TypeDesc::FLOAT));
-    OIIO::ImageBufAlgo::fill(sheet, {0.08f, 0.08f, 0.08f});
+    const int pad = 6, W = pad + columns * (cw + pad);
     const std::string fontname = "DejaVuSans";
-    OIIO::ImageBufAlgo::render_text(sheet, pad, title_h - 8, title, font, fontname, {1.0f, 1.0f, 1.0f});
+    // Label and title sizes: as large as cw / 13, smaller where a line would not fit its cell
+    // (or the title the sheet), and lines still too wide broken between words; the label rows
+    // as tall as the tallest label.
+    std::vector<std::string> labels;
+    for (const SheetCell &c : cells) labels.push_back(c.label);
+    const int font = fitting_size(labels, std::max(10, cw / 13), cw - 6, fontname);
+    for (std::string &l : labels) l = wrap(l, cw - 6, font, fontname);
+    const int title_font = fitting_size({title}, std::max(10, cw / 13), W - 2 * pad, fontname);
+    const std::string title_text = wrap(title, W - 2 * pad, title_font, fontname);
+    int ascent = font, descent = font / 3;
+    for (const std::string &l : labels) {
+        OIIO::ROI r = text_extent(l, font, fontname);
+        if (r.defined()) ascent = std::max(ascent, -r.ybegin), descent = std::max(descent, r.yend);
+    }
+    OIIO::ROI tr = text_extent(title_text, title_font, fontname);
+    const int title_ascent = tr.defined() ? std::max(title_font, -tr.ybegin) : title_font;
+    const int title_h = title_ascent + (tr.defined() ? std::max(0, tr.yend) : title_font / 3) + 12;
+    const int label_h = ascent + descent + 6;
+    const int H = title_h + rows * (ch + label_h + pad);
+    OIIO::ImageBuf sheet(OIIO::ImageSpec(W, H, 3, OIIO::TypeDesc::FLOAT));
+    const float bg[3] = {0.08f, 0.08f, 0.08f}, white[3] = {1.0f, 1.0f, 1.0f}, light[3] = {0.9f, 0.9f, 0.9f};
+    OIIO::ImageBufAlgo::fill(sheet, {bg, 3});
+    text_in_box(sheet, pad, 4, W - 2 * pad, title_h - 4, title_ascent, title_text, title_font, fontname, white, bg);
     for (size_t i = 0; i < cells.size(); ++i) {
         int col = int(i) % columns, row = int(i) / columns;
         int x = pad + col * (cw + pad), y = title_h + row * (ch + label_h + pad);
@@ -129,8 +214,7 @@ Image contact_sheet(const std::vector<SheetCell> &cells, int columns, const std:
         OIIO::ImageBuf cell(OIIO::ImageSpec(d.width, d.height, 3, OIIO::TypeDesc::FLOAT),
                             const_cast<float *>(d.rgb.data()));
         OIIO::ImageBufAlgo::paste(sheet, x, y, 0, 0, cell);
-        OIIO::ImageBufAlgo::render_text(sheet, x + 2, y + ch + font + 2, cells[i].label, font, fontname,
-                                        {0.9f, 0.9f, 0.9f});
+        text_in_box(sheet, x + 2, y + ch + 3, cw - 2, label_h - 3, ascent, labels[i], font, fontname, light, bg);
     }
     Image out;
     out.width = W, out.height = H;

@@ -113,8 +113,8 @@ int main(int argc, char **argv) {
             if (o.command == Cmd::FIG4) pgt::render_fig4(fo);
             else pgt::render_fig12(fo);
         }
-    } catch (const std::exception &e) {
-        std::fprintf(stderr, "pgloss-tracer: %s\n", e.what());
+    } catch (const std::exception &e) {  // printable: paths and OIIO's messages may carry any bytes
+        std::fprintf(stderr, "pgloss-tracer: %s\n", pgt::printable(e.what()).c_str());
         return 1;
     }
     return 0;

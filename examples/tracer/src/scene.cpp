@@ -7,6 +7,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -30,10 +31,63 @@ Mode parse_mode(const std::string &s) {
     throw SceneError("mode must be mis, brdf or light, not '" + s + "'");
 }
 
+std::string printable(const std::string &text) {
+    static const char hex[] = "0123456789abcdef";
+    std::string out;
+    out.reserve(text.size());
+    auto byte_escape = [&](unsigned char c) { out += {'\\', 'x', hex[c >> 4], hex[c & 15]}; };
+    const auto *s = reinterpret_cast<const unsigned char *>(text.data());
+    const size_t n = text.size();
+    for (size_t i = 0; i < n;) {
+        unsigned char c = s[i];
+        if (c >= 0x20 && c < 0x7f) {
+            out += char(c);
+            ++i;
+            continue;
+        }
+        // A UTF-8 sequence (RFC 3629: no overlong forms, no surrogates, at most U+10FFFF)?
+        size_t len = c >= 0xc2 && c <= 0xdf ? 2 : c >= 0xe0 && c <= 0xef ? 3 : c >= 0xf0 && c <= 0xf4 ? 4 : 0;
+        unsigned lo = c == 0xe0 ? 0xa0 : c == 0xf0 ? 0x90 : 0x80, hi = c == 0xed ? 0x9f : c == 0xf4 ? 0x8f : 0xbf;
+        bool ok = len > 0 && i + len <= n && s[i + 1] >= lo && s[i + 1] <= hi;
+        for (size_t k = 2; ok && k < len; ++k) ok = (s[i + k] & 0xc0) == 0x80;
+        if (!ok) {  // a control character, DEL, or a byte that is not UTF-8
+            byte_escape(c);
+            ++i;
+            continue;
+        }
+        unsigned cp = c & (0x7f >> len);
+        for (size_t k = 1; k < len; ++k) cp = cp << 6 | (s[i + k] & 0x3f);
+        if (cp <= 0x9f) {  // C1 controls (U+0080–U+009F): CSI is U+009B
+            for (size_t k = 0; k < len; ++k) byte_escape(s[i + k]);
+        } else if (cp == 0x200e || cp == 0x200f || (cp >= 0x202a && cp <= 0x202e) || (cp >= 0x2066 && cp <= 0x2069)) {
+            out += "\\u{" + std::string{hex[cp >> 12], hex[(cp >> 8) & 15], hex[(cp >> 4) & 15], hex[cp & 15]} + "}";
+        } else {
+            out.append(text, i, len);
+        }
+        i += len;
+    }
+    return out;
+}
+
 int Scene::find_material(const std::string &name) const {
-    for (size_t i = 0; i < materials.size(); ++i)
+    if (material_index_.size() == materials.size()) {
+        auto it = material_index_.find(name);
+        return it == material_index_.end() ? -1 : it->second;
+    }
+    for (size_t i = 0; i < materials.size(); ++i)  // `materials` was changed directly
         if (materials[i].name == name) return static_cast<int>(i);
     return -1;
+}
+
+int Scene::add_material(Material m) {
+    if (material_index_.size() != materials.size()) {  // re-index after direct changes
+        material_index_.clear();
+        for (size_t i = 0; i < materials.size(); ++i) material_index_.emplace(materials[i].name, int(i));
+    }
+    int i = static_cast<int>(materials.size());
+    material_index_.emplace(m.name, i);
+    materials.push_back(std::move(m));
+    return i;
 }
 
 void Scene::set_material(const std::string &name, const pgloss_physical &p) {
@@ -46,7 +100,7 @@ void Scene::set_material(const std::string &name, const pgloss_physical &p) {
     if (i >= 0)
         materials[static_cast<size_t>(i)] = m;
     else
-        materials.push_back(m);
+        add_material(m);
 }
 
 namespace {
@@ -167,7 +221,7 @@ private:
     double to_num(const std::string &k, const std::string &s) const {
         char *end = nullptr;
         double v = std::strtod(s.c_str(), &end);
-        if (s.empty() || *end != '\0') fail(k, "expected a number, got '" + s + "'");
+        if (s.empty() || end != s.c_str() + s.size()) fail(k, "expected a number, got '" + s + "'");  // also "1\0x"
         if (!std::isfinite(v)) fail(k, "must be finite, got '" + s + "'");
         return v;
     }
@@ -208,14 +262,14 @@ bool whole_double(const std::string &w, double &v) {
     if (w.empty()) return false;
     char *end = nullptr;
     v = std::strtod(w.c_str(), &end);
-    return *end == '\0' && std::isfinite(v);
+    return end == w.c_str() + w.size() && std::isfinite(v);  // not "1\0x" either
 }
 bool whole_long(const std::string &w, long long &v) {
     if (w.empty()) return false;
     char *end = nullptr;
     errno = 0;
     v = std::strtoll(w.c_str(), &end, 10);
-    return *end == '\0' && errno == 0;
+    return end == w.c_str() + w.size() && errno == 0;
 }
 
 // An OBJ file as read: its vertices (in double, before scale and translate) and triangles.
@@ -235,6 +289,7 @@ ObjData read_obj(Line &l, const std::string &path) {
     ObjData d;
     std::string text;
     int ln = 0;
+    long long n_vt = 0, n_vn = 0;  // texture coordinates and normals so far: their indices are checked too
     auto bad = [&](const std::string &what) { l.fail("file", path + ":" + std::to_string(ln) + ": " + what); };
     while (std::getline(in, text)) {
         ++ln;
@@ -249,6 +304,10 @@ ObjData read_obj(Line &l, const std::string &path) {
             for (int k = 0; k < 3; ++k)
                 if (!whole_double(w[size_t(k)], x[k])) bad("bad vertex coordinate '" + w[size_t(k)] + "'");
             d.vertices.push_back(x);
+        } else if (tag == "vt") {
+            ++n_vt;
+        } else if (tag == "vn") {
+            ++n_vn;
         } else if (tag == "f") {  // f v | v/t | v/t/n | v//n …
             std::vector<unsigned> idx;
             for (const std::string &t : w) {
@@ -258,11 +317,23 @@ ObjData read_obj(Line &l, const std::string &path) {
                 if (!t.empty() && t.back() == '/') part.push_back("");
                 long long i = 0, extra = 0;
                 bool ok = part.size() >= 1 && part.size() <= 3 && whole_long(part[0], i);
-                for (size_t k = 1; ok && k < part.size(); ++k)
-                    ok = (k == 1 && part.size() == 3 && part[k].empty()) || whole_long(part[k], extra);
+                for (size_t k = 1; ok && k < part.size(); ++k) {
+                    if (k == 1 && part.size() == 3 && part[k].empty()) continue;  // v//n
+                    ok = whole_long(part[k], extra);
+                    // The tracer uses neither texture coordinates nor normals, but an index past
+                    // what the file defines means a broken (or truncated) file: say so.
+                    const long long have = k == 1 ? n_vt : n_vn;
+                    const char *what = k == 1 ? "texture coordinate (vt)" : "normal (vn)";
+                    if (ok && extra < 0) extra = have + extra + 1;
+                    if (ok && (extra < 1 || extra > have))
+                        bad("face vertex '" + t + "': " + what + " index " + part[k] + " out of range (" +
+                            std::to_string(have) + " defined above)");
+                }
                 if (!ok) bad("bad face vertex '" + t + "' (v, v/t, v/t/n or v//n, whole numbers)");
                 if (i < 0) i = static_cast<long long>(d.vertices.size()) + i + 1;
-                if (i < 1 || i > static_cast<long long>(d.vertices.size())) bad("face index out of range");
+                if (i < 1 || i > static_cast<long long>(d.vertices.size()))
+                    bad("face vertex '" + t + "': vertex index " + part[0] + " out of range (" +
+                        std::to_string(d.vertices.size()) + " defined above)");
                 idx.push_back(static_cast<unsigned>(i - 1));
             }
             if (idx.size() < 3) bad("face with < 3 vertices");
@@ -399,7 +470,7 @@ Scene parse_scene(const std::string &text, const std::string &file, const std::s
                 st = pgloss_material_init(&m.ward, &p);
                 if (st < 0) l.fail(field, pgloss_status_string(st));
             }
-            sc.materials.push_back(m);
+            sc.add_material(std::move(m));
         } else if (kw == "sphere") {
             Sphere s{l.vec("center"), l.real("radius", 0, limits::coordinate, true), material_ref("material")};
             sc.spheres.push_back(s);
@@ -475,14 +546,16 @@ std::string read_text_file(const std::string &path, unsigned long long max_bytes
     namespace fs = std::filesystem;
     std::error_code ec;
     fs::file_status st = fs::status(path, ec);
-    if (ec || !fs::exists(st)) throw SceneError(path + ": cannot open " + what + " (no such file)");
+    if (st.type() == fs::file_type::not_found) throw SceneError(path + ": cannot open " + what + " (no such file)");
+    if (ec) throw SceneError(path + ": cannot open " + what + ": " + ec.message());  // e.g. "Permission denied"
     if (!fs::is_regular_file(st)) throw SceneError(path + ": " + what + " is not a regular file");
     auto size = fs::file_size(path, ec);
     if (ec) throw SceneError(path + ": cannot read " + what + ": " + ec.message());
     if (size > max_bytes)
         throw SceneError(path + ": " + what + " is larger than " + std::to_string(max_bytes >> 20) + " MiB");
+    errno = 0;
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw SceneError(path + ": cannot open " + what);
+    if (!in) throw SceneError(path + ": cannot open " + what + (errno ? std::string(": ") + std::strerror(errno) : ""));
     std::string text(static_cast<size_t>(size), '\0');
     in.read(text.data(), static_cast<std::streamsize>(size));
     text.resize(static_cast<size_t>(in.gcount()));  // a file that shrank meanwhile reads short

@@ -35,6 +35,7 @@
 #include <glm/glm.hpp>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace pgt {
@@ -57,8 +58,17 @@ constexpr unsigned long long obj_bytes = 1ULL << 30;      // an OBJ file
 constexpr size_t triangles = size_t(1) << 25;               // in all `mesh` lines of a scene
 }  // namespace limits
 
+// `text` with every byte that a terminal would act on or could not show written as an escape:
+// C0/C1 controls and DEL as \xHH, bytes that are not UTF-8 as \xHH, bidirectional-text
+// controls as \u{HHHH}; printable ASCII and other UTF-8 characters unchanged. Idempotent,
+// so that a message quoted inside another is not escaped twice. Scene files and command-line
+// arguments are echoed in error messages through it (an ANSI escape sequence in a scene
+// reached the terminal, and a NUL cut the message short).
+std::string printable(const std::string &text);
+
+// A scene that cannot be used; the message is printable() (file bytes are echoed in it).
 struct SceneError : std::runtime_error {
-    using std::runtime_error::runtime_error;
+    explicit SceneError(const std::string &what) : std::runtime_error(printable(what)) {}
 };
 
 enum class Mode { MIS, BRDF, LIGHT };
@@ -133,16 +143,23 @@ struct Scene {
     Camera camera;
     RenderSettings settings;
     ToneMap tonemap;
-    std::vector<Material> materials;
+    std::vector<Material> materials;  // add with add_material (it keeps the name index)
     std::vector<Sphere> spheres;
     std::vector<Mesh> meshes;
     std::vector<AreaLight> lights;
     bool has_environment = false;
     glm::vec3 environment{0.0f};
 
+    // -1 if there is none. A hash look-up (a scene of 200,000 materials parsed in quadratic
+    // time with a linear search); a linear search if `materials` was changed directly.
     int find_material(const std::string &name) const;
+    // Appends m (its name not yet used) and returns its index.
+    int add_material(Material m);
     // Replaces (or adds) a Ward material by name.
     void set_material(const std::string &name, const pgloss_physical &p);
+
+private:
+    std::unordered_map<std::string, int> material_index_;  // name → index into materials
 };
 
 Scene load_scene(const std::string &path);

@@ -35,9 +35,11 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
                        "or a JSON file of such lists.")
     s.add_argument("spec", nargs="?", default="fig4", metavar="SPEC")
     s.add_argument("--out", type=Path, default=Path("out/stimuli"), help="folder of PNGs + manifest.json")
-    s.add_argument("--tracer", help="pgloss-tracer binary (default $PGLOSS_TRACER, else PATH)")
+    s.add_argument("--tracer", help="pgloss-tracer binary (default $PGLOSS_TRACER, else PATH, else the one "
+                   "scripts/run.sh built in the pgloss checkout around the working directory: build/examples/tracer/)")
     s.add_argument("--scene", type=Path, help="scene with one 'material paint' line (default "
-                   "examples/tracer/scenes/stimulus.scene)")
+                   "examples/tracer/scenes/stimulus.scene of the checkout around the working directory, this "
+                   "package or the tracer)")
     s.add_argument("--size", type=_size, default=(320, 240), help="image size WxH (default 320x240)")
     s.add_argument("--spp", type=int, default=256, help="samples per pixel (default 256)")
     s.add_argument("--seed", type=int, default=1, help="the renderer's seed")

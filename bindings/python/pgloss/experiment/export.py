@@ -43,7 +43,9 @@ def export(store: Store, manifest: dict, outdir: Path) -> List[Path]:
     (outdir / "pairs").mkdir(parents=True, exist_ok=True)
     stim = {s["id"]: s for s in manifest["stimuli"]}
     ids = list(stim)
-    seeds = {(p["subject"], p["procedure"]): p["seed"] for p in store.progress()}
+    # One read transaction for everything written below, so that the files agree with each
+    # other while subjects keep answering.
+    seeds, responses = store.snapshot()
     written: List[Path] = []
 
     path = outdir / "stimuli.csv"
@@ -54,7 +56,7 @@ def export(store: Store, manifest: dict, outdir: Path) -> List[Path]:
             w.writerow([s["id"], s["rho_d"], s["rho_s"], s["alpha"], s["L"], s["c"], s["d"], s["file"], s["sha256"]])
     written.append(path)
 
-    pairs = store.responses("pairs")
+    pairs = [r for r in responses if r["procedure"] == "pairs"]
     for subject in sorted({r["subject"] for r in pairs}):
         path = outdir / "pairs" / f"{subject}.csv"
         with path.open("w", newline="", encoding="utf-8") as f:
@@ -67,7 +69,7 @@ def export(store: Store, manifest: dict, outdir: Path) -> List[Path]:
         w = csv.writer(f)
         w.writerow(["subject", "trial", "repetition", "stimulus", "rho_d", "rho_s", "alpha", "L", "c", "d",
                     "rating", "rt_ms"])
-        for r in store.responses("magnitude"):
+        for r in (r for r in responses if r["procedure"] == "magnitude"):
             s = stim[r["stimuli"]]
             w.writerow([r["subject"], r["trial"], r["trial"] // n + 1, s["id"], s["rho_d"], s["rho_s"], s["alpha"],
                         s["L"], s["c"], s["d"], r["rating"], f"{r['rt_ms']:.0f}"])
@@ -77,7 +79,7 @@ def export(store: Store, manifest: dict, outdir: Path) -> List[Path]:
     with path.open("w", newline="", encoding="utf-8") as f:
         w = csv.writer(f)
         w.writerow(["subject", "procedure", "seed", "trial", "stimuli", "rating", "rt_ms", "received_at", "sitting"])
-        for r in store.responses():
+        for r in responses:
             w.writerow([r["subject"], r["procedure"], seeds[(r["subject"], r["procedure"])], r["trial"],
                         r["stimuli"].replace(",", " "), r["rating"], f"{r['rt_ms']:.0f}", r["received_at"],
                         r["sitting"]])

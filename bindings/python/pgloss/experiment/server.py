@@ -50,6 +50,9 @@ STATIC = Path(__file__).resolve().parent / "static"
 MAX_BODY = 4096
 SUBJECT = re.compile(r"[A-Za-z0-9_-]{1,32}")
 MAX_RT_MS = 24 * 3600 * 1000.0
+_TOKEN_IN_URL = re.compile(r"([?&]token=)[^&\s\"#]*")
+#: The files /static/ serves: what the package ships, nothing named by the request.
+_STATIC_FILES = frozenset(p.name for p in STATIC.iterdir() if re.fullmatch(r"[a-z-]+\.(html|js|css)", p.name))
 
 
 class BadRequest(Exception):
@@ -124,9 +127,10 @@ class Experiment:
             raise BadRequest(409, f"stimuli: trial {t} shows {list(trials[t])}, not {stimuli}")
         if not 0 <= body["rating"] <= 100:
             raise BadRequest(400, f"rating: {body['rating']} is outside 0–100")
-        rt = float(body["rt_ms"])
-        if not 0.0 <= rt <= MAX_RT_MS:
+        # Compared before float(): a 401-digit integer is valid JSON but overflows a float.
+        if not 0 <= body["rt_ms"] <= MAX_RT_MS:
             raise BadRequest(400, "rt_ms: want 0 to 24 h in milliseconds")
+        rt = float(body["rt_ms"])
         try:
             stored = self.store.add_response(who[0], who[1], t, stimuli, body["rating"], rt, body["sitting"])
         except Conflict as e:
@@ -145,7 +149,9 @@ class Handler(BaseHTTPRequestHandler):
     # -- plumbing
     def log_message(self, fmt: str, *args: Any) -> None:  # noqa: D102
         if not self.quiet:
-            sys.stderr.write(f"{self.address_string()} {fmt % args}\n")
+            # The experimenter's token travels in the query (?token=…); a log is read by others.
+            line = _TOKEN_IN_URL.sub(r"\1…", fmt % args)
+            sys.stderr.write(f"{self.address_string()} {line}\n")
 
     def _send(self, status: int, body: bytes, ctype: str, extra: Optional[Dict[str, str]] = None) -> None:
         self.send_response(status)
@@ -188,6 +194,8 @@ class Handler(BaseHTTPRequestHandler):
             body = json.loads(raw.decode("utf-8"), parse_constant=lambda c: (_ for _ in ()).throw(ValueError(c)))
         except (UnicodeDecodeError, ValueError) as e:
             raise BadRequest(400, f"body: not JSON ({e})") from None
+        except RecursionError:  # e.g. [[[…]]] 2,000 deep: fits in 4 KiB, exceeds the parser's stack
+            raise BadRequest(400, "body: JSON nested too deeply") from None
         if not isinstance(body, dict):
             raise BadRequest(400, "body: want a JSON object")
         return body
@@ -258,13 +266,12 @@ class Handler(BaseHTTPRequestHandler):
         raise BadRequest(404, f"no such endpoint {path}")
 
     def _static(self, name: str) -> None:
-        if not re.fullmatch(r"[a-z-]+\.(html|js|css)", name):
-            raise BadRequest(404, "no such file")
-        f = STATIC / name
-        if not f.is_file():
+        # A set look-up, not the file system: a 300-character name made is_file() raise
+        # "File name too long" (a 500).
+        if name not in _STATIC_FILES:
             raise BadRequest(404, "no such file")
         ctype = mimetypes.guess_type(name)[0] or "application/octet-stream"
-        self._send(200, f.read_bytes(), ctype + "; charset=utf-8")
+        self._send(200, (STATIC / name).read_bytes(), ctype + "; charset=utf-8")
 
     def _export(self, what: str) -> None:
         ex = self.experiment
@@ -299,6 +306,7 @@ def make_server(manifest: dict, db: Path, *, host: str = "127.0.0.1", port: int 
     from .manifest import sha256
 
     store = Store(db, sha256(Path(manifest["path"])), [s["id"] for s in manifest["stimuli"]])
+    store.check_writable()  # refused now, not with an error on every response
     r = manifest["renderer"]
     ex = Experiment(manifest, store, token or secrets.token_urlsafe(16), display or (r["width"], r["height"]))
     server = _Server((host, port), Handler)

@@ -43,11 +43,20 @@ PERCEPTUAL = ("L", "c", "d")
 _PAINT = re.compile(r"^\s*material\s+paint\b.*$", re.MULTILINE)
 
 
+def _is_file(path: str) -> bool:
+    """Path(path).is_file(), False for a string no file can have (a grid of 300 bytes made
+    is_file() raise "File name too long")."""
+    try:
+        return Path(path).is_file()
+    except (OSError, ValueError):
+        return False
+
+
 def parse_spec(spec: Optional[str]) -> Dict[str, List[float]]:
     """The grid of a SPEC (see the module's doc): keys rho_d, rho_s, alpha or L, c, d."""
     if spec is None or spec == "fig4":
         return {k: list(v) for k, v in FIG4.items()}
-    if Path(spec).is_file():
+    if _is_file(spec):
         try:
             grid = json.loads(Path(spec).read_text(encoding="utf-8"))
         except (OSError, ValueError) as e:
@@ -98,13 +107,60 @@ def paints(grid: Dict[str, List[float]]) -> List[Dict[str, float]]:
     return rows
 
 
+#: Where scripts/run.sh (build/) and the test scripts (build-tracer-test/) build pgloss-tracer.
+TRACER_BUILDS = ("build/examples/tracer/pgloss-tracer", "build-tracer-test/examples/tracer/pgloss-tracer")
+SCENE = Path("examples/tracer/scenes/stimulus.scene")
+
+
+def _checkouts(*starts: Path) -> List[Path]:
+    """pgloss checkouts (folders holding examples/tracer/scenes/stimulus.scene) at or above each
+    start, in order, once each."""
+    out: List[Path] = []
+    for start in starts:
+        for folder in [start, *start.parents]:
+            if (folder / SCENE).is_file() and folder not in out:
+                out.append(folder)
+                break
+    return out
+
+
+def _executable(path: Path) -> bool:
+    return _is_file(str(path)) and os.access(path, os.X_OK)
+
+
 def find_tracer(tracer: Optional[str]) -> str:
-    """The pgloss-tracer binary: --tracer, else $PGLOSS_TRACER, else the one on PATH."""
-    path = tracer or os.environ.get("PGLOSS_TRACER") or shutil.which("pgloss-tracer")
-    if not path or not (Path(path).is_file() and os.access(path, os.X_OK)):
-        raise SpecError(f"no pgloss-tracer at {path!r}: build examples/tracer (scripts/test-tracer.sh) and give "
-                        "--tracer PATH or set PGLOSS_TRACER")
-    return str(path)
+    """The pgloss-tracer binary: --tracer, else $PGLOSS_TRACER, else the one on PATH, else the
+    one built in the pgloss checkout that holds the working directory or this package
+    (build/ after scripts/run.sh, build-tracer-test/ after the test scripts)."""
+    for given, what in ((tracer, "--tracer"), (os.environ.get("PGLOSS_TRACER"), "PGLOSS_TRACER")):
+        if given:
+            if not _executable(Path(given)):
+                raise SpecError(f"{what} {given}: no pgloss-tracer program there (build it with scripts/run.sh: "
+                                f"build/examples/tracer/pgloss-tracer)")
+            return str(given)
+    on_path = shutil.which("pgloss-tracer")
+    if on_path:
+        return on_path
+    checkouts = _checkouts(Path.cwd(), Path(__file__).resolve().parent)
+    for root in checkouts:
+        for rel in TRACER_BUILDS:
+            if _executable(root / rel):
+                return str(root / rel)
+    where = f" nor built in {', '.join(str(r) for r in checkouts)}" if checkouts else ""
+    raise SpecError(f"no pgloss-tracer: not on PATH{where}. Build it with `bash scripts/run.sh` in the pgloss "
+                    "repository (build/examples/tracer/pgloss-tracer) and run from there, or give --tracer PATH "
+                    "(or set PGLOSS_TRACER)")
+
+
+def find_scene(exe: str) -> Path:
+    """The stimulus scene when --scene is not given: examples/tracer/scenes/stimulus.scene of the
+    pgloss checkout that holds the working directory, this package or the tracer program."""
+    starts = [Path.cwd(), Path(__file__).resolve().parent, Path(exe).resolve().parent]
+    checkouts = _checkouts(*starts)
+    if not checkouts:
+        raise SpecError(f"no stimulus scene: {SCENE} is in none of the folders above {', '.join(map(str, starts))}; "
+                        "give --scene FILE")
+    return checkouts[0] / SCENE
 
 
 def render(spec: Optional[str], outdir: Path, *, tracer: Optional[str] = None, scene: Optional[Path] = None,
@@ -112,11 +168,8 @@ def render(spec: Optional[str], outdir: Path, *, tracer: Optional[str] = None, s
            log=print) -> Path:
     """Renders the stimulus set of SPEC into outdir; returns the manifest's path."""
     exe = find_tracer(tracer)
-    if scene is None:  # the repository's Fig. 4 environment: from the working directory or this source tree
-        rel = Path("examples/tracer/scenes/stimulus.scene")
-        scene = next((p for p in (rel, Path(__file__).resolve().parents[4] / rel) if p.is_file()), rel)
-    scene = Path(scene)
-    if not scene.is_file():
+    scene = find_scene(exe) if scene is None else Path(scene)  # default: the Fig. 4 environment
+    if not _is_file(str(scene)):
         raise SpecError(f"no scene file {scene} (give --scene)")
     text = scene.read_text(encoding="utf-8")
     if re.search(r"^\s*mesh\b", text, re.MULTILINE):

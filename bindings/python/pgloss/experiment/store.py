@@ -24,7 +24,7 @@ import sqlite3
 import time
 from contextlib import contextmanager
 from pathlib import Path
-from typing import Dict, Iterator, List, Optional, Sequence
+from typing import Dict, Iterator, List, Optional, Sequence, Tuple
 
 SCHEMA = """
 CREATE TABLE IF NOT EXISTS meta (key TEXT PRIMARY KEY, value TEXT NOT NULL);
@@ -64,16 +64,32 @@ class Store:
 
     def __init__(self, path: Path, manifest_sha256: str, stimulus_ids: Sequence[str]):
         self.path = Path(path)
-        with self._connect() as db:
-            db.execute("PRAGMA journal_mode=WAL")
-            db.executescript(SCHEMA)
-            row = db.execute("SELECT value FROM meta WHERE key='manifest_sha256'").fetchone()
-            if row is None:
-                db.execute("INSERT INTO meta VALUES ('manifest_sha256', ?), ('stimuli', ?), ('created_at', ?)",
-                           (manifest_sha256, json.dumps(list(stimulus_ids)), utc_now()))
-            elif row[0] != manifest_sha256:
-                raise StoreError(f"{path} holds responses to another stimulus set (manifest SHA-256 {row[0][:12]}…, "
-                                 f"this one {manifest_sha256[:12]}…): use a new database")
+        if not self.path.parent.is_dir():
+            raise StoreError(f"{path}: no folder {self.path.parent} for the database (create it, or give another --db)")
+        try:
+            with self._connect() as db:
+                db.execute("PRAGMA journal_mode=WAL")
+                db.executescript(SCHEMA)
+                row = db.execute("SELECT value FROM meta WHERE key='manifest_sha256'").fetchone()
+                if row is None:
+                    db.execute("INSERT INTO meta VALUES ('manifest_sha256', ?), ('stimuli', ?), ('created_at', ?)",
+                               (manifest_sha256, json.dumps(list(stimulus_ids)), utc_now()))
+        except sqlite3.Error as e:
+            raise StoreError(f"{path}: cannot open the database ({e})") from None
+        if row is not None and row[0] != manifest_sha256:
+            raise StoreError(f"{path} holds responses to another stimulus set (manifest SHA-256 {row[0][:12]}…, "
+                             f"this one {manifest_sha256[:12]}…): use a new database")
+
+    def check_writable(self) -> None:
+        """Raises StoreError unless a response could be committed now: the server checks this at
+        start, so that a read-only database (or folder, which WAL mode writes to) is refused with
+        a reason instead of answering every response with an error."""
+        try:
+            with self._write() as db:
+                db.execute("INSERT OR REPLACE INTO meta VALUES ('served_at', ?)", (utc_now(),))
+        except sqlite3.Error as e:
+            raise StoreError(f"{self.path}: the database cannot be written ({e}); the server needs write access "
+                             f"to it and to its folder {self.path.parent} (SQLite's WAL files live there)") from None
 
     @contextmanager
     def _connect(self) -> Iterator[sqlite3.Connection]:
@@ -151,12 +167,29 @@ class Store:
         return [dict(zip(keys, r)) for r in rows]
 
     def responses(self, procedure: Optional[str] = None) -> List[Dict]:
+        with self._connect() as db:
+            return self._responses(db, procedure)
+
+    @staticmethod
+    def _responses(db: sqlite3.Connection, procedure: Optional[str] = None) -> List[Dict]:
         q = "SELECT subject, procedure, trial, stimuli, rating, rt_ms, received_at, sitting FROM responses"
         args: tuple = ()
         if procedure:
             q += " WHERE procedure=?"
             args = (procedure,)
-        with self._connect() as db:
-            rows = db.execute(q + " ORDER BY subject, procedure, trial", args).fetchall()
+        rows = db.execute(q + " ORDER BY subject, procedure, trial", args).fetchall()
         keys = ("subject", "procedure", "trial", "stimuli", "rating", "rt_ms", "received_at", "sitting")
         return [dict(zip(keys, r)) for r in rows]
+
+    def snapshot(self) -> Tuple[Dict[Tuple[str, str], int], List[Dict]]:
+        """Every subject's seed and every response, read in one transaction: what the export
+        writes is one consistent state, however many subjects start or answer meanwhile (read
+        apart, a subject who started between the two reads had responses but no seed)."""
+        with self._connect() as db:
+            db.execute("BEGIN")  # a WAL read transaction: one snapshot for both SELECTs
+            try:
+                seeds = {(s, p): int(seed) for s, p, seed in db.execute("SELECT subject, procedure, seed FROM subjects")}
+                rows = self._responses(db)
+            finally:
+                db.execute("COMMIT")
+        return seeds, rows

@@ -28,7 +28,7 @@ from . import cities, confirmatory, magnitude, synthetic
 from . import figures as figs
 from .mds import choose_dimensionality, stress_curve
 from .procrustes import axis_r2, procrustes, property_fit
-from .proximity import ProximityError, check_proximities, read_csv
+from .proximity import ProximityError, check_proximities, read_csv, read_csv_rows
 
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
@@ -44,11 +44,13 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--level", choices=("auto", "ratio", "ordinal"), default="auto",
                    help="ratio = metric MDS, ordinal = non-metric (default: ratio for one matrix, ordinal for several)")
     p.add_argument("--ties", choices=("primary", "secondary"), default="primary", help="non-metric ties approach")
-    p.add_argument("--max-dims", type=int, default=5, help="stress curve from 1 to this many dimensions (default 5)")
+    p.add_argument("--max-dims", type=int, help="stress curve from 1 to this many dimensions (default 5, or the most "
+                   "the stimuli allow: n − 2 for n stimuli)")
     p.add_argument("--ndim", type=int, help="use this dimensionality instead of the elbow of the stress curve")
     p.add_argument("--stress", choices=("stress1", "normalized", "raw"), default="stress1",
                    help="the stress plotted and used for the elbow (default Kruskal's stress-1)")
-    p.add_argument("--starts", type=int, default=4, help="random starts besides the Torgerson start (default 4)")
+    p.add_argument("--starts", type=int, help="random starts besides the Torgerson start (default: automatic, 4 "
+                   "or more until the lowest stress is reached twice, up to 32; 1-D up to 64)")
     p.add_argument("--seed", type=int, default=0, help="seed of the random starts, bootstrap and simulation")
 
 
@@ -74,13 +76,36 @@ def _write_curve(path: Path, curve) -> None:
 
 
 def _read_stimuli(path: Path, names) -> dict:
-    with path.open(newline="", encoding="utf-8") as f:
-        rows = {r["name"].strip(): r for r in csv.DictReader(f)}
-    try:
-        sel = [rows[n] for n in names]
-        return {k: np.array([float(r[k]) for r in sel]) for k in ("rho_d", "rho_s", "alpha")}
-    except KeyError as e:
-        raise ProximityError(f"{path}: no stimulus or column {e} (needs columns name, rho_d, rho_s, alpha)") from None
+    """The --stimuli table's rho_d, rho_s, alpha for the stimuli `names`, in that order; any
+    problem is a ProximityError naming the file, row and column."""
+    rows = read_csv_rows(path)
+    header = [c.strip() for c in rows[0]] if rows else []
+    missing = [k for k in ("name", "rho_d", "rho_s", "alpha") if k not in header]
+    if missing:
+        raise ProximityError(f"{path}: no column {', '.join(missing)} (needs columns name, rho_d, rho_s, alpha)")
+    col = {k: header.index(k) for k in ("name", "rho_d", "rho_s", "alpha")}
+    table = {}
+    for line, r in enumerate(rows[1:], start=2):
+        if any(c.strip() for c in r):
+            if len(r) < len(header):
+                raise ProximityError(f"{path}: row {line} has {len(r)} cells for {len(header)} columns")
+            table[r[col["name"]].strip()] = (line, r)
+    out = {}
+    for k in ("rho_d", "rho_s", "alpha"):
+        values = []
+        for n in names:
+            if n not in table:
+                raise ProximityError(f"{path}: no row for stimulus '{n}' (the proximity matrices' names)")
+            line, r = table[n]
+            try:
+                v = float(r[col[k]])
+            except ValueError:
+                v = float("nan")
+            if not np.isfinite(v):
+                raise ProximityError(f"{path}: row {line}, column {k}: {r[col[k]].strip()!r} is not a finite number")
+            values.append(v)
+        out[k] = np.array(values)
+    return out
 
 
 def _analyse(delta: np.ndarray, weights: np.ndarray, names, args, out: Path, log: List[str], *,
@@ -88,23 +113,34 @@ def _analyse(delta: np.ndarray, weights: np.ndarray, names, args, out: Path, log
     prox = check_proximities(delta, weights)
     delta, weights = prox.delta, prox.weights
     model = "smacof" if delta.shape[0] == 1 else "weighted_euclidean"
+    # n stimuli support at most n − 2 dimensions (n − 1 always fit exactly).
+    allowed = prox.n_stimuli - 2
+    if args.ndim is not None and args.ndim > allowed:
+        raise ProximityError(f"--ndim {args.ndim}: {prox.n_stimuli} stimuli allow at most {allowed} dimensions")
+    max_dims = min(args.max_dims or 5, allowed)
     kw = dict(n_random=args.starts, seed=args.seed)
     if model == "weighted_euclidean":
-        kw.update(max_iter=1000, eps=1e-8)
-    curve = stress_curve(delta, range(1, args.max_dims + 1), weights=weights, model=model, metric=metric,
+        kw.update(max_iter=1000, eps=1e-6)
+    curve = stress_curve(delta, range(1, max_dims + 1), weights=weights, model=model, metric=metric,
                          ties=args.ties, **kw)
     _say(log, f"{model} ({'metric' if metric else 'non-metric, ' + args.ties + ' ties'}), "
               f"{delta.shape[0]} subject(s), {delta.shape[1]} stimuli")
+    if max_dims < (args.max_dims or 5):
+        _say(log, f"{prox.n_stimuli} stimuli allow at most {allowed} dimensions (n − 2): the stress curve goes "
+                  f"from 1 to {max_dims}{'' if args.max_dims else ', not the default 5'}")
+    _say(log, "starts per dimensionality (Torgerson, the previous solution, random): " +
+         ", ".join(f"{k}D {len(f.start_stress)}" for k, f in zip(curve.dims, curve.fits)) +
+         ("" if args.starts is not None else " (automatic: more where the lowest stress was reached only once)"))
     choice = choose_dimensionality(curve, kind=args.stress)
     _say(log, choice.reasoning)
     ndim = args.ndim or choice.ndim
     if ndim is None:
-        ndim = min(2, args.max_dims)
+        ndim = min(2, max_dims)
         _say(log, f"no elbow: showing the {ndim}-D solution anyway (choose with --ndim)")
     elif args.ndim:
         _say(log, f"--ndim {ndim}: using {ndim} dimensions")
     if ndim not in curve.dims:
-        raise SystemExit(f"--ndim {ndim} is outside the stress curve's 1–{args.max_dims}")
+        raise SystemExit(f"--ndim {ndim} is outside the stress curve's 1–{max_dims}")
     _write_curve(out / "stress_curve.csv", curve)
     fit = curve.fit(ndim)
     # The weighted model's common space has unit-variance axes; scaled by the subjects' root mean
@@ -180,8 +216,9 @@ def _synthetic(args, out: Path, log: List[str]) -> List[Path]:
 def run(args: argparse.Namespace) -> int:
     """Runs the ``mds`` subcommand; returns the exit status."""
     out: Path = args.out
-    if args.max_dims < 1 or (args.ndim is not None and args.ndim < 1):
-        raise SystemExit("--max-dims and --ndim must be ≥ 1")
+    if (args.max_dims is not None and args.max_dims < 1) or (args.ndim is not None and args.ndim < 1) or \
+            (args.starts is not None and args.starts < 0):
+        raise SystemExit("--max-dims and --ndim must be ≥ 1, --starts ≥ 0")
     if bool(args.example) == bool(args.csv):
         raise SystemExit("give either CSV files or --example (see --help)")
     out.mkdir(parents=True, exist_ok=True)

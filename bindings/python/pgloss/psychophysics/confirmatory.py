@@ -28,7 +28,7 @@ from typing import Dict, List, Mapping, Optional, Sequence, Tuple
 
 import numpy as np
 
-from .mds import _Disparities, _guttman, _vmat, _vplus
+from .mds import _converged, _Disparities, _guttman, _vmat, _vplus
 from .proximity import ArrayLike, Proximities, ProximityError, check_proximities
 from .stress import Stress, distances, stress_of
 
@@ -131,7 +131,7 @@ def _fit_subject(d: np.ndarray, w: np.ndarray, f: np.ndarray, metric: bool, ties
         dist = distances(x)
         disp = d if metric else (target if it == 1 else fn(dist))
         s = stress_of(disp, dist, w).normalized
-        if old is not None and old - s < eps:
+        if _converged(old, s, eps):
             converged = True
             break
         old = s
@@ -147,7 +147,7 @@ def _fit_subject(d: np.ndarray, w: np.ndarray, f: np.ndarray, metric: bool, ties
 def confirmatory_mds(delta: ArrayLike, predictors: ArrayLike, *, names: Optional[Sequence[str]] = None,
                      weights: Optional[ArrayLike] = None, metric: bool = False, ties: str = "primary",
                      n_boot: int = 2000, level: float = 0.95, seed: int = 0, max_iter: int = 1000,
-                     eps: float = 1e-10, n_perm: int = 0) -> ConfirmatoryResult:
+                     eps: float = 1e-8, n_perm: int = 0) -> ConfirmatoryResult:
     """Fits X_k = F diag(v_k) to K proximity matrices (K, n, n) with F = ``predictors`` (n, p).
 
     Returns the subject weights, the group weight ratios with a bootstrap interval over subjects
@@ -200,7 +200,7 @@ class PermutationTest:
 
 def permutation_test(delta: ArrayLike, predictors: ArrayLike, *, n_perm: int = 39, seed: int = 0,
                      weights: Optional[ArrayLike] = None, metric: bool = False, ties: str = "primary",
-                     max_iter: int = 300, eps: float = 1e-8) -> PermutationTest:
+                     max_iter: int = 300, eps: float = 1e-6) -> PermutationTest:
     """Does the hypothesis explain the proximities better than chance? Refits with the rows of
     ``predictors`` permuted (the same permutation for every column and subject) ``n_perm``
     times and compares normalised raw stress."""

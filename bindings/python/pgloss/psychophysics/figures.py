@@ -5,9 +5,9 @@
 * :func:`cities_map` — Fig. 2, the MDS reconstruction of the U.S. map (Procrustes-aligned to
   the cities' projected true positions, which are drawn as the reference in place of an outline);
 * :func:`stress_curve_figure` — Figs. 3 and 5, stress against dimensionality;
-* :func:`configuration_figure` — Fig. 6, a 2-D solution with Fig. 4's stimulus symbols (fill =
-  diffuse colour ρd, shape = specular energy ρs, size = lobe spread α) and the directions along
-  which c and d grow (property fitting);
+* :func:`configuration_figure` — Fig. 6, a 2-D solution with Fig. 4's kind of stimulus symbols
+  (fill = diffuse colour ρd, shape = specular energy ρs, size = lobe spread α), its legend the
+  levels of the stimulus set drawn, and the directions along which c and d grow (property fitting);
 * :func:`magnitude_figure` — Figs. 7 and 8, magnitude estimates against a hypothesis with the
   regression line and r².
 """
@@ -23,10 +23,9 @@ from .magnitude import LinearFit
 from .mds import StressCurve
 from .procrustes import procrustes, property_fit
 
-_FILL = {0.03: "0.1", 0.193: "0.55", 0.767: "0.97"}
-_NAME = {0.03: "black", 0.193: "grey", 0.767: "white"}
-_MARKER = {0.033: "o", 0.066: "s", 0.099: "D"}
-_SIZE = {0.04: 80, 0.07: 45, 0.10: 20}
+_NAME = {0.03: "black", 0.193: "grey", 0.767: "white"}  # Fig. 4's paints (Munsell N2, N5, N9)
+_MARKERS = ("o", "s", "D", "^", "v", "p", "h", "<", ">", "*")  # one per ρs level (Fig. 4: o, s, D)
+_SIZES = (80.0, 20.0)  # marker area of the smallest and the largest α (Fig. 4: sharp lobes drawn large)
 _KIND = {"stress1": "stress-1 (Kruskal)", "normalized": "normalised raw stress", "raw": "raw stress (eq. 1)"}
 
 
@@ -98,24 +97,67 @@ def stress_curve_figure(curve: StressCurve, outdir: Path, stem: str, *, kind: st
     return paths
 
 
+def _levels(values) -> np.ndarray:
+    """The distinct values (6 significant digits) of a stimulus parameter, ascending."""
+    return np.unique(np.array([float(f"{float(v):.6g}") for v in np.asarray(values, dtype=np.float64)]))
+
+
+def _grey(rho_d: float) -> str:
+    """The fill of a diffuse reflectance: its CIE 1976 lightness L*/100 as a matplotlib grey."""
+    y = min(max(float(rho_d), 0.0), 1.0)
+    lightness = 116.0 * np.cbrt(y) - 16.0 if y > (6 / 29) ** 3 else (29 / 3) ** 3 * y
+    return f"{min(max(lightness / 100.0, 0.0), 1.0):.3f}"
+
+
+def symbol_legend(rho_d, rho_s, alpha) -> List[dict]:
+    """Fig. 6's symbols for a stimulus set: fill = L* of ρd, shape = ρs level, area = α level
+    (the sharpest lobe the largest), each level of *this* set listed once, ascending (the
+    legend listed Fig. 4's levels whatever the set). Entries: label, marker, ms, mfc. More ρs
+    levels than shapes share the circle; more than :data:`_MARKERS` levels of any parameter are
+    listed as their range."""
+    out: List[dict] = []
+    for name, values in (("ρd", rho_d), ("ρs", rho_s), ("α", alpha)):
+        levels = _levels(values)
+        shown = levels if len(levels) <= len(_MARKERS) else levels[[0, -1]]
+        for k, v in enumerate(shown):
+            label = f"{name} = {v:g}" + (f" ({_NAME[v]})" if name == "ρd" and v in _NAME else "")
+            if len(shown) < len(levels):
+                label += " (lowest)" if k == 0 else f" (highest; {len(levels)} levels)"
+            entry = {"label": label, "marker": "o", "ms": 8.0, "mfc": "none"}
+            if name == "ρd":
+                entry["mfc"] = _grey(v)
+            elif name == "ρs":
+                entry["marker"], entry["ms"] = _marker(v, levels), 7.0
+            else:
+                entry["ms"], entry["mfc"] = float(np.sqrt(_size(v, levels))), "0.7"
+            out.append(entry)
+    return out
+
+
+def _marker(v: float, levels: np.ndarray) -> str:
+    return _MARKERS[int(np.searchsorted(levels, v))] if len(levels) <= len(_MARKERS) else "o"
+
+
+def _size(v: float, levels: np.ndarray) -> float:
+    span = levels[-1] - levels[0]
+    return _SIZES[0] + (_SIZES[1] - _SIZES[0]) * ((v - levels[0]) / span if span > 0 else 0.5)
+
+
 def configuration_figure(config: np.ndarray, rho_d, rho_s, alpha, outdir: Path, stem: str = "fig06_configuration",
                          *, c=None, d=None, title: str = "Fig. 6 — two-dimensional MDS solution") -> List[Path]:
-    """Fig. 6: the 27 stimuli at their 2-D positions with Fig. 4's symbols; with c and d given,
-    arrows show the directions in which they grow (and the r² of that linear fit)."""
+    """Fig. 6: the stimuli at their 2-D positions with Fig. 4's kind of symbols (:func:`symbol_legend`);
+    with c and d given, arrows show the directions in which they grow (and the r² of that linear fit)."""
     plt = _pyplot()
     x = np.asarray(config, dtype=np.float64)
     if x.ndim != 2 or x.shape[1] != 2:
         raise ValueError(f"configuration_figure needs a 2-D configuration (n, 2); got {x.shape}")
     fig, ax = plt.subplots(figsize=(7.0, 6.0))
+    s_levels, a_levels = _levels(rho_s), _levels(alpha)
     for i in range(x.shape[0]):
-        ax.scatter(x[i, 0], x[i, 1], s=_SIZE.get(round(float(alpha[i]), 3), 40),
-                   marker=_MARKER.get(round(float(rho_s[i]), 3), "o"), c=_FILL.get(round(float(rho_d[i]), 3), "0.5"),
+        ax.scatter(x[i, 0], x[i, 1], s=_size(float(f"{float(alpha[i]):.6g}"), a_levels),
+                   marker=_marker(float(f"{float(rho_s[i]):.6g}"), s_levels), c=_grey(rho_d[i]),
                    edgecolors="k", zorder=3)
-    handles = [plt.Line2D([], [], ls="", marker="o", ms=8, mfc=_FILL[r], mec="k", label=f"ρd = {r} ({_NAME[r]})")
-               for r in _FILL]
-    handles += [plt.Line2D([], [], ls="", marker=m, ms=7, mfc="none", mec="k", label=f"ρs = {s}") for s, m in _MARKER.items()]
-    handles += [plt.Line2D([], [], ls="", marker="o", ms=np.sqrt(z), mfc="0.7", mec="k", label=f"α = {a}")
-                for a, z in _SIZE.items()]
+    handles = [plt.Line2D([], [], ls="", mec="k", **e) for e in symbol_legend(rho_d, rho_s, alpha)]
     if c is not None and d is not None:
         # The paper's "cross in the lower right corner": where c and d grow, placed beside the points.
         lo, hi = x.min(axis=0), x.max(axis=0)

@@ -21,9 +21,14 @@ Scaling* (Springer 1997; "B&G" below):
   (matrix-conditional disparities). Its axes are not rotatable: the weights identify them.
 * :func:`stress_curve`, :func:`choose_dimensionality` — Figs. 3 and 5 and the elbow rule.
 
-Every fit runs from the Torgerson start plus ``n_random`` seeded random starts and keeps the
-lowest stress (local minima are common in non-metric MDS). Missing cells are pairs with
-weight 0 (see :mod:`.proximity`).
+Every fit runs from the Torgerson start plus seeded random starts and keeps the lowest stress.
+Local minima are common in non-metric MDS, in one dimension and below the data's own
+dimensionality (a 2-D fit of 3-D data), so by default (``n_random=None``) the random starts
+continue, in batches of :data:`AUTO_STARTS`, until the lowest stress has been reached from two
+starts or two batches have not lowered it (:data:`STALLED`), up to :data:`MAX_STARTS`; a 1-D fit runs :data:`MAX_STARTS_1D` starts, most of them
+projections of the data's Torgerson configuration (:func:`_projections`). ``start_stress``
+lists every start's result. An integer ``n_random`` runs exactly that many random starts. Iterations stop on a relative
+decrease of stress (:func:`_converged`). Missing cells are pairs with weight 0 (see :mod:`.proximity`).
 """
 
 from __future__ import annotations
@@ -37,6 +42,19 @@ from .proximity import ArrayLike, Proximities, ProximityError, check_proximities
 from .stress import Stress, distances, stress_of
 
 TIES = ("primary", "secondary")
+#: The automatic rule's batch of random starts (n_random=None), and the most random starts it runs.
+AUTO_STARTS = 4
+MAX_STARTS = 32
+MAX_STARTS_1D = 64  # one dimension: a local minimum per order of the points along the line
+#: Two starts whose stress differ by less than this (relative), or 100 × the stop rule's eps
+#: where that is larger, reached the same minimum.
+SAME_MINIMUM = 1e-5
+#: ... or two batches of random starts have not lowered the best stress by this much (relative):
+#: above the data's dimensionality the minima differ by a few tenths of a per cent and rarely repeat.
+STALLED = 1e-3
+#: Normalised raw stress (stress-1 about 1e-6) below which a fit counts as exact: nothing lower is
+#: worth finding, and a fit with more dimensions than the data have converges slowly towards 0.
+PERFECT_FIT = 1e-12
 
 
 def _isotonic(y: np.ndarray, w: np.ndarray) -> np.ndarray:
@@ -246,9 +264,65 @@ def _check_start(x: ArrayLike, n: int, ndim: int) -> np.ndarray:
     return x
 
 
+def _converged(old: Optional[float], new: float, eps: float) -> bool:
+    """The stop rule of every majorization loop here: stress fell by less than ``eps`` of its
+    value in one iteration. Relative, so that a near-perfect fit (stress 1e-6) converges as far
+    as a poor one: an absolute 1e-10 stopped such fits 0.4–1 % above the minimum that
+    scikit-learn reaches (B&G §8.6 state the rule either way; R's smacof uses an absolute 1e-6).
+    A fit below PERFECT_FIT is exact and stops (its stress falls towards 0 at a constant rate)."""
+    return old is not None and (new <= PERFECT_FIT or old - new < eps * old)
+
+
 def _random_start(rng: np.random.Generator, n: int, ndim: int, scale: float) -> np.ndarray:
     x = rng.standard_normal((n, ndim))
     return x * scale / max(float(np.sqrt(np.mean(np.sum((x - x.mean(0)) ** 2, axis=1)))), 1e-300)
+
+
+def _projections(d: np.ndarray, w: np.ndarray, count: int) -> List[np.ndarray]:
+    """One-dimensional starts: the Torgerson configuration in up to 3 dimensions projected on
+    ``count`` directions spread over a half circle or hemisphere (Fibonacci lattice). A 1-D fit
+    has a local minimum for every order of the points along the line; the orders of the data's
+    own projections are likelier to be near the best one than random orders."""
+    q = min(3, d.shape[0] - 1)
+    z = _torgerson(d, w, q)
+    i = np.arange(count) + 0.5
+    if q == 1:
+        return [z]
+    if q == 2:
+        t = np.pi * i / count
+        dirs = np.column_stack([np.cos(t), np.sin(t)])
+    else:
+        polar, azimuth = np.arccos(1.0 - i / count), np.pi * (1.0 + 5.0**0.5) * i
+        dirs = np.column_stack([np.cos(azimuth) * np.sin(polar), np.sin(azimuth) * np.sin(polar), np.cos(polar)])
+    return [(z @ u)[:, None] for u in dirs]
+
+
+def _multistart(fit, fixed: Sequence[np.ndarray], random_start, n_random: Optional[int], ndim: int, stress,
+                projections, eps: float) -> list:
+    """The fits from the ``fixed`` starts and from random ones: ``n_random`` of them, or with
+    None the automatic rule (module doc): in 1-D AUTO_STARTS random starts and the rest of
+    MAX_STARTS_1D from ``projections(count)``; otherwise batches of AUTO_STARTS until the lowest
+    ``stress`` (normalised raw stress) has been reached from two starts, or two batches have not
+    lowered it by STALLED, or MAX_STARTS. An exact fit (below PERFECT_FIT) ends the search."""
+    if n_random is not None and (int(n_random) != n_random or n_random < 0):
+        raise ValueError(f"n_random must be None (automatic) or an integer ≥ 0; got {n_random!r}")
+    fits = [fit(x) for x in fixed]
+    if n_random is not None:
+        return fits + [fit(random_start()) for _ in range(int(n_random))]
+    if ndim == 1:
+        fits += [fit(x) for x in projections(MAX_STARTS_1D - AUTO_STARTS - len(fixed))]
+        return fits + [fit(random_start()) for _ in range(AUTO_STARTS)]
+    done, best = 0, [min(stress(f) for f in fits)]  # the lowest stress after each batch
+    while done < MAX_STARTS:
+        values = np.array([stress(f) for f in fits])
+        same = values <= values.min() * (1 + max(SAME_MINIMUM, 100 * eps))
+        stalled = len(best) > 2 and best[-1] > best[-3] * (1 - STALLED)
+        if values.min() <= PERFECT_FIT or (done and np.sum(same) >= 2) or stalled:
+            break
+        fits += [fit(random_start()) for _ in range(AUTO_STARTS)]
+        done += AUTO_STARTS
+        best.append(min(stress(f) for f in fits))
+    return fits
 
 
 def _smacof_once(d: np.ndarray, w: np.ndarray, x: np.ndarray, metric: bool, ties: str,
@@ -265,7 +339,7 @@ def _smacof_once(d: np.ndarray, w: np.ndarray, x: np.ndarray, metric: bool, ties
         else:
             disp = disp_fn.initial() if it == 1 else disp_fn(dist)
         s = stress_of(disp, dist, w).normalized
-        if old is not None and old - s < eps:
+        if _converged(old, s, eps):
             converged = True
             break
         old = s
@@ -279,32 +353,37 @@ def _smacof_once(d: np.ndarray, w: np.ndarray, x: np.ndarray, metric: bool, ties
 
 
 def smacof(delta: ArrayLike, ndim: int = 2, *, weights: Optional[ArrayLike] = None, metric: bool = True,
-           ties: str = "primary", init: Optional[ArrayLike] = None, n_random: int = 4, seed: int = 0,
-           max_iter: int = 3000, eps: float = 1e-10, starts: Sequence[ArrayLike] = ()) -> MDSResult:
+           ties: str = "primary", init: Optional[ArrayLike] = None, n_random: Optional[int] = None, seed: int = 0,
+           max_iter: int = 3000, eps: float = 1e-8, starts: Sequence[ArrayLike] = ()) -> MDSResult:
     """SMACOF on one proximity matrix (B&G ch. 8; non-metric: ch. 9).
 
-    ``init`` (n, ndim) runs one fit from that configuration; otherwise the Torgerson start and
-    ``n_random`` random starts (``seed``) and any further ``starts`` are run and the lowest
-    stress-1 kept. Iterations stop when normalised raw stress decreases by less than ``eps`` in
-    one step, or at ``max_iter``.
+    ``init`` (n, ndim) runs one fit from that configuration; otherwise the Torgerson start, any
+    further ``starts`` and random starts (``seed``; ``n_random`` of them, or by the automatic
+    rule of the module doc when None) are run and the lowest stress-1 kept; ``start_stress``
+    has one entry per start. Iterations stop when normalised raw stress decreases by less than
+    ``eps`` of its value in one step, or at ``max_iter``.
     """
     p = check_proximities(delta, weights)
     if p.n_subjects != 1:
         raise ProximityError("smacof takes one proximity matrix; use weighted_euclidean_mds for several subjects")
     _check_fit_args(p, ndim, max_iter, eps)
     d, w = p.delta[0], p.weights[0]
+
+    def fit(x: np.ndarray) -> MDSResult:
+        return _smacof_once(d, w, x, metric, ties, max_iter, eps)
+
     if init is not None:
         x0 = np.array(init, dtype=np.float64)
         if x0.shape != (p.n_stimuli, ndim) or not np.all(np.isfinite(x0)):
             raise ValueError(f"init must be a finite ({p.n_stimuli}, {ndim}) array; got shape {x0.shape}")
-        tried = [x0]
+        fits = [fit(x0)]
     else:
         x0 = _torgerson(d, w, ndim)
         scale = float(np.sqrt(np.mean(np.sum((x0 - x0.mean(0)) ** 2, axis=1))))
         rng = np.random.default_rng(seed)
-        tried = [x0] + [_random_start(rng, p.n_stimuli, ndim, scale) for _ in range(n_random)]
-        tried += [_check_start(x, p.n_stimuli, ndim) for x in starts]
-    fits = [_smacof_once(d, w, x, metric, ties, max_iter, eps) for x in tried]
+        fixed = [x0] + [_check_start(x, p.n_stimuli, ndim) for x in starts]
+        fits = _multistart(fit, fixed, lambda: _random_start(rng, p.n_stimuli, ndim, scale), n_random, ndim,
+                           lambda f: f.stress.normalized, lambda count: _projections(d, w, count), eps)
     best = min(fits, key=lambda f: f.stress.stress1)
     return MDSResult(config=best.config, disparities=best.disparities, stress=best.stress, n_iter=best.n_iter,
                      converged=best.converged, start_stress=tuple(f.stress.stress1 for f in fits), metric=metric)
@@ -355,7 +434,7 @@ def _wemds_once(p: Proximities, z: np.ndarray, metric: bool, ties: str, max_iter
         raw = float(np.sum(p.weights * (disp - dist) ** 2)) / 2.0
         den = float(np.sum(p.weights * disp**2)) / 2.0
         s = raw / den if den > 0 else 0.0
-        if old is not None and old - s < eps:
+        if _converged(old, s, eps):
             converged = True
             break
         old = s
@@ -410,31 +489,36 @@ def _mean_matrix(p: Proximities) -> Tuple[np.ndarray, np.ndarray]:
 
 def weighted_euclidean_mds(delta: ArrayLike, ndim: int = 2, *, weights: Optional[ArrayLike] = None,
                            metric: bool = False, ties: str = "primary", init: Optional[ArrayLike] = None,
-                           n_random: int = 4, seed: int = 0, max_iter: int = 2000, eps: float = 1e-9,
+                           n_random: Optional[int] = None, seed: int = 0, max_iter: int = 2000, eps: float = 1e-7,
                            starts: Sequence[ArrayLike] = ()) -> WeightedEuclideanResult:
     """The weighted Euclidean model (PROXSCAL's, the paper's Experiment 1) on K proximity
     matrices (K, n, n): common space Z and subject weights W_k with X_k = Z W_k.
 
     ``metric=False`` (the paper's choice) fits each subject's own monotone transformation;
     ``init`` is a common-space start (n, ndim); otherwise the Torgerson start of the averaged
-    matrices plus ``n_random`` random starts and any further common-space ``starts``, the lowest
-    total stress kept.
+    matrices, any further common-space ``starts`` and random starts (``n_random``, or the
+    automatic rule of the module doc when None), the lowest total stress kept. ``eps``: as
+    :func:`smacof`'s.
     """
     p = check_proximities(delta, weights)
     _check_fit_args(p, ndim, max_iter, eps)
+
+    def fit(z: np.ndarray) -> WeightedEuclideanResult:
+        return _wemds_once(p, z, metric, ties, max_iter, eps)
+
     if init is not None:
         z0 = np.array(init, dtype=np.float64)
         if z0.shape != (p.n_stimuli, ndim) or not np.all(np.isfinite(z0)):
             raise ValueError(f"init must be a finite ({p.n_stimuli}, {ndim}) array; got shape {z0.shape}")
-        tried = [z0]
+        fits = [fit(z0)]
     else:
         mean, mw = _mean_matrix(p)
         z0 = _torgerson(mean, mw, ndim)
         scale = float(np.sqrt(np.mean(np.sum(z0**2, axis=1))))
         rng = np.random.default_rng(seed)
-        tried = [z0] + [_random_start(rng, p.n_stimuli, ndim, scale) for _ in range(n_random)]
-        tried += [_check_start(z, p.n_stimuli, ndim) for z in starts]
-    fits = [_wemds_once(p, z, metric, ties, max_iter, eps) for z in tried]
+        fixed = [z0] + [_check_start(z, p.n_stimuli, ndim) for z in starts]
+        fits = _multistart(fit, fixed, lambda: _random_start(rng, p.n_stimuli, ndim, scale), n_random, ndim,
+                           lambda f: f.stress.normalized, lambda count: _projections(mean, mw, count), eps)
     best = min(fits, key=lambda f: f.stress.normalized)
     return WeightedEuclideanResult(**{**best.__dict__, "start_stress": tuple(f.stress.normalized for f in fits)})
 

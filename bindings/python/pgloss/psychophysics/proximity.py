@@ -170,6 +170,21 @@ def from_upper(v: np.ndarray, n: int) -> np.ndarray:
 _MISSING = {"", "na", "nan", "n/a"}
 
 
+def read_csv_rows(path: Union[str, Path]) -> List[List[str]]:
+    """The rows of a UTF-8 CSV file; a file that cannot be read or is not UTF-8 (or CSV) raises
+    :class:`ProximityError` naming the file and the reason, not a traceback."""
+    try:
+        with Path(path).open(newline="", encoding="utf-8-sig") as f:
+            return list(csv.reader(f))
+    except OSError as e:
+        raise ProximityError(f"{path}: cannot read it ({e.strerror or e})") from None
+    except UnicodeDecodeError as e:
+        raise ProximityError(f"{path}: not UTF-8 text (byte 0x{e.object[e.start]:02x} at offset {e.start}); "
+                             "save the file as UTF-8 CSV") from None
+    except csv.Error as e:
+        raise ProximityError(f"{path}: not a CSV file ({e})") from None
+
+
 def read_csv(path: Union[str, Path]) -> Tuple[np.ndarray, np.ndarray, List[str]]:
     """Reads one proximity matrix from CSV: a header row of stimulus names (the first cell may
     be empty or a label) and one row per stimulus, its name first. A lower-triangular matrix
@@ -180,8 +195,7 @@ def read_csv(path: Union[str, Path]) -> Tuple[np.ndarray, np.ndarray, List[str]]
     Structural problems raise :class:`ProximityError` naming the file and row.
     """
     path = Path(path)
-    with path.open(newline="", encoding="utf-8") as f:
-        rows = [r for r in csv.reader(f) if r and any(c.strip() for c in r)]
+    rows = [r for r in read_csv_rows(path) if r and any(c.strip() for c in r)]
     if len(rows) < 2:
         raise ProximityError(f"{path}: needs a header row and at least one data row")
     names = [c.strip() for c in rows[0][1:]]

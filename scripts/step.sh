@@ -1,0 +1,41 @@
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
+# Sourced by the scripts: `step LABEL COMMAND…` runs a long, chatty command (a build, a pip or
+# apt install) with its output in a log instead of on the terminal, prints one progress line
+# every 10 s while it runs (elapsed time and its latest line, e.g. Ninja's [n/N]), and when it
+# fails prints the end of that log, so that a compile error is never a silent exit status.
+# Returns the command's status. PGLOSS_STEP_INTERVAL sets the seconds between progress lines.
+
+_pgloss_progress() {  # reads the command's output; a line of progress every $PGLOSS_STEP_INTERVAL s
+  local label=$1 start=$SECONDS every=${PGLOSS_STEP_INTERVAL:-10} line last="" st
+  local next=$every
+  while :; do
+    if IFS= read -r -t 1 line; then
+      line=${line//$'\r'/}
+      [[ -n ${line// /} ]] && last=$line
+    else
+      st=$?
+      ((st > 128)) || break  # end of the output (a timeout is > 128)
+    fi
+    if ((SECONDS - start >= next)); then
+      [[ $last =~ \[[0-9]+/[0-9]+\] ]] && last="${BASH_REMATCH[0]}${last#*"${BASH_REMATCH[0]}"}"
+      echo "   … $label: $((SECONDS - start)) s${last:+ — ${last:0:110}}" >&2
+      next=$((SECONDS - start + every))
+    fi
+  done
+}
+
+step() {
+  local - label=$1 log rc
+  shift
+  set +e +o pipefail  # (local -: restored on return) the status is taken from PIPESTATUS
+  log=$(mktemp "${TMPDIR:-/tmp}/pgloss-step.XXXXXX")
+  "$@" 2>&1 | tee "$log" | _pgloss_progress "$label"
+  rc=${PIPESTATUS[0]}
+  if ((rc != 0)); then
+    echo "== $label FAILED (exit status $rc); the end of its output:" >&2
+    tail -n 80 "$log" >&2
+  fi
+  rm -f "$log"
+  return "$rc"
+}
