@@ -10,8 +10,10 @@ Commands (``python -m pgloss COMMAND --help`` for each):
 * ``figures OUTDIR`` — the paper's Figs. 9, 10 and 11, computed by the library (below);
 * ``mds …`` — the paper's MDS analysis (§3) on proximity matrices in CSV
   (:mod:`pgloss.psychophysics.cli`);
-* ``experiment stimuli|serve|export …`` — run the paper's experiments in a browser
-  (:mod:`pgloss.experiment.cli`).
+* ``magnitude …`` — the paper's magnitude-estimation analysis (Figs. 7, 8, hypotheses ranked)
+  (:mod:`pgloss.psychophysics.magnitude_cli`);
+* ``experiment stimuli|serve|export|export-jspsych|import …`` — run the paper's experiments in a
+  browser, locally or as a jsPsych/JATOS study (:mod:`pgloss.experiment.cli`).
 
 A command is one entry of :data:`COMMANDS`: its name, help line, a function that adds its
 arguments to an ``argparse`` parser and one that runs it (imported only when it is used).
@@ -198,6 +200,18 @@ def _mds_run(args: argparse.Namespace) -> int:
     return cli.run(args)
 
 
+def _magnitude_arguments(p: argparse.ArgumentParser) -> None:
+    from .psychophysics import magnitude_cli
+
+    magnitude_cli.add_arguments(p)
+
+
+def _magnitude_run(args: argparse.Namespace) -> int:
+    from .psychophysics import magnitude_cli
+
+    return magnitude_cli.run(args)
+
+
 def _experiment_arguments(p: argparse.ArgumentParser) -> None:
     from .experiment import cli
 
@@ -238,8 +252,12 @@ COMMANDS: Tuple[Command, ...] = tuple(_tool(n) for n in (
     Command("mds", "MDS analysis of proximity matrices (CSV): stress curve, dimensionality, weighted Euclidean "
             "non-metric fit, confirmatory MDS; --example cities reproduces Figs. 2 and 3", _mds_arguments, _mds_run,
             "The paper's §3 analysis on proximity matrices, one CSV per subject (see pgloss.psychophysics.cli)."),
+    Command("magnitude", "magnitude-estimation analysis of a ratings CSV: hypotheses ranked by r², Figs. 7 and 8",
+            _magnitude_arguments, _magnitude_run,
+            "The paper's §3.3.4 analysis (see pgloss.psychophysics.magnitude_cli)."),
     Command("experiment", "run the paper's experiments: render stimuli (stimuli), the browser experiment "
-            "(serve), proximity matrices and magnitude table (export)", _experiment_arguments, _experiment_run,
+            "(serve), a jsPsych/JATOS study (export-jspsych, import), proximity matrices and magnitude table "
+            "(export)", _experiment_arguments, _experiment_run,
             "Pairwise gloss differences (§3.2.3) and magnitude estimation (§3.3.3) in a browser, stored in "
             "SQLite (see pgloss.experiment)."),
 )

@@ -8,7 +8,10 @@
 * ``stimuli.csv`` — columns name, rho_d, rho_s, alpha, L, c, d (``mds --stimuli`` reads it);
 * ``magnitude.csv`` — the magnitude-estimation table, one row per rating: subject, trial,
   repetition, stimulus, its parameters, rating, response time;
-* ``responses.csv`` — every response as stored, with seed, sitting and timestamp (the raw log).
+* ``responses.csv`` — every response as stored, with seed, sitting and timestamp (the raw log);
+* ``screens.csv`` — each sitting's screen: size, device pixel ratio, measured viewing distance and
+  pixels per mm (jsPsych's virtual chinrest), the images' size in device pixels and the visual
+  angle reached, the screen check (matched grey → gamma, darkest square seen), browser.
 """
 
 from __future__ import annotations
@@ -45,7 +48,7 @@ def export(store: Store, manifest: dict, outdir: Path) -> List[Path]:
     ids = list(stim)
     # One read transaction for everything written below, so that the files agree with each
     # other while subjects keep answering.
-    seeds, responses = store.snapshot()
+    seeds, responses, screens = store.snapshot()
     written: List[Path] = []
 
     path = outdir / "stimuli.csv"
@@ -83,5 +86,17 @@ def export(store: Store, manifest: dict, outdir: Path) -> List[Path]:
             w.writerow([r["subject"], r["procedure"], seeds[(r["subject"], r["procedure"])], r["trial"],
                         r["stimuli"].replace(",", " "), r["rating"], f"{r['rt_ms']:.0f}", r["received_at"],
                         r["sitting"]])
+    written.append(path)
+
+    path = outdir / "screens.csv"
+    first = ["subject", "procedure", "sitting", "screen_width", "screen_height", "window_width", "window_height", "dpr",
+             "px_per_mm", "view_dist_mm", "image_device_width", "image_device_height", "visual_angle_deg",
+             "visual_angle_stated", "image_size_limited", "gamma_code", "gamma_estimate", "display_gamma_stated",
+             "black_code", "user_agent", "recorded_at"]
+    keys = first + sorted({k for s in screens for k in s} - set(first))
+    with path.open("w", newline="", encoding="utf-8") as f:
+        w = csv.DictWriter(f, keys, extrasaction="ignore")
+        w.writeheader()
+        w.writerows(screens)
     written.append(path)
     return written

@@ -8,8 +8,11 @@ framework, template engine or async I/O; it adds no dependency for the researche
 or audit, and every request passes through the validation below, in one place.
 
 Endpoints (subject side): ``GET /`` (the page), ``/static/…``, ``/stimuli/ID`` (a manifest image),
-``GET /api/config``, ``POST /api/session`` ``{"subject", "procedure"}`` → seed, trials, practice,
-trials done, sitting id; ``POST /api/response`` ``{"sitting", "subject", "procedure", "trial",
+``GET /api/config`` (stimuli, sizes, the display's gamma, texts, inter-trial interval, breaks),
+``POST /api/session`` ``{"subject", "procedure"}`` → seed, trials, practice, trials done, sitting id;
+``POST /api/screen`` ``{"sitting", "subject", "procedure", "screen"}`` (the sitting's screen: size,
+DPR, image size in device pixels, the screen check; an object of ≤ 40 numbers, strings, booleans);
+``POST /api/response`` ``{"sitting", "subject", "procedure", "trial",
 "stimuli", "rating", "rt_ms"}`` → committed before the 200. Experimenter side (``?token=`` printed
 at start): ``/experimenter``, ``/api/progress``, ``/export/{responses,magnitude,stimuli}.csv``,
 ``/export/pairs/SUBJECT.csv``.
@@ -76,7 +79,8 @@ def _require(obj: Dict[str, Any], schema: Dict[str, type]) -> None:
 class Experiment:
     """The state shared by the handler threads: manifest, store, experimenter token."""
 
-    def __init__(self, manifest: dict, store: Store, token: str, display: Tuple[int, int]):
+    def __init__(self, manifest: dict, store: Store, token: str, display: Tuple[int, int],
+                 texts: Optional[Dict[str, str]] = None, iti_ms: int = 500, break_every: int = 60):
         self.manifest = manifest
         self.store = store
         self.token = token
@@ -91,6 +95,8 @@ class Experiment:
                 raise SpecError(f"{self.folder / s['file']}: changed since the manifest was written (SHA-256 differs)")
             self.files[s["id"]] = data
         self.display = display
+        self.texts = texts or {}
+        self.iti_ms, self.break_every = iti_ms, break_every
 
     @functools.lru_cache(maxsize=256)
     def trials(self, procedure: str, seed: int) -> List[Tuple[str, ...]]:
@@ -108,12 +114,27 @@ class Experiment:
                 "done": s["done"], "trials": self.trials(procedure, s["seed"]),
                 "practice": design.practice(self.ids, procedure, s["seed"])}
 
-    def response(self, body: Dict[str, Any]) -> Dict[str, Any]:
-        _require(body, {"sitting": int, "subject": str, "procedure": str, "trial": int, "stimuli": list,
-                        "rating": int, "rt_ms": (int, float)})
+    def _who(self, body: Dict[str, Any]) -> Tuple[str, str]:
         who = self.store.sitting(body["sitting"]) if 0 < body["sitting"] < 1 << 62 else None
         if who is None or who != (body["subject"], body["procedure"]):
             raise BadRequest(404, "sitting: no such sitting for this subject and procedure")
+        return who
+
+    def screen(self, body: Dict[str, Any]) -> Dict[str, Any]:
+        _require(body, {"sitting": int, "subject": str, "procedure": str, "screen": dict})
+        who = self._who(body)
+        screen = body["screen"]
+        if len(screen) > 40 or not all(isinstance(k, str) and len(k) <= 40 and (
+                v is None or isinstance(v, (bool, str)) or (isinstance(v, (int, float)) and abs(v) < 1e9))
+                for k, v in screen.items()):
+            raise BadRequest(400, "screen: want an object of at most 40 numbers, strings, booleans or nulls")
+        self.store.add_screen(body["sitting"], who[0], who[1], screen)
+        return {"stored": True}
+
+    def response(self, body: Dict[str, Any]) -> Dict[str, Any]:
+        _require(body, {"sitting": int, "subject": str, "procedure": str, "trial": int, "stimuli": list,
+                        "rating": int, "rt_ms": (int, float)})
+        who = self._who(body)
         seed = self.store.seed(*who)
         assert seed is not None  # a sitting implies its subject row (foreign key)
         trials = self.trials(body["procedure"], seed)
@@ -241,9 +262,11 @@ class Handler(BaseHTTPRequestHandler):
             return self._send(200, ex.files[sid], "image/png", {"Cache-Control": "max-age=3600"})
         if path == "/api/config":
             r = ex.manifest["renderer"]
+            gamma = (ex.manifest.get("display") or {}).get("gamma", 2.2)
             return self._json(200, {"stimuli": ex.ids, "width": ex.display[0], "height": ex.display[1],
-                                    "image_width": r["width"], "image_height": r["height"],
-                                    "procedures": list(design.PROCEDURES)})
+                                    "image_width": r["width"], "image_height": r["height"], "gamma": gamma,
+                                    "procedures": list(design.PROCEDURES), "texts": ex.texts,
+                                    "iti_ms": ex.iti_ms, "break_every": ex.break_every})
         if path == "/api/progress" or path.startswith("/export/"):
             if not self._token_ok(query):
                 raise BadRequest(403, "needs the experimenter's ?token=")
@@ -263,6 +286,8 @@ class Handler(BaseHTTPRequestHandler):
             return self._json(200, ex.session(body, self.headers.get("User-Agent", "")))
         if path == "/api/response":
             return self._json(200, ex.response(self._body()))
+        if path == "/api/screen":
+            return self._json(200, ex.screen(self._body()))
         raise BadRequest(404, f"no such endpoint {path}")
 
     def _static(self, name: str) -> None:
@@ -301,14 +326,20 @@ class _Server(ThreadingHTTPServer):
 
 
 def make_server(manifest: dict, db: Path, *, host: str = "127.0.0.1", port: int = 8000, token: Optional[str] = None,
-                display: Optional[Tuple[int, int]] = None, quiet: bool = False) -> Tuple[ThreadingHTTPServer, str]:
+                display: Optional[Tuple[int, int]] = None, quiet: bool = False, texts: Optional[Path] = None,
+                iti_ms: int = 500, break_every: int = 60) -> Tuple[ThreadingHTTPServer, str]:
     """The server (not yet serving) and the experimenter's token."""
+    from .jspsych import load_texts
     from .manifest import sha256
+
+    if not (0 <= iti_ms <= 10000) or break_every < 0:
+        raise SpecError("want 0 ≤ --iti-ms ≤ 10000 and --break-every ≥ 0")
 
     store = Store(db, sha256(Path(manifest["path"])), [s["id"] for s in manifest["stimuli"]])
     store.check_writable()  # refused now, not with an error on every response
     r = manifest["renderer"]
-    ex = Experiment(manifest, store, token or secrets.token_urlsafe(16), display or (r["width"], r["height"]))
+    ex = Experiment(manifest, store, token or secrets.token_urlsafe(16), display or (r["width"], r["height"]),
+                    load_texts(texts), iti_ms, break_every)
     server = _Server((host, port), Handler)
     real_port = server.server_address[1]
     loopback = host in ("127.0.0.1", "localhost", "::1")

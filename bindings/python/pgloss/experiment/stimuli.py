@@ -13,9 +13,12 @@ A SPEC is one of
 
 Each paint replaces the ``paint`` material of the scene (default examples/tracer/scenes/
 stimulus.scene, the Fig. 4 environment) and is rendered with ``pgloss-tracer render SCENE --size
-WxH --spp N --out PREFIX --quiet``. The manifest (``manifest.json`` next to the PNGs) records for
-each image its physical and perceptual parameters, file name and SHA-256, and the renderer's
-settings; the server refuses images whose hash no longer matches.
+WxH --spp N --out PREFIX --quiet``. Its linear image (PREFIX.exr, kept) is tone-mapped with the
+scene's sigmoid and encoded for the stated display (:mod:`.display`; default the paper's,
+0.7–108 cd/m², gamma 2.35) into PREFIX.png. The manifest (``manifest.json`` next to the PNGs)
+records for each image its physical and perceptual parameters, file name and SHA-256, the
+renderer's settings, the tone map and the display; the server refuses images whose hash no longer
+matches.
 """
 
 from __future__ import annotations
@@ -33,9 +36,10 @@ import numpy as np
 
 import pgloss
 
+from .display import Display, encode, read_exr, scene_tonemap, write_png
 from .manifest import SpecError, sha256
 
-MANIFEST_VERSION = 1
+MANIFEST_VERSION = 2  # 2: the display and tone map recorded, PNGs encoded for the display
 #: Experiment 1's levels (§3.2.3.1).
 FIG4 = {"rho_d": [0.03, 0.193, 0.767], "rho_s": [0.033, 0.066, 0.099], "alpha": [0.04, 0.07, 0.10]}
 PHYSICAL = ("rho_d", "rho_s", "alpha")
@@ -165,7 +169,7 @@ def find_scene(exe: str) -> Path:
 
 def render(spec: Optional[str], outdir: Path, *, tracer: Optional[str] = None, scene: Optional[Path] = None,
            size: Sequence[int] = (320, 240), spp: int = 64, seed: int = 1, threads: Optional[int] = None,
-           log=print) -> Path:
+           display: Optional[Display] = None, log=print) -> Path:
     """Renders the stimulus set of SPEC into outdir; returns the manifest's path."""
     exe = find_tracer(tracer)
     scene = find_scene(exe) if scene is None else Path(scene)  # default: the Fig. 4 environment
@@ -180,6 +184,8 @@ def render(spec: Optional[str], outdir: Path, *, tracer: Optional[str] = None, s
     if not (8 <= w <= 4096 and 8 <= h <= 4096) or not (1 <= spp <= 1 << 20):
         raise SpecError("--size wants 8..4096 per side and --spp 1..1048576")
     rows = paints(parse_spec(spec))
+    display = display or Display()
+    tonemap = scene_tonemap(text)
     outdir.mkdir(parents=True, exist_ok=True)
     scenes = outdir / "scenes"
     scenes.mkdir(exist_ok=True)
@@ -195,8 +201,10 @@ def render(spec: Optional[str], outdir: Path, *, tracer: Optional[str] = None, s
             cmd += ["--threads", str(threads)]
         run = subprocess.run(cmd, capture_output=True, text=True)
         png = outdir / f"{sid}.png"
-        if run.returncode != 0 or not png.is_file():
+        exr = outdir / f"{sid}.exr"
+        if run.returncode != 0 or not exr.is_file():
             raise SpecError(f"pgloss-tracer failed on {sid} (exit {run.returncode}): {run.stderr.strip()[-500:]}")
+        write_png(png, encode(read_exr(exr), tonemap, display))  # replaces the tracer's sRGB preview
         stimuli.append({"id": sid, "file": png.name, "sha256": sha256(png), **{k: round(v, 9) for k, v in p.items()}})
         log(f"{sid}: rho_d={p['rho_d']:.4g} rho_s={p['rho_s']:.4g} alpha={p['alpha']:.4g}  "
             f"L={p['L']:.2f} c={p['c']:.4f} d={p['d']:.4f}")
@@ -205,6 +213,9 @@ def render(spec: Optional[str], outdir: Path, *, tracer: Optional[str] = None, s
         "spec": spec or "fig4",
         "renderer": {"program": "pgloss-tracer", "scene": scene.name, "scene_sha256": sha256(scene), "width": w, "height": h, "spp": spp,
                      "seed": seed, "pgloss": pgloss.__version__},
+        "tonemap": {"operator": "rational sigmoid Y / (1 + (Y/limit)^sharpness)^(1/sharpness) of exposure * Y",
+                    **tonemap},
+        "display": display.record(),
         "stimuli": stimuli,
     }
     path = outdir / "manifest.json"

@@ -43,6 +43,10 @@ CREATE TABLE IF NOT EXISTS responses (
   sitting INTEGER NOT NULL REFERENCES sittings (id),
   UNIQUE (subject, procedure, trial),
   FOREIGN KEY (subject, procedure) REFERENCES subjects (subject, procedure));
+CREATE TABLE IF NOT EXISTS screens (  -- each sitting's screen: size, DPR, distance, the screen check
+  sitting INTEGER NOT NULL REFERENCES sittings (id), subject TEXT NOT NULL, procedure TEXT NOT NULL,
+  screen TEXT NOT NULL,               -- JSON object
+  recorded_at TEXT NOT NULL);
 """
 
 
@@ -129,6 +133,68 @@ class Store:
                                              (subject, procedure))]
         return {"seed": seed, "sitting": sitting, "done": done}
 
+    def add_screen(self, sitting: int, subject: str, procedure: str, screen: Dict) -> None:
+        """Records a sitting's screen (a JSON object)."""
+        with self._write() as db:
+            db.execute("INSERT INTO screens VALUES (?, ?, ?, ?, ?)",
+                       (sitting, subject, procedure, json.dumps(screen, sort_keys=True), utc_now()))
+
+    def screens(self) -> List[Dict]:
+        with self._connect() as db:
+            return self._screens(db)
+
+    @staticmethod
+    def _screens(db: sqlite3.Connection) -> List[Dict]:
+        rows = db.execute("SELECT sitting, subject, procedure, screen, recorded_at FROM screens "
+                          "ORDER BY subject, procedure, sitting").fetchall()
+        return [{"sitting": r[0], "subject": r[1], "procedure": r[2], **json.loads(r[3]), "recorded_at": r[4]}
+                for r in rows]
+
+    def import_sittings(self, sittings: Sequence[Dict]) -> Dict[str, int]:
+        """Stores imported sittings in one transaction: all of them or, on any conflict, nothing.
+
+        Each sitting: subject, procedure, seed, client (where it came from), started_at, screens
+        (list of JSON objects) and responses (trial, stimuli, rating, rt_ms, received_at). A subject
+        already in the store must have the same seed; a trial already answered must have the same
+        answer (then it is not stored again). Raises Conflict naming the first disagreement."""
+        counts = {"sittings": 0, "responses": 0, "already": 0}
+        with self._write() as db:
+            for s in sittings:
+                who = (s["subject"], s["procedure"])
+                row = db.execute("SELECT seed FROM subjects WHERE subject=? AND procedure=?", who).fetchone()
+                if row is None:
+                    db.execute("INSERT INTO subjects VALUES (?, ?, ?, ?)", (*who, int(s["seed"]), utc_now()))
+                elif int(row[0]) != int(s["seed"]):
+                    raise Conflict(f"subject {who[0]} ({who[1]}) is in {self.path} with seed {row[0]}, and "
+                                   f"{s['client']} has seed {s['seed']}: another run under the same subject id")
+                new = []
+                for r in s["responses"]:
+                    old = db.execute("SELECT stimuli, rating FROM responses WHERE subject=? AND procedure=? AND trial=?",
+                                     (*who, r["trial"])).fetchone()
+                    shown = ",".join(r["stimuli"])
+                    if old is None:
+                        new.append(r)
+                    elif old != (shown, r["rating"]):
+                        raise Conflict(f"trial {r['trial']} of {who[0]}/{who[1]} is stored with rating {old[1]}; "
+                                       f"{s['client']} says {r['rating']}")
+                    else:
+                        counts["already"] += 1
+                if not new and not s["screens"]:
+                    continue
+                cur = db.execute("INSERT INTO sittings (subject, procedure, started_at, client) VALUES (?, ?, ?, ?)",
+                                 (*who, s["started_at"], s["client"][:200]))
+                sitting = int(cur.lastrowid)
+                counts["sittings"] += 1
+                for r in new:
+                    db.execute("INSERT INTO responses VALUES (?, ?, ?, ?, ?, ?, ?, ?)",
+                               (*who, r["trial"], ",".join(r["stimuli"]), r["rating"], float(r["rt_ms"]),
+                                r["received_at"], sitting))
+                counts["responses"] += len(new)
+                for screen in s["screens"]:
+                    db.execute("INSERT INTO screens VALUES (?, ?, ?, ?, ?)",
+                               (sitting, *who, json.dumps(screen, sort_keys=True), utc_now()))
+        return counts
+
     def sitting(self, sitting: int) -> Optional[tuple]:
         with self._connect() as db:
             return db.execute("SELECT subject, procedure FROM sittings WHERE id=?", (sitting,)).fetchone()
@@ -181,8 +247,8 @@ class Store:
         keys = ("subject", "procedure", "trial", "stimuli", "rating", "rt_ms", "received_at", "sitting")
         return [dict(zip(keys, r)) for r in rows]
 
-    def snapshot(self) -> Tuple[Dict[Tuple[str, str], int], List[Dict]]:
-        """Every subject's seed and every response, read in one transaction: what the export
+    def snapshot(self) -> Tuple[Dict[Tuple[str, str], int], List[Dict], List[Dict]]:
+        """Every subject's seed, every response and screen, read in one transaction: what the export
         writes is one consistent state, however many subjects start or answer meanwhile (read
         apart, a subject who started between the two reads had responses but no seed)."""
         with self._connect() as db:
@@ -190,6 +256,7 @@ class Store:
             try:
                 seeds = {(s, p): int(seed) for s, p, seed in db.execute("SELECT subject, procedure, seed FROM subjects")}
                 rows = self._responses(db)
+                screens = self._screens(db)
             finally:
                 db.execute("COMMIT")
-        return seeds, rows
+        return seeds, rows, screens
