@@ -27,33 +27,21 @@ static int to_physical(pgloss_cli *cli, int argc, char **argv)
     return pgloss_cli_report(cli, pgloss_check_perceptual(&q));
 }
 
-static int to_perceptual_of(pgloss_cli *cli, const pgloss_physical *p)
-{
-    pgloss_perceptual q;
-    const pgloss_status st = pgloss_perceptual_from_physical(p, &q);
-    if (st >= 0)
-        fprintf(cli->out, "L* = %.4f  a* = %.4f  b* = %.4f  c = %.6f  d = %.6f\n", q.L, q.a, q.b, q.c, q.d);
-    if (st < 0)
-        return pgloss_cli_report(cli, st);
-    return pgloss_cli_report(cli, pgloss_check_physical(p));
-}
-
+/* to-perceptual (rho_d rho_s alpha) and to-perceptual-rgb (r g b rho_s alpha). */
 static int to_perceptual(pgloss_cli *cli, int argc, char **argv)
-{
-    double v[3];
-    if (!pgloss_cli_args(cli, argc, argv, v, NULL))
-        return PGLOSS_CLI_USAGE;
-    const pgloss_physical p = {{v[0], v[0], v[0]}, v[1], v[2], v[2], PGLOSS_NORM_WARD};
-    return to_perceptual_of(cli, &p);
-}
-
-static int to_perceptual_rgb(pgloss_cli *cli, int argc, char **argv)
 {
     double v[5];
     if (!pgloss_cli_args(cli, argc, argv, v, NULL))
         return PGLOSS_CLI_USAGE;
-    const pgloss_physical p = {{v[0], v[1], v[2]}, v[3], v[4], v[4], PGLOSS_NORM_WARD};
-    return to_perceptual_of(cli, &p);
+    const int k = argc == 5 ? 2 : 0; /* where rho_s - 1 is: the last of r, g, b, or rho_d */
+    const pgloss_physical p = {{v[0], v[k / 2], v[k]}, v[k + 1], v[k + 2], v[k + 2], PGLOSS_NORM_WARD};
+    pgloss_perceptual q;
+    const pgloss_status st = pgloss_perceptual_from_physical(&p, &q);
+    if (st >= 0)
+        fprintf(cli->out, "L* = %.4f  a* = %.4f  b* = %.4f  c = %.6f  d = %.6f\n", q.L, q.a, q.b, q.c, q.d);
+    if (st < 0)
+        return pgloss_cli_report(cli, st);
+    return pgloss_cli_report(cli, pgloss_check_physical(&p));
 }
 
 static int check(pgloss_cli *cli, int argc, char **argv)
@@ -216,7 +204,7 @@ const pgloss_cli_command pgloss_cmd_to_physical = {
 const pgloss_cli_command pgloss_cmd_to_perceptual = {
     "to-perceptual", "rho_d rho_s alpha", "achromatic physical -> L*, c, d (eqs. 3, 4)", to_perceptual};
 const pgloss_cli_command pgloss_cmd_to_perceptual_rgb = {
-    "to-perceptual-rgb", "r g b rho_s alpha", "linear Rec.709 RGB physical -> L*, a*, b*, c, d", to_perceptual_rgb};
+    "to-perceptual-rgb", "r g b rho_s alpha", "linear Rec.709 RGB physical -> L*, a*, b*, c, d", to_perceptual};
 const pgloss_cli_command pgloss_cmd_check = {
     "check", "rho_d rho_s alpha [norm]", "is the paint inside the paper's model, and if not, why", check};
 const pgloss_cli_command pgloss_cmd_match = {
