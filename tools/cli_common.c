@@ -135,7 +135,6 @@ int pgloss_cli_number(pgloss_cli *cli, const char *name, const char *text, doubl
         pgloss_cli_usage_error(cli, "%s: %s %s", name, pgloss_cli_quote(text, q), why);
         return 0;
     }
-    errno = 0;
     const double x = strtod(text, NULL);
     /* ERANGE also flags subnormal results, which are accepted: only overflow, and a nonzero
      * number that rounds to 0, are out of range. */
@@ -182,9 +181,12 @@ int pgloss_cli_args(pgloss_cli *cli, int argc, char **argv, double *v, pgloss_no
     for (int k = 0; k < n; ++k)
         if (!pgloss_cli_number(cli, names[k], argv[k], &v[k]))
             return 0;
+    pgloss_normalization given = PGLOSS_NORM_WARD;
+    if (argc > n && !pgloss_cli_norm(cli, argv[n], &given))
+        return 0;
     if (norm)
-        *norm = PGLOSS_NORM_WARD;
-    return argc == n || pgloss_cli_norm(cli, argv[n], norm);
+        *norm = given;
+    return 1;
 }
 
 int pgloss_cli_report(pgloss_cli *cli, pgloss_status st)

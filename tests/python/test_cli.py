@@ -194,6 +194,14 @@ def test_write_errors_are_errors(which: str, args: List[str]) -> None:
     assert r.stderr == b"pgloss: cannot write the output: No space left on device\n"
 
 
+@pytest.mark.parametrize("which", ["c", "python"])
+@pytest.mark.parametrize("args", [["demo"], ["--help"]])
+def test_a_closed_stdout_is_a_write_error(which: str, args: List[str]) -> None:
+    r = subprocess.run([*_tool(which), *args], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, timeout=120,
+                       preexec_fn=lambda: os.close(1))
+    assert (r.returncode, r.stderr) == (3, b"pgloss: cannot write the output: Bad file descriptor\n")
+
+
 def test_help_lists_the_tools_and_the_packages_commands() -> None:
     c = _run([_c_tool(), "--help"])
     p = _run([*PY, "--help"])

@@ -35,6 +35,7 @@ luminance_from_lightness, isogloss_contour, gloss_distance); matplotlib only dra
 from __future__ import annotations
 
 import argparse
+import errno
 import os
 import subprocess
 import sys
@@ -243,17 +244,25 @@ COMMANDS: Tuple[Command, ...] = (
 WRITE_ERROR = 3
 
 
-def _write_failed(e: OSError) -> int:
-    """The C tool's message for lost output; stdout is pointed at the null device so that the
-    interpreter's own flush at exit fails no more."""
-    sys.stderr.write(f"pgloss: cannot write the output: {e.strerror or e}\n")
+def _flush_stdout(text: str = "") -> int:
+    """Writes text and flushes stdout: 0, or WRITE_ERROR after the C tool's message if the
+    output is lost (stdout then points at the null device, so that the interpreter's own
+    flush at exit fails no more)."""
     try:
-        null = os.open(os.devnull, os.O_WRONLY)
-        os.dup2(null, sys.stdout.fileno())
-        os.close(null)
-    except (OSError, ValueError, AttributeError):
-        pass
-    return WRITE_ERROR
+        if sys.stdout is None:  # started with descriptor 1 closed
+            raise OSError(errno.EBADF, os.strerror(errno.EBADF))
+        sys.stdout.write(text)
+        sys.stdout.flush()
+    except OSError as e:
+        sys.stderr.write(f"pgloss: cannot write the output: {e.strerror or e}\n")
+        try:
+            null = os.open(os.devnull, os.O_WRONLY)
+            os.dup2(null, sys.stdout.fileno())
+            os.close(null)
+        except (OSError, ValueError, AttributeError):
+            pass
+        return WRITE_ERROR
+    return 0
 
 
 def usage() -> str:
@@ -280,12 +289,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
         if not args:
             sys.stderr.write(text)
             raise SystemExit(2)
-        try:
-            sys.stdout.write(text)
-            sys.stdout.flush()
-        except OSError as e:
-            raise SystemExit(_write_failed(e)) from None
-        raise SystemExit(0)
+        raise SystemExit(_flush_stdout(text))
     command = next((c for c in COMMANDS if c.name == args[0]), None)
     if command is None:
         if argv is None:
@@ -297,11 +301,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     parser = argparse.ArgumentParser(prog=f"pgloss {command.name}", description=command.description or command.help)
     command.arguments(parser)
     rc = command.run(parser.parse_args(args[1:]))
-    try:
-        sys.stdout.flush()
-    except OSError as e:
-        return _write_failed(e)
-    return rc
+    return _flush_stdout() or rc
 
 
 if __name__ == "__main__":
