@@ -43,7 +43,7 @@ echo "$tag" >"$dist/manylinux-tag"
 echo "manylinux tag: $tag"
 
 echo "== sdist, and a wheel from it"
-sources=$(find pyproject.toml CMakeLists.txt LICENSE cmake libpgloss bindings/python tests/python tests/vectors -type f \
+sources=$(find pyproject.toml CMakeLists.txt LICENSE cmake libpgloss tools bindings/python tests/python tests/vectors -type f \
             -not -path '*/__pycache__/*' -print0 | sort -z | xargs -0 sha256sum | sha256sum | cut -c1-16)
 if [[ "$(cat "$dist/.sdist-checked" 2>/dev/null)" == "$sources" ]]; then
   echo "(sources unchanged since the last check: skipped)"
@@ -57,7 +57,7 @@ mkdir -p "$dist/sdist"
 tar -xzf "$sdist" -C "$dist/sdist"
 src=$(ls -d "$dist"/sdist/pgloss-*/)
 for f in pyproject.toml CMakeLists.txt LICENSE bindings/python/README.md libpgloss/include/pgloss/pgloss.h \
-         bindings/python/src/core.cpp tests/vectors/gloss.json; do
+         bindings/python/src/core.cpp tools/pgloss_cli.c tests/vectors/gloss.json; do
   [[ -f $src/$f ]] || { echo "sdist lacks $f" >&2; exit 1; }
 done
 for d in web blender glsl osl .ci; do

@@ -6,14 +6,14 @@
 # harness the executions, execs/s, coverage and corpus size. Exits non-zero on any finding
 # (the crashing input is kept in build-fuzz/findings/). The corpora grow in build-fuzz/corpus/
 # from the seeds in tests/fuzz/corpus/ (and the shipped scenes), so later runs start further on.
-#   scripts/fuzz.sh [SECONDS] [HARNESS…]      harnesses: brdf perceptual scene cli
+#   scripts/fuzz.sh [SECONDS] [HARNESS…]      harnesses: brdf perceptual scene cli tool
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/step.sh
 secs=${1:-60}
 shift || true
 harnesses=("$@")
-((${#harnesses[@]})) || harnesses=(brdf perceptual scene cli)
+((${#harnesses[@]})) || harnesses=(brdf perceptual scene cli tool)
 bash scripts/bootstrap.sh apt clang libclang-rt-14-dev libglm-dev
 echo "== fuzz: build (clang, libFuzzer, ASan + UBSan)"
 step "configure (fuzz)" cmake --preset fuzz

@@ -5,8 +5,8 @@
 # repository root into the venv .venv-py, then pytest tests/python — the shared vectors,
 # the binding's behaviour, the figures command, a smoke run of the benchmark and pgloss.psychophysics
 # (scipy: its runtime dependency; scikit-learn: the peer of its tests only; colour-science: the peer of the working-colour-space tests only).
-# Also (issue 18): the C tool `pgloss` (build-py/cli), the reference of `python -m pgloss`'s
-# subcommands in tests/python/test_cli.py; and the distributions (scripts/check-python-dist.sh:
+# Also (issue 18): the C tool `pgloss` built from tools/ (build-py/cli), which tests/python/test_cli.py
+# runs beside `python -m pgloss` (the wheel's copy of it); and the distributions (scripts/check-python-dist.sh:
 # the wheel, `auditwheel show` (manylinux), the sdist and a wheel built from it), whose metadata
 # tests/python/test_package_metadata.py reads.
 # Nothing is skipped: with PGLOSS_REQUIRE_ALL=1 (the default here, and what CI sets) a skipped
@@ -32,7 +32,7 @@ if [[ ! -x $py ]] || [[ "$(cat "$venv/.pgloss-pins" 2>/dev/null)" != "${pins[*]}
 fi
 
 # `pip install .` (the README's install command), with the venv's pinned build tools.
-sources=$(find pyproject.toml CMakeLists.txt libpgloss bindings/python -type f \
+sources=$(find pyproject.toml CMakeLists.txt libpgloss tools bindings/python -type f \
             -not -path '*/__pycache__/*' -print0 | sort -z | xargs -0 sha256sum | sha256sum | cut -c1-16)
 if [[ "$(cat "$venv/.pgloss-installed" 2>/dev/null)" != "$sources" ]] || ! (cd / && "$root/$py" -c "import pgloss._core") 2>/dev/null; then
   echo "== pip install . (sources changed; a first build takes a few minutes)"
@@ -45,7 +45,7 @@ fi
 # bench/run.sh needs the installed package only.
 [[ ${PGLOSS_PY_SETUP_ONLY:-0} == 1 ]] && exit 0
 
-echo "== the C tool (build-py/cli), the reference of python -m pgloss's subcommands"
+echo "== the C tool (build-py/cli), beside python -m pgloss in tests/python/test_cli.py"
 step "configure (build-py/cli)" cmake -S . -B build-py/cli -DCMAKE_BUILD_TYPE=Release -DPGLOSS_BUILD_PYTHON=OFF \
   -DPGLOSS_BUILD_TESTS=OFF -DPGLOSS_INSTALL=OFF
 step "build (build-py/cli)" cmake --build build-py/cli --target pgloss_cli -j2

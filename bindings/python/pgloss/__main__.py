@@ -1,12 +1,9 @@
 # SPDX-FileCopyrightText: 2026 The pgloss authors
 # SPDX-License-Identifier: Apache-2.0
-"""``python -m pgloss COMMAND …``: the package's command line.
+"""``python -m pgloss COMMAND …``, and the wheel's ``pgloss`` command: the package's command line.
 
-Commands (``python -m pgloss COMMAND --help`` for each):
+The package's own commands (``python -m pgloss COMMAND --help`` for each):
 
-* ``to-physical``, ``to-perceptual``, ``to-perceptual-rgb``, ``check``, ``match``,
-  ``distance``, ``envelope``, ``eval``, ``demo`` — the C tool ``pgloss``'s subcommands, with
-  its arguments, output and exit codes (:mod:`pgloss.cli`);
 * ``figures OUTDIR`` — the paper's Figs. 9, 10 and 11, computed by the library (below);
 * ``mds …`` — the paper's MDS analysis (§3) on proximity matrices in CSV
   (:mod:`pgloss.psychophysics.cli`);
@@ -15,8 +12,12 @@ Commands (``python -m pgloss COMMAND --help`` for each):
 * ``experiment stimuli|serve|export|export-jspsych|import …`` — run the paper's experiments in a
   browser, locally or as a jsPsych/JATOS study (:mod:`pgloss.experiment.cli`).
 
-A command is one entry of :data:`COMMANDS`: its name, help line, a function that adds its
-arguments to an ``argparse`` parser and one that runs it (imported only when it is used).
+Every other command (``to-physical``, ``check``, ``match``, ``distance``, ``eval``, ``demo``, …,
+``--version``) is the C tool's, which the wheel ships and which runs as it is (:mod:`pgloss.cli`);
+``--help`` lists both.
+
+A package command is one entry of :data:`COMMANDS`: its name, help line, a function that adds
+its arguments to an ``argparse`` parser and one that runs it (imported only when it is used).
 
 ``figures`` writes PNG and SVG (matplotlib, Agg backend, no display needed) of
 
@@ -36,6 +37,9 @@ luminance_from_lightness, isogloss_contour, gloss_distance); matplotlib only dra
 from __future__ import annotations
 
 import argparse
+import errno
+import os
+import subprocess
 import sys
 from pathlib import Path
 from typing import Callable, List, NamedTuple, Optional, Sequence, Tuple
@@ -225,60 +229,97 @@ def _experiment_run(args: argparse.Namespace) -> int:
 
 
 class Command(NamedTuple):
-    """One subcommand: name, help line, argument set-up and runner (returns the exit status)."""
+    """One of the package's commands: name, usage arguments, help line, argument set-up and
+    runner (returns the exit status)."""
 
     name: str
+    args: str
     help: str
     arguments: Callable[[argparse.ArgumentParser], None]
     run: Callable[[argparse.Namespace], int]
     description: str = ""
 
 
-def _tool(name: str) -> Command:
-    """One of the C tool's subcommands (pgloss.cli), as a Command."""
-    from . import cli
-
-    c = next(t for t in cli.TOOL_COMMANDS if t.name == name)
-    line = " ".join((*c.numbers, "[norm]") if c.norm else c.numbers)
-    return Command(c.name, f"{line}: {c.usage}" if line else c.usage, lambda p: cli.add_arguments(c, p), cli.run,
-                   f"{c.usage} (as the C tool: pgloss {c.name} {line})")
-
-
-#: The subcommands, in the order ``--help`` lists them: the C tool's first, then the package's own.
-COMMANDS: Tuple[Command, ...] = tuple(_tool(n) for n in (
-    "to-physical", "to-perceptual", "to-perceptual-rgb", "check", "match", "distance", "envelope", "eval", "demo")) + (
-    Command("figures", "write PNG + SVG of the paper's Figs. 9, 10, 11 into OUTDIR", _figures_arguments,
+#: The package's own commands, in the order ``--help`` lists them (after the C tool's).
+COMMANDS: Tuple[Command, ...] = (
+    Command("figures", "OUTDIR", "the paper's Figs. 9, 10, 11 as PNG + SVG in OUTDIR", _figures_arguments,
             _figures_run),
-    Command("mds", "MDS analysis of proximity matrices (CSV): stress curve, dimensionality, weighted Euclidean "
-            "non-metric fit, confirmatory MDS; --example cities reproduces Figs. 2 and 3", _mds_arguments, _mds_run,
-            "The paper's §3 analysis on proximity matrices, one CSV per subject (see pgloss.psychophysics.cli)."),
-    Command("magnitude", "magnitude-estimation analysis of a ratings CSV: hypotheses ranked by r², Figs. 7 and 8",
+    Command("mds", "CSV... | --example NAME", "MDS of proximity matrices (§3, Figs. 2-8)", _mds_arguments, _mds_run,
+            "MDS analysis of proximity matrices (CSV), one per subject: stress curve, dimensionality, weighted "
+            "Euclidean non-metric fit, confirmatory MDS; --example cities reproduces Figs. 2 and 3 "
+            "(see pgloss.psychophysics.cli)."),
+    Command("magnitude", "RATINGS.csv [--out DIR]", "magnitude estimation: hypotheses ranked by r², Figs. 7, 8",
             _magnitude_arguments, _magnitude_run,
             "The paper's §3.3.4 analysis (see pgloss.psychophysics.magnitude_cli)."),
-    Command("experiment", "run the paper's experiments: render stimuli (stimuli), the browser experiment "
-            "(serve), a jsPsych/JATOS study (export-jspsych, import), proximity matrices and magnitude table "
-            "(export)", _experiment_arguments, _experiment_run,
-            "Pairwise gloss differences (§3.2.3) and magnitude estimation (§3.3.3) in a browser, stored in "
-            "SQLite (see pgloss.experiment)."),
+    Command("experiment", "stimuli|serve|export|export-jspsych|import ...", "the paper's experiments in a browser",
+            _experiment_arguments, _experiment_run,
+            "Render stimuli (stimuli), run pairwise gloss differences (§3.2.3) and magnitude estimation (§3.3.3) "
+            "in a browser, stored in SQLite (serve), as a jsPsych/JATOS study (export-jspsych, import), write "
+            "proximity matrices and the magnitude table (export); see pgloss.experiment."),
 )
+
+#: Exit code when the output could not be written (the C tool's too).
+WRITE_ERROR = 3
+
+
+def _flush_stdout(text: str = "") -> int:
+    """Writes text and flushes stdout: 0, or WRITE_ERROR after the C tool's message if the
+    output is lost (stdout then points at the null device, so that the interpreter's own
+    flush at exit fails no more)."""
+    try:
+        if sys.stdout is None:  # started with descriptor 1 closed
+            raise OSError(errno.EBADF, os.strerror(errno.EBADF))
+        sys.stdout.write(text)
+        sys.stdout.flush()
+    except OSError as e:
+        sys.stderr.write(f"pgloss: cannot write the output: {e.strerror or e}\n")
+        try:
+            null = os.open(os.devnull, os.O_WRONLY)
+            os.dup2(null, sys.stdout.fileno())
+            os.close(null)
+        except (OSError, ValueError, AttributeError):
+            pass
+        return WRITE_ERROR
+    return 0
+
+
+def usage() -> str:
+    """``--help``: the C tool's commands (its own usage text), then the package's."""
+    from . import cli
+
+    tool = subprocess.run([str(cli.tool()), "--help"], capture_output=True, text=True, check=False)
+    lines = [tool.stdout.rstrip("\n"), "commands of the Python package (python -m pgloss, or the wheel's pgloss):"]
+    for c in COMMANDS:
+        head = f"{c.name} {c.args}"
+        lines.append(f"  {head:<32} {c.help}" if len(head) <= 32 else f"  {head}\n  {'':<32} {c.help}")
+    return "\n".join(lines) + "\n"
 
 
 def main(argv: Optional[Sequence[str]] = None) -> int:
-    args_in = list(sys.argv[1:] if argv is None else argv)
-    if args_in and not {"-h", "--help"} & set(args_in[1:]):
-        from . import cli
+    """Runs a command; returns its exit code. Called with argv None (as a program), a command of
+    the C tool replaces this process with the tool; called with a list, it runs in a child.
+    No command, or an option (--help, --version), ends in SystemExit, as argparse's options do."""
+    from . import cli
 
-        tool = cli.find(args_in[0])
-        if tool is not None:  # the C tool's commands read their arguments as it does (e.g. -1e3)
-            return cli.run_argv(tool, args_in[1:])
-    parser = argparse.ArgumentParser(prog="python -m pgloss", description="pgloss command line: "
-                                     + ", ".join(c.name for c in COMMANDS))
-    parser.add_argument("--version", action="version", version=f"pgloss {pgloss.__version__}")
-    sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
-    for c in COMMANDS:
-        c.arguments(sub.add_parser(c.name, help=c.help, description=c.description or c.help))
-    args = parser.parse_args(args_in)
-    return next(c for c in COMMANDS if c.name == args.command).run(args)
+    args = list(sys.argv[1:] if argv is None else argv)
+    if not args or args[0] in ("-h", "--help"):
+        text = usage()
+        if not args:
+            sys.stderr.write(text)
+            raise SystemExit(2)
+        raise SystemExit(_flush_stdout(text))
+    command = next((c for c in COMMANDS if c.name == args[0]), None)
+    if command is None:
+        if argv is None:
+            cli.exec_tool(args)
+        rc = cli.run(args)
+        if args[0].startswith("-"):
+            raise SystemExit(rc)
+        return rc
+    parser = argparse.ArgumentParser(prog=f"pgloss {command.name}", description=command.description or command.help)
+    command.arguments(parser)
+    rc = command.run(parser.parse_args(args[1:]))
+    return _flush_stdout() or rc
 
 
 if __name__ == "__main__":
