@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "pgloss/pgloss.h"
+#include "cli_glossmeter.h"
 
 #define DEG (3.14159265358979323846 / 180.0)
 
@@ -24,6 +25,9 @@ static const char *USAGE =
     "  eval rho_d rho_s alpha theta_o phi_o theta_i phi_i [norm]\n"
     "                                   BRDF value and pdf, angles in degrees\n"
     "  demo                             the paper's worked examples\n"
+    "  glossmeter rho_d rho_s alpha [norm] [options] | --fig4   glossmeter readings (docs/glossmeter.md)\n"
+    "  from-gloss-units --L L --g60 G [--g20 G | --haze H | --doi D | --d D]   the paint that reads so\n"
+    "  finish NAME [--L L --a A --b B] | --list   a trade finish (MPI G1-G7) as a paint\n"
     "  --version                        the version of the pgloss library in use\n"
     "norm: ward (eq. 2, default) | ward-dur | bounded\n";
 
@@ -268,6 +272,9 @@ int main(int argc, char **argv)
     else if (!strcmp(cmd, "envelope")) rc = cmd_envelope(rest, n);
     else if (!strcmp(cmd, "eval")) rc = cmd_eval(rest, n);
     else if (!strcmp(cmd, "demo")) rc = demo();
+    else if (!strcmp(cmd, "glossmeter")) rc = pgloss_cli_glossmeter(rest, n);
+    else if (!strcmp(cmd, "from-gloss-units")) rc = pgloss_cli_from_gloss_units(rest, n);
+    else if (!strcmp(cmd, "finish")) rc = pgloss_cli_finish(rest, n);
     else {
         fprintf(stderr, "pgloss: unknown command '%s'\n%s", cmd, USAGE);
         return 2;

@@ -82,7 +82,7 @@ pgloss_status pgloss_fresnel_dielectric(double n, double c, double *r)
     /* Unpolarised: the mean of the s and p reflectances, written with g = sqrt(n² − 1 + c²)
      * (Walter et al. 2007, eq. 22; Cook & Torrance 1982). */
     const double g = sqrt(n * n - 1.0 + c * c);
-    const double a = (g - c) / (g + c);
+    const double a = (n - 1.0) * (n + 1.0) / ((g + c) * (g + c)); /* (g − c)/(g + c) without cancellation */
     const double b = (c * (g + c) - 1.0) / (c * (g - c) + 1.0);
     *r = 0.5 * a * a * (1.0 + b * b);
     return PGLOSS_OK;
