@@ -25,7 +25,7 @@ static const char *USAGE =
     "  eval rho_d rho_s alpha theta_o phi_o theta_i phi_i [norm]\n"
     "                                   BRDF value and pdf, angles in degrees\n"
     "  demo                             the paper's worked examples\n"
-    "  glossmeter rho_d rho_s alpha [norm] [options] | --fig4   glossmeter readings (docs/glossmeter.md)\n"
+    "  glossmeter rho_d rho_s alpha [norm] [options] | --fig4 | --bench   readings (docs/glossmeter.md)\n"
     "  from-gloss-units --L L --g60 G [--g20 G | --haze H | --doi D | --d D]   the paint that reads so\n"
     "  finish NAME [--L L --a A --b B] | --list   a trade finish (MPI G1-G7) as a paint\n"
     "  --version                        the version of the pgloss library in use\n"

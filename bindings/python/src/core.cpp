@@ -42,6 +42,7 @@
 
 #include "pgloss/pgloss.h"
 #include "parallel.h"
+#include "bind_glossmeter.h"
 #include "shim.h"
 
 namespace py = pybind11;
@@ -771,6 +772,7 @@ PYBIND11_MODULE(_core, mod) {
     mod.attr("ALPHA_TRUSTED_MAX") = PGLOSS_ALPHA_TRUSTED_MAX;
     mod.attr("BOUNDARY_TOLERANCE") = PGLOSS_BOUNDARY_TOLERANCE;
     mod.attr("LUMA") = py::make_tuple(PGLOSS_LUMA_R, PGLOSS_LUMA_G, PGLOSS_LUMA_B);
+    pgloss_py::bind_glossmeter(mod);  // pgloss.glossmeter (bind_glossmeter.cpp)
 
     // The thread count of the array calls; pgloss.set_num_threads validates it and reads
     // PGLOSS_NUM_THREADS at import (parallel.h).
