@@ -28,9 +28,10 @@ int main(int argc, char **argv) {
     std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|\n");
     double chi2 = 0;
     int dof = 0;
+    unsigned stream = 0;  // one PCG32 stream per case, so that the z-scores are independent
     for (const auto &c : pgt::glossmeter_mc_cases())
         for (pgloss_glossmeter_kind kind : c.kinds) {
-            const pgt::GlossmeterMc mc = pgt::glossmeter_mc(kind, c.paint, c.azimuth_deg, n, seed);
+            const pgt::GlossmeterMc mc = pgt::glossmeter_mc(kind, c.paint, c.azimuth_deg, n, 1000 * seed + stream++);
             pgloss_gloss_reading q;
             const auto t0 = std::chrono::steady_clock::now();
             pgloss_glossmeter_read_physical(kind, &c.paint, c.azimuth_deg, 1e-6, &q);
