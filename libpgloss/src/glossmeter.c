@@ -171,35 +171,33 @@ static const int GM_TAIL_ORDERS[3] = {4, 6, 10};
 
 typedef struct gm_rule { int n; double x[GM_MAX_N], w[GM_MAX_N]; } gm_rule;
 
+/* P_n(x) and P_n'(x) by the three-term recurrence (|x| < 1). */
+static double legendre(int n, double x, double *dp)
+{
+    double p0 = 1.0, p1 = x;
+    for (int k = 2; k <= n; ++k) {
+        const double p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k;
+        p0 = p1;
+        p1 = p2;
+    }
+    *dp = n * (x * p1 - p0) / (x * x - 1.0);
+    return p1;
+}
+
 /* Nodes and weights of the n-point Gauss–Legendre rule on [−1, 1] (Newton on P_n from
  * Tricomi's initial guesses; converged to a few ulp for n <= 16). */
 static void gauss_legendre(int n, gm_rule *r)
 {
     r->n = n;
     for (int i = 0; i < (n + 1) / 2; ++i) {
-        double x = cos(PGLOSS_PI * (i + 0.75) / (n + 0.5)), dp = 1.0;
+        double x = cos(PGLOSS_PI * (i + 0.75) / (n + 0.5)), dp;
         for (int it = 0; it < 100; ++it) {
-            double p0 = 1.0, p1 = x;
-            for (int k = 2; k <= n; ++k) {
-                const double p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k;
-                p0 = p1;
-                p1 = p2;
-            }
-            dp = n * (x * p1 - p0) / (x * x - 1.0);
-            const double dx = p1 / dp;
+            const double dx = legendre(n, x, &dp) / dp;
             x -= dx;
             if (fabs(dx) < 1e-16)
                 break;
         }
-        {
-            double p0 = 1.0, p1 = x;
-            for (int k = 2; k <= n; ++k) {
-                const double p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k;
-                p0 = p1;
-                p1 = p2;
-            }
-            dp = n * (x * p1 - p0) / (x * x - 1.0);
-        }
+        legendre(n, x, &dp);
         const double w = 2.0 / ((1.0 - x * x) * dp * dp);
         r->x[i] = -x;
         r->w[i] = w;
@@ -618,6 +616,14 @@ static pgloss_status ward_of(const pgloss_physical *p, gm_ward *w)
     return PGLOSS_OK;
 }
 
+/* A reading of a BRDF function whose narrowest lobe is width. */
+static pgloss_status read_fn(pgloss_glossmeter_kind kind, double (*eval)(const double *, const double *, void *),
+                             void *user, double width, double azimuth_deg, double tol, pgloss_gloss_reading *out)
+{
+    const pgloss_glossmeter_brdf b = {eval, NULL, user, width};
+    return pgloss_glossmeter_read(kind, &b, azimuth_deg, tol, out);
+}
+
 pgloss_status pgloss_glossmeter_read_physical(pgloss_glossmeter_kind kind, const pgloss_physical *p,
                                               double azimuth_deg, double tol, pgloss_gloss_reading *out)
 {
@@ -626,10 +632,8 @@ pgloss_status pgloss_glossmeter_read_physical(pgloss_glossmeter_kind kind, const
         return PGLOSS_ERR_NULL;
     gm_ward w;
     const pgloss_status st = ward_of(p, &w);
-    if (st != PGLOSS_OK)
-        return st;
-    pgloss_glossmeter_brdf b = {ward_eval, NULL, &w, fmin(w.k.alpha_x, w.k.alpha_y)};
-    return pgloss_glossmeter_read(kind, &b, azimuth_deg, tol, out);
+    return st != PGLOSS_OK ? st
+                           : read_fn(kind, ward_eval, &w, fmin(w.k.alpha_x, w.k.alpha_y), azimuth_deg, tol, out);
 }
 
 pgloss_status pgloss_glossmeter_read_material(pgloss_glossmeter_kind kind, const pgloss_material *m,
@@ -638,8 +642,7 @@ pgloss_status pgloss_glossmeter_read_material(pgloss_glossmeter_kind kind, const
     if (out) out->value = out->error = 0.0;
     if (!m || !out)
         return PGLOSS_ERR_NULL;
-    pgloss_glossmeter_brdf b = {material_eval, NULL, (void *)m, fmin(m->alpha_x, m->alpha_y)};
-    return pgloss_glossmeter_read(kind, &b, azimuth_deg, tol, out);
+    return read_fn(kind, material_eval, (void *)m, fmin(m->alpha_x, m->alpha_y), azimuth_deg, tol, out);
 }
 
 pgloss_status pgloss_glossmeter_readings_physical(const pgloss_physical *p, double azimuth_deg, double tol,

@@ -40,7 +40,7 @@ STANDARD_INDEX: float = _core.GLOSS_STANDARD_INDEX
 ASSUMED_DOI_GLOSS: float = _core.ASSUMED_DOI_GLOSS
 
 _WARN_QUADRATURE = 2
-_ERR_NO_FIT = -13
+_ERR_NO_FIT = -16
 
 
 class GlossmeterError(ValueError):
@@ -106,7 +106,7 @@ def from_gloss_units(L: Any, gloss_60: Any, *, gloss_20: Any = None, haze: Any =
     60° gloss is ``gloss_60`` and whose 20° gloss, haze or DOI (at most one) is the given one;
     with none of them, d is ``d`` or, if None, :data:`ASSUMED_DOI_GLOSS` (α = 0.07, the middle of
     the paper's stimuli). All arguments broadcast. Returns a :class:`pgloss.Perceptual`; with
-    ``errors="status"`` ``(Perceptual, status)`` instead of raising. NO_FIT (−13): no paint of
+    ``errors="status"`` ``(Perceptual, status)`` instead of raising. NO_FIT (−16): no paint of
     the model reads so (the result then holds the nearest in the second reading). The haze's
     two solutions: the sharper lobe is returned (haze is a high-gloss measure, ISO 13803)."""
     from . import Perceptual

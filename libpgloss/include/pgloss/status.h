@@ -42,7 +42,8 @@ typedef enum pgloss_status {
     PGLOSS_ERR_ARGUMENT = -11,         /* another argument is out of its domain (documented per function) */
     PGLOSS_ERR_RANDOM = -12,           /* a random number is NaN (every other value, ±Inf
                                           included, is clamped to [0, 1 - 2^-24]) */
-    PGLOSS_ERR_NO_FIT = -13            /* no paint of the model gives these instrument readings
+    /* -13 to -15: the gloss bridge's (bridge.h) */
+    PGLOSS_ERR_NO_FIT = -16            /* no paint of the model gives these instrument readings
                                           (glossmeter.h) */
 } pgloss_status;
 
