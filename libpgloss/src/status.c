@@ -22,6 +22,9 @@ const char *pgloss_status_string(pgloss_status status)
     case PGLOSS_ERR_NORMALIZATION: return "unknown normalization of the specular lobe";
     case PGLOSS_ERR_ARGUMENT: return "an argument is outside its documented domain";
     case PGLOSS_ERR_RANDOM: return "a random number is NaN";
+    case PGLOSS_WARN_QUADRATURE:
+        return "the glossmeter quadrature did not reach the requested tolerance; the error estimate says by how much";
+    case PGLOSS_ERR_NO_FIT: return "no paint of the model gives these glossmeter readings";
     }
     return "unknown pgloss status code";
 }
@@ -43,6 +46,8 @@ const char *pgloss_status_name(pgloss_status status)
     case PGLOSS_ERR_NORMALIZATION: return "PGLOSS_ERR_NORMALIZATION";
     case PGLOSS_ERR_ARGUMENT: return "PGLOSS_ERR_ARGUMENT";
     case PGLOSS_ERR_RANDOM: return "PGLOSS_ERR_RANDOM";
+    case PGLOSS_WARN_QUADRATURE: return "PGLOSS_WARN_QUADRATURE";
+    case PGLOSS_ERR_NO_FIT: return "PGLOSS_ERR_NO_FIT";
     }
     return "PGLOSS_UNKNOWN";
 }

@@ -2231,6 +2231,281 @@ def gen_sample(mats: Dict[str, Tuple[Dict[str, Any], Material]]) -> Dict[str, An
     return doc
 
 
+
+# ----------------------------------------------------------------------------------
+# Glossmeter (pgloss/glossmeter.h): instrument readings from the measurement equation
+#   Φ(W) = ∫_S dωi ∫_W f(ωi, ωo) cos θo dωo
+# over the gnomonic windows of the header's table, transcribed here. The standard, the Fresnel
+# mirrors and the Lambertian readings are in mpmath (closed forms and 24-point Gauss–Legendre of
+# smooth integrands); the Ward readings by product Gauss–Legendre in double (nodes from mpmath,
+# the integrand in Python floats, sums by math.fsum) on panels of this generator's own design —
+# uniform over the source, graded from the mirror point at 1, 2, 4, … α over the receptor — at 6
+# and 12 points a panel. The 12-point value is stored rounded to 12 significant digits, so that a
+# platform's libm cannot change the file, with its error bound: |Q12 − Q6| plus the rounding.
+# ----------------------------------------------------------------------------------
+
+GM_SOURCE = (0.0, 0.75, 2.5)
+GM_GEOMETRY: Dict[str, Tuple[float, Tuple[float, float, float], Tuple[float, float, float],
+                             Tuple[Tuple[float, float, float], ...]]] = {
+    "PGLOSS_GLOSS_20": (20.0, GM_SOURCE, (0.0, 1.8, 3.6), ()),
+    "PGLOSS_GLOSS_60": (60.0, GM_SOURCE, (0.0, 4.4, 11.7), ()),
+    "PGLOSS_GLOSS_85": (85.0, GM_SOURCE, (0.0, 4.0, 6.0), ()),
+    "PGLOSS_HAZE_20": (20.0, GM_SOURCE, (0.0, 1.8, 3.6), ((-2.0, 1.0, 3.6), (2.0, 1.0, 3.6))),
+    "PGLOSS_DOI_30": (30.0, (0.0, 0.1, 2.5), (0.0, 0.1, 3.6), ((-0.3, 0.1, 3.6), (0.3, 0.1, 3.6))),
+    "PGLOSS_CONTRAST_60": (60.0, GM_SOURCE, (0.0, 4.4, 11.7), ()),
+}
+GM_STANDARD_INDEX = mpf("1.567")
+GM_LUMA = [float(x) for x in LUMA_STR]
+
+
+def gm_rect(win: Tuple[float, float, float]) -> Tuple[mpf, mpf, mpf, mpf]:
+    """(s0, s1, t0, t1): the window in the focal plane of its axis (header: "Windows")."""
+    c, w, h = (mpf(repr(x)) for x in win)
+    d = mp.pi / 180
+    return mp.tan((c - w / 2) * d), mp.tan((c + w / 2) * d), -mp.tan(h / 2 * d), mp.tan(h / 2 * d)
+
+
+def gm_fresnel(n: mpf, c: mpf) -> mpf:
+    """Unpolarised Fresnel reflectance of a dielectric: the mean of |r_s|² and |r_p|²."""
+    sin2 = 1 - c * c
+    ct = mp.sqrt(1 - sin2 / (n * n))
+    rs = (c - n * ct) / (c + n * ct)
+    rp = (n * c - ct) / (n * c + ct)
+    return (rs * rs + rp * rp) / 2
+
+
+_GM_GL: Dict[int, List[Tuple[mpf, mpf]]] = {}
+
+
+def gm_gl(n: int) -> List[Tuple[mpf, mpf]]:
+    """The n-point Gauss–Legendre rule on [−1, 1] (n = 6, 12, 24), at the working precision."""
+    if n not in _GM_GL:
+        from mpmath.calculus.quadrature import GaussLegendre
+        _GM_GL[n] = GaussLegendre(mp).calc_nodes({6: 2, 12: 3, 24: 4}[n], mp.prec)
+    return _GM_GL[n]
+
+
+def gm_mirror_flux(theta: float, src: Tuple[float, float, float], rec: Tuple[float, float, float], n: mpf) -> mpf:
+    """Φ of a Fresnel mirror of index n: ∫ R(cos θi) dωi over the source points whose mirror
+    (s, −t) lies in the receptor (24 × 24 Gauss–Legendre; the integrand is smooth)."""
+    S, W = gm_rect(src), gm_rect(rec)
+    s0, s1 = max(S[0], W[0]), min(S[1], W[1])
+    t0, t1 = max(S[2], -W[3]), min(S[3], -W[2])
+    if s1 <= s0 or t1 <= t0:
+        return mpf(0)
+    th = mpf(repr(theta)) * mp.pi / 180
+    st, ct = mp.sin(th), mp.cos(th)
+    hs, cs, ht, cc = (s1 - s0) / 2, (s1 + s0) / 2, (t1 - t0) / 2, (t1 + t0) / 2
+    total = mpf(0)
+    for x, wx in gm_gl(24):
+        s = cs + hs * x
+        for y, wy in gm_gl(24):
+            t = cc + ht * y
+            q = 1 + s * s + t * t
+            total += wx * wy * gm_fresnel(n, (ct - s * st) / mp.sqrt(q)) / q ** mpf(1.5)
+    return hs * ht * total
+
+
+def gm_solid_angle(r: Tuple[mpf, mpf, mpf, mpf]) -> mpf:
+    """∫∫ (1 + s² + t²)^(-3/2) ds dt: the corner function atan(ab/√(1 + a² + b²))."""
+    def corner(a: mpf, b: mpf) -> mpf:
+        return mp.atan(a * b / mp.sqrt(1 + a * a + b * b))
+    return corner(r[1], r[3]) - corner(r[0], r[3]) - corner(r[1], r[2]) + corner(r[0], r[2])
+
+
+def gm_projected(theta: float, r: Tuple[mpf, mpf, mpf, mpf]) -> mpf:
+    """∫_W cos θo dωo = cos θ ∫∫ (1+s²+t²)^-2 − sin θ ∫∫ s (1+s²+t²)^-2, both in closed form:
+    G(a, b) = ½[a/√(1+a²) atan(b/√(1+a²)) + b/√(1+b²) atan(a/√(1+b²))] (the form factor of a
+    rectangle, times π), and ∫ s (c + s²)^-2 ds = −1/(2(c + s²)), ∫ dt/(A² + t²) = atan(t/A)/A."""
+    def G(a: mpf, b: mpf) -> mpf:
+        A, B = mp.sqrt(1 + a * a), mp.sqrt(1 + b * b)
+        return (a / A * mp.atan(b / A) + b / B * mp.atan(a / B)) / 2
+    s0, s1, t0, t1 = r
+    Q = G(s1, t1) - G(s0, t1) - G(s1, t0) + G(s0, t0)
+    def H(s: mpf) -> mpf:
+        A = mp.sqrt(1 + s * s)
+        return (mp.atan(t1 / A) - mp.atan(t0 / A)) / A
+    M = -(H(s1) - H(s0)) / 2
+    th = mpf(repr(theta)) * mp.pi / 180
+    return mp.cos(th) * Q - mp.sin(th) * M
+
+
+def gm_lambert_reading(kind: str, rho: mpf) -> mpf:
+    theta, src, rec, off = GM_GEOMETRY[kind]
+    std = gm_mirror_flux(theta, src, rec, GM_STANDARD_INDEX)
+    om = gm_solid_angle(gm_rect(src))
+    def phi(w: Tuple[float, float, float]) -> mpf:
+        return rho / mp.pi * om * gm_projected(theta, gm_rect(w))
+    if kind == "PGLOSS_HAZE_20":
+        return 100 * (phi(off[0]) + phi(off[1])) / std
+    if kind == "PGLOSS_DOI_30":
+        rs = phi(rec)
+        return 100 * (rs - (phi(off[0]) + phi(off[1])) / 2) / rs
+    if kind == "PGLOSS_CONTRAST_60":
+        return mpf(1)   # a perfect diffuser: specular and diffuse luminance factors are both ρ
+    return 100 * phi(rec) / std
+
+
+_GM_NODES: Dict[int, List[Tuple[float, float]]] = {}
+
+
+def _gm_nodes(brk: Sequence[float], n: int) -> Tuple[List[float], List[float]]:
+    if n not in _GM_NODES:
+        _GM_NODES[n] = [(float(x), float(w)) for x, w in gm_gl(n)]
+    xs: List[float] = []
+    ws: List[float] = []
+    for a, b in zip(brk[:-1], brk[1:]):
+        h, c = (b - a) / 2, (a + b) / 2
+        for x, w in _GM_NODES[n]:
+            xs.append(c + h * x)
+            ws.append(h * w)
+    return xs, ws
+
+
+def _gm_graded(lo: float, hi: float, focus: float, base: float) -> List[float]:
+    """lo, hi, the focus and focus ± base·2^k inside (lo, hi); breaks closer than base/5 merge."""
+    pts = {lo, hi}
+    if lo < focus < hi:
+        pts.add(focus)
+    d = base
+    while d < 2 * (hi - lo) + abs(focus - lo) + abs(focus - hi):
+        for x in (focus - d, focus + d):
+            if lo < x < hi:
+                pts.add(x)
+        d *= 2
+    out = [lo]
+    for x in sorted(pts)[1:]:
+        if x - out[-1] > base / 5:
+            out.append(x)
+    out[-1] = hi
+    return out
+
+
+def gm_ward_f(p: Dict[str, Any], wo: Tuple[float, float, float], wi: Tuple[float, float, float]) -> float:
+    """Luminance of eq. 2 (brdf.h: WARD, WARD_DUR, BOUNDED) at unit directions, in double."""
+    rd, rs, ax, ay, norm = p["rho_d"], p["rho_s"], p["alpha_x"], p["alpha_y"], p["normalization"]
+    f = (GM_LUMA[0] * rd[0] + GM_LUMA[1] * rd[1] + GM_LUMA[2] * rd[2]) / math.pi
+    hx, hy, hz = wo[0] + wi[0], wo[1] + wi[1], wo[2] + wi[2]
+    e = math.exp(-((hx / ax) ** 2 + (hy / ay) ** 2) / (hz * hz))
+    if norm == NORM_WARD:
+        return f + rs * e / (4 * math.pi * ax * ay * math.sqrt(wi[2] * wo[2]))
+    if norm == NORM_WARD_DUR:
+        return f + rs * e / (4 * math.pi * ax * ay * wi[2] * wo[2])
+    return f + rs * e * (hx * hx + hy * hy + hz * hz) / (math.pi * ax * ay * hz ** 4)
+
+
+def gm_ward_flux(theta: float, src: Tuple[float, float, float], rec: Tuple[float, float, float],
+                 p: Dict[str, Any], azimuth: float, n: int) -> float:
+    d = mp.pi / 180
+    st, ct = float(mp.sin(mpf(repr(theta)) * d)), float(mp.cos(mpf(repr(theta)) * d))
+    ca, sa = float(mp.cos(mpf(repr(azimuth)) * d)), float(mp.sin(mpf(repr(azimuth)) * d))
+    S = [float(x) for x in gm_rect(src)]
+    W = [float(x) for x in gm_rect(rec)]
+    a = min(p["alpha_x"], p["alpha_y"])
+    bs, bt = 2 * a, 2 * a * ct   # the lobe's scale in s and t (h turns by half the receptor's turn)
+    ns_, nt_ = max(1, math.ceil((S[1] - S[0]) / bs)), max(1, math.ceil((S[3] - S[2]) / bt))
+    oxs, ows = _gm_nodes([S[0] + (S[1] - S[0]) * k / ns_ for k in range(ns_ + 1)], n)
+    oxt, owt = _gm_nodes([S[2] + (S[3] - S[2]) * k / nt_ for k in range(nt_ + 1)], n)
+    terms: List[float] = []
+    for si, wsi in zip(oxs, ows):
+        ixs, iws = _gm_nodes(_gm_graded(W[0], W[1], si, bs / 2), n)
+        for ti, wti in zip(oxt, owt):
+            q = 1 + si * si + ti * ti
+            inv = 1 / math.sqrt(q)
+            x, y = -(st + si * ct) * inv, ti * inv
+            wi = (ca * x + sa * y, -sa * x + ca * y, (ct - si * st) * inv)
+            ixt, iwt = _gm_nodes(_gm_graded(W[2], W[3], -ti, bt / 2), n)
+            acc = 0.0
+            for so, wso in zip(ixs, iws):
+                row = 0.0
+                for to, wto in zip(ixt, iwt):
+                    q2 = 1 + so * so + to * to
+                    inv2 = 1 / math.sqrt(q2)
+                    x2, y2, z2 = (st + so * ct) * inv2, to * inv2, (ct - so * st) * inv2
+                    row += wto * inv2 / q2 * z2 * gm_ward_f(p, (ca * x2 + sa * y2, -sa * x2 + ca * y2, z2), wi)
+                acc += wso * row
+            terms.append(wsi * wti * inv / q * acc)
+    return math.fsum(terms)
+
+
+def gm_ward_reading(kind: str, p: Dict[str, Any], azimuth: float) -> Tuple[float, float]:
+    """(value, error bound) of a reading of a Ward paint."""
+    theta, src, rec, off = GM_GEOMETRY[kind]
+    std = float(gm_mirror_flux(theta, src, rec, GM_STANDARD_INDEX))
+    wins = [rec] + list(off) if kind in ("PGLOSS_HAZE_20", "PGLOSS_DOI_30") else [rec]
+    lo = [gm_ward_flux(theta, src, w, p, azimuth, 6) for w in wins]
+    hi = [gm_ward_flux(theta, src, w, p, azimuth, 12) for w in wins]
+    def read(ph: List[float]) -> float:
+        if kind == "PGLOSS_HAZE_20":
+            return 100 * (ph[1] + ph[2]) / std
+        if kind == "PGLOSS_DOI_30":
+            return 100 * (ph[0] - (ph[1] + ph[2]) / 2) / ph[0]
+        return 100 * ph[0] / std
+    v, v6 = read(hi), read(lo)
+    rounded = float("%.12g" % v)
+    return rounded, round_up_2(abs(v - v6) + abs(rounded - v) + 1e-13 * abs(v))
+
+
+def gen_glossmeter() -> Dict[str, Any]:
+    cases: List[Dict[str, Any]] = []
+
+    def add(function: str, inp: Dict[str, Any], value: Optional[float], error: float, tags: Sequence[str],
+            status: str = OK) -> None:
+        c: Dict[str, Any] = {"id": f"gm{len(cases):04d}", "function": function, "tags": list(tags),
+                             "input": inp, "status": status}
+        c["expected"] = {} if value is None else {"value": value}
+        c["error"] = Short(error)
+        cases.append(c)
+
+    # Fresnel reflectance of a dielectric (unpolarised)
+    for n, c, tags in [("1.567", "1", ["normal"]), ("1.567", "0.9396926207859084", ["20deg"]),
+                       ("1.567", "0.5", ["60deg"]), ("1.567", "0.08715574274765817", ["85deg"]),
+                       ("1.5", "0", ["grazing"]), ("2.4", "0.3", []), ("1.000001", "0.7", ["near_one"])]:
+        add("fresnel_dielectric", {"n": float(n), "c": float(c)}, D(gm_fresnel(mpf(float(n)), mpf(float(c)))), 0.0, tags)
+    for n, c, st in [(1.0, 0.5, E_ARGUMENT), (0.8, 0.5, E_ARGUMENT), (1.5, 1.5, E_ARGUMENT),
+                     (1.5, -0.1, E_ARGUMENT), (math.nan, 0.5, E_NONFINITE), (1.5, math.inf, E_NONFINITE)]:
+        add("fresnel_dielectric", {"n": enc(n), "c": enc(c)}, None, 0.0, ["error"], st)
+
+    # the primary standard's flux, and Fresnel mirrors of other indices (ratio × 100)
+    for kind in ("PGLOSS_GLOSS_20", "PGLOSS_GLOSS_60", "PGLOSS_GLOSS_85", "PGLOSS_DOI_30"):
+        theta, src, rec, off = GM_GEOMETRY[kind]
+        std = gm_mirror_flux(theta, src, rec, GM_STANDARD_INDEX)
+        add("glossmeter_standard_flux", {"kind": kind}, D(std), 0.0, ["standard"])
+        for n in ("1.567", "1.5", "1.6", "2.0"):
+            rs = gm_mirror_flux(theta, src, rec, mpf(n))
+            if kind == "PGLOSS_DOI_30":   # a mirror's image misses the ±0.3° windows: DOI 100
+                r03 = sum(gm_mirror_flux(theta, src, w, mpf(n)) for w in off) / 2
+                v = 100 * (rs - r03) / rs
+            else:
+                v = 100 * rs / std
+            add("glossmeter_read_fresnel", {"kind": kind, "n": float(n)}, D(v), 0.0,
+                ["standard"] if n == "1.567" else ["fresnel"])
+    # a perfect diffuser, in closed form
+    for kind in GM_GEOMETRY:
+        for rho in ("1", "0.5"):
+            add("glossmeter_read_lambert", {"kind": kind, "rho": float(rho)}, D(gm_lambert_reading(kind, mpf(rho))),
+                0.0, ["lambert", "closed_form"])
+    # Ward paints: every normalisation, anisotropic lobes and a rotated sample, coloured ρd
+    def paint(rd: Sequence[float], rs: float, ax: float, ay: float, norm: int) -> Dict[str, Any]:
+        return {"rho_d": list(rd), "rho_s": rs, "alpha_x": ax, "alpha_y": ay, "normalization": norm}
+    for kind, p, az, tags in [
+            ("PGLOSS_GLOSS_20", paint([0.193] * 3, 0.066, 0.07, 0.07, NORM_WARD), 0.0, ["paper"]),
+            ("PGLOSS_GLOSS_60", paint([0.03] * 3, 0.099, 0.04, 0.04, NORM_WARD_DUR), 0.0, ["ward_dur"]),
+            ("PGLOSS_GLOSS_85", paint([0.767] * 3, 0.033, 0.10, 0.10, NORM_BOUNDED), 0.0, ["bounded"]),
+            ("PGLOSS_GLOSS_60", paint([0.1] * 3, 0.05, 0.03, 0.08, NORM_WARD), 30.0, ["anisotropic", "azimuth"]),
+            ("PGLOSS_GLOSS_20", paint([0.6, 0.3, 0.1], 0.05, 0.02, 0.02, NORM_WARD), 0.0, ["coloured"]),
+            ("PGLOSS_HAZE_20", paint([0.2] * 3, 0.05, 0.015, 0.015, NORM_WARD), 0.0, ["haze"]),
+            ("PGLOSS_DOI_30", paint([0.2] * 3, 0.05, 0.008, 0.008, NORM_WARD), 0.0, ["doi"])]:
+        v, e = gm_ward_reading(kind, p, az)
+        add("glossmeter_read_physical", {"kind": kind, "physical": p, "azimuth_deg": az}, v, e, ["ward"] + tags)
+    notes = ("Readings of pgloss/glossmeter.h's virtual glossmeter. Each case's 'error' bounds the error of "
+             "'expected.value'; the runner asserts |got - value| <= got_error + error + 1e-12 |value|, where "
+             "got_error is the implementation's own error estimate, and that got_error stays below the tolerance "
+             "it was asked for.")
+    return {**header(["fresnel_dielectric", "glossmeter_standard_flux", "glossmeter_read_fresnel",
+                      "glossmeter_read_lambert", "glossmeter_read_physical"], "double", {}, notes),
+            "cases": cases}
+
 # ----------------------------------------------------------------------------------
 # Main.
 # ----------------------------------------------------------------------------------
@@ -2248,6 +2523,7 @@ def generate_all() -> Dict[str, str]:
         "material.json": gen_material(),
         "brdf_eval.json": gen_eval(mats),
         "brdf_sample.json": gen_sample(mats),
+        "glossmeter.json": gen_glossmeter(),
     }
     return {name: dump_file(doc) for name, doc in docs.items()}
 

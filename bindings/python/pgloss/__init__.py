@@ -50,6 +50,7 @@ Example::
 """
 
 from . import _core
+from . import glossmeter  # the virtual glossmeter (pgloss/glossmeter.h)
 from ._brdf import SampleRecord, eval, eval_pdf, material_init, pdf, sample, specular_probability
 from ._core import Material
 from ._paints import (Perceptual, Physical, check_perceptual, check_physical, perceptual_from_physical,

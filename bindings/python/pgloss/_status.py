@@ -19,6 +19,7 @@ class Status(enum.IntEnum):
 
     OK = 0
     WARN_ALPHA_UNTRUSTED = 1
+    WARN_QUADRATURE = 2
     ERR_NULL = -1
     ERR_NONFINITE = -2
     ERR_NEGATIVE = -3
@@ -31,6 +32,10 @@ class Status(enum.IntEnum):
     ERR_NORMALIZATION = -10
     ERR_ARGUMENT = -11
     ERR_RANDOM = -12
+    ERR_BRIDGE_BASE = -13
+    ERR_BRIDGE_SPECULAR = -14
+    ERR_BRIDGE_ROUGHNESS = -15
+    ERR_NO_FIT = -16
 
     @property
     def reason(self) -> str:

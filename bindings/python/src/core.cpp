@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "bind_glossmeter.h"
 #include "parallel.h"
 #include "pgloss/pgloss.h"
 
@@ -380,6 +381,7 @@ PYBIND11_MODULE(_core, mod) {
     mod.attr("ALPHA_TRUSTED_MAX") = PGLOSS_ALPHA_TRUSTED_MAX;
     mod.attr("BOUNDARY_TOLERANCE") = PGLOSS_BOUNDARY_TOLERANCE;
     mod.attr("LUMA") = py::make_tuple(PGLOSS_LUMA_R, PGLOSS_LUMA_G, PGLOSS_LUMA_B);
+    pgloss_py::bind_glossmeter(mod);  // pgloss.glossmeter (bind_glossmeter.cpp)
 
     // The thread count of the array calls; pgloss.set_num_threads validates it and reads
     // PGLOSS_NUM_THREADS at import (parallel.h).

@@ -19,5 +19,6 @@
 #include "pgloss/color.h"
 #include "pgloss/perceptual.h"
 #include "pgloss/perceptual_batch.h"
+#include "pgloss/glossmeter.h"
 
 #endif /* PGLOSS_PGLOSS_H */

@@ -22,6 +22,8 @@ typedef enum pgloss_status {
     PGLOSS_OK = 0,
     /* Warnings (> 0): the value is computed, but outside the paper's trusted range. */
     PGLOSS_WARN_ALPHA_UNTRUSTED = 1,   /* α > 0.2 (d < 0.8): Ward's lobe is not normalised there (paper §4) */
+    PGLOSS_WARN_QUADRATURE = 2,        /* a glossmeter reading missed its quadrature tolerance; its
+                                          error field holds the estimate (glossmeter.h) */
 
     /* Errors (< 0): the outputs hold the documented fallback. */
     PGLOSS_ERR_NULL = -1,              /* a required pointer argument is NULL */
@@ -38,8 +40,11 @@ typedef enum pgloss_status {
     PGLOSS_ERR_DIRECTION = -9,         /* a direction is zero-length or not finite */
     PGLOSS_ERR_NORMALIZATION = -10,    /* unknown pgloss_normalization value */
     PGLOSS_ERR_ARGUMENT = -11,         /* another argument is out of its domain (documented per function) */
-    PGLOSS_ERR_RANDOM = -12            /* a random number is NaN (every other value, ±Inf
+    PGLOSS_ERR_RANDOM = -12,           /* a random number is NaN (every other value, ±Inf
                                           included, is clamped to [0, 1 - 2^-24]) */
+    /* -13 to -15: the gloss bridge's (bridge.h) */
+    PGLOSS_ERR_NO_FIT = -16            /* no paint of the model gives these instrument readings
+                                          (glossmeter.h) */
 } pgloss_status;
 
 /* A static, human-readable English sentence naming the reason; never NULL. */
