@@ -586,7 +586,7 @@ static void image_spec(double *img, int m, double a, double eta, const double *v
 /* ---- The gloss meter of the bridge: Ward (ρd, ρs, α) by luminance least squares ---- */
 #define NW 56
 #define W_AMIN 0.004
-#define W_AMAX 0.6
+#define W_AMAX 0.8
 static double *WIMG; /* NW × NPIX */
 static double *DIMG; /* NPIX: Lambert */
 static double w_alpha(int k) { return W_AMIN * pow(W_AMAX / W_AMIN, (double)k / (NW - 1)); }
@@ -742,10 +742,10 @@ static void target_images(int m, double f0, double a, double *Dt, double *St)
 }
 
 /* ---- The table grid ---- */
-#define NBETA 7
+#define NBETA 9
 #define NF0 9
-#define NAT 16
-static const double F0_MIN = 0.01, F0_MAX = 0.25, AT_MIN = 0.004, AT_MAX = 0.5;
+#define NAT 20
+static const double F0_MIN = 0.01, F0_MAX = 0.25, AT_MIN = 0.004, AT_MAX = 0.35;
 #define NCHECK 16
 
 static double *OUT;   /* M_COUNT × NBETA × NF0 × NAT × 4 */

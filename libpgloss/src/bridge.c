@@ -22,8 +22,9 @@ static const char *const TARGET_NAME[PGLOSS_BRIDGE_TARGET_COUNT] = {
 #define F0_IOR_1_5 0.04
 /* Mitsuba's ext_ior default, "air" (src/core/ior table of mitsuba3: 1.000277). */
 #define MITSUBA_AIR_IOR 1.000277
-/* The axes' weights in the nearest-reachable search: L* first (one L* unit outweighs any
- * gloss difference the model has), then eq. 5's gloss distance. */
+/* The axes' weights in the nearest-reachable search: L* first (one L* unit weighs as one unit
+ * of c: a step of 25 of eq. 5's isogloss steps), then eq. 5's gloss distance. */
+#define WEIGHT_L 1.0
 #define WEIGHT_D PGLOSS_D_WEIGHT
 
 static int valid_target(pgloss_bridge_target t) { return (int)t >= 0 && (int)t < PGLOSS_BRIDGE_TARGET_COUNT; }
@@ -62,10 +63,20 @@ static void cr_weights(double x, int n, int idx[4], double w[4])
     w[1] = 1.5 * t3 - 2.5 * t2 + 1;
     w[2] = -1.5 * t3 + 2 * t2 + 0.5 * t;
     w[3] = 0.5 * t3 - 0.5 * t2;
-    /* At the ends the missing neighbour repeats the end node. */
-    for (int k = 0; k < 4; ++k) {
-        int j = i - 1 + k;
-        idx[k] = j < 0 ? 0 : j > n - 1 ? n - 1 : j;
+    /* At the ends the missing neighbour is the linear extrapolation of the last two nodes
+     * (v[-1] = 2 v[0] − v[1]), so that a reading linear along an axis is interpolated exactly
+     * up to the ends. */
+    idx[0] = i - 1; idx[1] = i; idx[2] = i + 1; idx[3] = i + 2;
+    if (idx[0] < 0) {
+        idx[0] = 0;
+        w[1] += 2 * w[0];
+        w[0] = -w[0];
+        idx[0] = 1;
+    }
+    if (idx[3] > n - 1) {
+        idx[3] = n - 2;
+        w[2] += 2 * w[3];
+        w[3] = -w[3];
     }
 }
 
@@ -166,7 +177,7 @@ static void residual(int model, const double u[3], const double want[3], double 
     double r[4], L, c, d;
     interpolate(model, u[0], u[1], exp(u[2]), r);
     paint_of_reading(r, &L, &c, &d);
-    res[0] = L - want[0];
+    res[0] = WEIGHT_L * (L - want[0]);
     res[1] = c - want[1];
     res[2] = WEIGHT_D * (d - want[2]);
 }
