@@ -436,20 +436,33 @@ static double lobe_DG(int m, double mi, double mo, double t2, double a)
     }
 }
 
+/* Ring r of the albedo quadrature over the half vector (96 rings, log-spaced in θh from a 1e-4
+ * cap to π/2, 48 cells over a half circle): its centre cosine and sine, cell area, tan²θh. */
+#define HR 96
+#define HA 48
+static void hring(int r, double *ch, double *sh, double *area, double *t2)
+{
+    const double q = pow(0.5 * PI / 1e-4, 1.0 / (HR - 1));
+    double ta = r == 0 ? 0 : 1e-4 * pow(q, r - 1), tb = r == HR - 1 ? 0.5 * PI : 1e-4 * pow(q, r);
+    double ca = cos(ta), cb = cos(tb);
+    *ch = 0.5 * (ca + cb);
+    *sh = sqrt(1 - *ch * *ch);
+    *area = (ca - cb) * PI / HA;
+    *t2 = (1 - *ch * *ch) / (*ch * *ch);
+}
+
 /* Integral over the half vector h of g(h) for a view at cosine mu in the local frame:
  * directional albedos. kind 0: D G /(4 μo) (F = 1); 1: times F(ωo·h, eta); 2: times Schlick's
  * (1 − ωo·h)^5. Log-polar rings in θh as the pixel quadrature, 96 × 48 cells over a half
  * circle (the integrand is even in φ). */
 static double albedo(int m, double mu, double a, int kind, double eta)
 {
-    const int R = 96, A = 48;
-    double q = pow(0.5 * PI / 1e-4, 1.0 / (R - 1)), so = sqrt(1 - mu * mu), sum = 0;
-    for (int r = 0; r < R; ++r) {
-        double ta = r == 0 ? 0 : 1e-4 * pow(q, r - 1), tb = r == R - 1 ? 0.5 * PI : 1e-4 * pow(q, r);
-        double ca = cos(ta), cb = cos(tb), ch = 0.5 * (ca + cb), sh = sqrt(1 - ch * ch);
-        double area = (ca - cb) * PI / A, t2 = (1 - ch * ch) / (ch * ch);
-        for (int k = 0; k < A; ++k) {
-            double ph = PI * (k + 0.5) / A;
+    double so = sqrt(1 - mu * mu), sum = 0;
+    for (int r = 0; r < HR; ++r) {
+        double ch, sh, area, t2;
+        hring(r, &ch, &sh, &area, &t2);
+        for (int k = 0; k < HA; ++k) {
+            double ph = PI * (k + 0.5) / HA;
             double oh = so * sh * cos(ph) + mu * ch;
             if (oh <= 0) continue;
             double mi = 2 * oh * ch - mu;
@@ -468,14 +481,12 @@ static double albedo(int m, double mu, double a, int kind, double eta)
  * D(m) G1(wi, m) (wi·m)/μ, times (1 − F) G1(refracted) or F G1(reflected). */
 static double rough_interface(int m, double mu, double a, double eta, int transmit)
 {
-    const int R = 96, A = 48;
-    double q = pow(0.5 * PI / 1e-4, 1.0 / (R - 1)), so = sqrt(1 - mu * mu), sum = 0;
-    for (int r = 0; r < R; ++r) {
-        double ta = r == 0 ? 0 : 1e-4 * pow(q, r - 1), tb = r == R - 1 ? 0.5 * PI : 1e-4 * pow(q, r);
-        double ca = cos(ta), cb = cos(tb), ch = 0.5 * (ca + cb), sh = sqrt(1 - ch * ch);
-        double area = (ca - cb) * PI / A, t2 = (1 - ch * ch) / (ch * ch);
-        for (int k = 0; k < A; ++k) {
-            double ph = PI * (k + 0.5) / A;
+    double so = sqrt(1 - mu * mu), sum = 0;
+    for (int r = 0; r < HR; ++r) {
+        double ch, sh, area, t2;
+        hring(r, &ch, &sh, &area, &t2);
+        for (int k = 0; k < HA; ++k) {
+            double ph = PI * (k + 0.5) / HA;
             double c = so * sh * cos(ph) + mu * ch; /* wi·m */
             if (c <= 0) continue;
             double D = m == M_RP_BECKMANN ? beck_D(t2, a) : ggx_D(t2, a);
@@ -492,9 +503,7 @@ static double rough_interface(int m, double mu, double a, double eta, int transm
                 if (vz <= 0) continue;
                 val = F;
             }
-            double mv = fabs(vz) / sqrt(vz * vz + 0); /* cosine of the outgoing direction */
-            (void)mv;
-            /* |v| = 1 for both reflected and refracted unit directions. */
+            /* |v| = 1 for both the reflected and the refracted direction: |vz| is its cosine. */
             double g1o = m == M_RP_BECKMANN ? beck_G1(fabs(vz), a) : 1 / (1 + ggx_lambda(fabs(vz), a));
             sum += 2 * D * g1i * c / mu * val * g1o * ch * area;
         }
