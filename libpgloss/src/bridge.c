@@ -7,7 +7,14 @@
 
 #include "pgloss/bridge.h"
 
+#include "bridge_meter.h"
 #include "bridge_tables.inc"
+
+/* The tables as the shared reader takes them (bridge_meter.h). */
+static const pgloss__bridge_tables TABLES = {
+    pgloss__bridge_products, pgloss__bridge_rint, PGLOSS__BRIDGE_NF0, PGLOSS__BRIDGE_NAT, PGLOSS__BRIDGE_NFR,
+    PGLOSS__BRIDGE_RINT_MODEL0, PGLOSS__BRIDGE_F0_MIN, PGLOSS__BRIDGE_F0_MAX, PGLOSS__BRIDGE_AT_MIN,
+    PGLOSS__BRIDGE_AT_MAX, {pgloss__bridge_gram, pgloss__bridge_dw, PGLOSS__BRIDGE_DD}};
 
 /* The BRDF model each target renders with (the models of tools/bridge_tables.c). */
 enum { MODEL_PRINCIPLED = 0, MODEL_MATERIALX = 1, MODEL_RP_GGX = 2, MODEL_RP_BECKMANN = 3 };
@@ -52,56 +59,11 @@ pgloss_status pgloss_bridge_target_from_name(const char *name, pgloss_bridge_tar
     return PGLOSS_ERR_ARGUMENT;
 }
 
-/* ---- The interpolant: Catmull-Rom in each of (β, F0, log α) ---- */
-static void cr_weights(double x, int n, int idx[4], double w[4])
-{
-    int i = (int)floor(x);
-    if (i < 0) i = 0;
-    if (i > n - 2) i = n - 2;
-    const double t = x - i, t2 = t * t, t3 = t2 * t;
-    w[0] = -0.5 * t3 + t2 - 0.5 * t;
-    w[1] = 1.5 * t3 - 2.5 * t2 + 1;
-    w[2] = -1.5 * t3 + 2 * t2 + 0.5 * t;
-    w[3] = 0.5 * t3 - 0.5 * t2;
-    /* At the ends the missing neighbour is the linear extrapolation of the last two nodes
-     * (v[-1] = 2 v[0] − v[1]), so that a reading linear along an axis is interpolated exactly
-     * up to the ends. */
-    idx[0] = i - 1; idx[1] = i; idx[2] = i + 1; idx[3] = i + 2;
-    if (idx[0] < 0) {
-        idx[0] = 0;
-        w[1] += 2 * w[0];
-        w[0] = -w[0];
-        idx[0] = 1;
-    }
-    if (idx[3] > n - 1) {
-        idx[3] = n - 2;
-        w[2] += 2 * w[3];
-        w[3] = -w[3];
-    }
-}
-
+/* The reading of a model at (β, F0, α) inside the tables: the meter applied to the image
+ * whose products are interpolated (bridge_meter.h); β enters exactly. */
 static void interpolate(int model, double beta, double f0, double alpha, double out[4])
 {
-    int ib[4], jf[4], ka[4];
-    double wb[4], wf[4], wa[4];
-    cr_weights(beta * (PGLOSS__BRIDGE_NBETA - 1), PGLOSS__BRIDGE_NBETA, ib, wb);
-    cr_weights((f0 - PGLOSS__BRIDGE_F0_MIN) / (PGLOSS__BRIDGE_F0_MAX - PGLOSS__BRIDGE_F0_MIN) * (PGLOSS__BRIDGE_NF0 - 1),
-               PGLOSS__BRIDGE_NF0, jf, wf);
-    cr_weights(log(alpha / PGLOSS__BRIDGE_AT_MIN) / log(PGLOSS__BRIDGE_AT_MAX / PGLOSS__BRIDGE_AT_MIN) *
-                   (PGLOSS__BRIDGE_NAT - 1),
-               PGLOSS__BRIDGE_NAT, ka, wa);
-    out[0] = out[1] = out[2] = out[3] = 0;
-    for (int a = 0; a < 4; ++a)
-        for (int b = 0; b < 4; ++b)
-            for (int c = 0; c < 4; ++c) {
-                const double w = wb[a] * wf[b] * wa[c];
-                const double *v = &pgloss__bridge_reading[((((size_t)model * PGLOSS__BRIDGE_NBETA + (size_t)ib[a]) *
-                                                                 PGLOSS__BRIDGE_NF0 + (size_t)jf[b]) *
-                                                                PGLOSS__BRIDGE_NAT + (size_t)ka[c]) * 4];
-                for (int k = 0; k < 4; ++k) out[k] += w * v[k];
-            }
-    /* The reading's α is stored as is; interpolating log α would be smoother, but the table's
-     * α varies slowly enough across a cell (docs/bridge.md: interpolation errors). */
+    pgloss__bridge_table_read(&TABLES, model, beta, f0, alpha, out);
 }
 
 /* The box a target's (β, F0, α) must stay in. */
