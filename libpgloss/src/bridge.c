@@ -134,14 +134,19 @@ static int paint_of_reading(const double r[4], double *L, double *c, double *d)
 }
 
 /* Weighted residual of u = (β, F0, log α) against the wanted paint. */
-static void residual(int model, const double u[3], const double want[3], double res[3])
+static void residual_of_reading(const double r[4], const double want[3], double res[3])
 {
-    double r[4], L, c, d;
-    interpolate(model, u[0], u[1], exp(u[2]), r);
+    double L, c, d;
     paint_of_reading(r, &L, &c, &d);
     res[0] = WEIGHT_L * (L - want[0]);
     res[1] = c - want[1];
     res[2] = WEIGHT_D * (d - want[2]);
+}
+static void residual(int model, const double u[3], const double want[3], double res[3])
+{
+    double r[4];
+    interpolate(model, u[0], u[1], exp(u[2]), r);
+    residual_of_reading(r, want, res);
 }
 
 static double norm2(const double r[3]) { return r[0] * r[0] + r[1] * r[1] + r[2] * r[2]; }
@@ -309,19 +314,27 @@ pgloss_status pgloss_bridge_from_perceptual(pgloss_bridge_target target, const p
     const double want[3] = {paint->L, paint->c, paint->d};
     const int model = TARGET_MODEL[target];
 
-    /* Start from the best node of a coarse grid over the box, then refine. */
+    /* Start from the best node of a coarse grid over the box, then refine. The image's
+     * products depend on (F0, α) alone: one interpolation serves every β. */
     double u[3] = {0, 0, 0}, best = INFINITY;
-    for (int i = 0; i < 5; ++i)
-        for (int j = 0; j < 5; ++j)
-            for (int k = 0; k < 7; ++k) {
-                double v[3] = {bx.lo[0] + (bx.hi[0] - bx.lo[0]) * i / 4.0, bx.lo[1] + (bx.hi[1] - bx.lo[1]) * j / 4.0,
-                               bx.lo[2] + (bx.hi[2] - bx.lo[2]) * k / 6.0}, r[3];
-                residual(model, v, want, r);
-                if (norm2(r) < best) {
-                    best = norm2(r);
-                    memcpy(u, v, sizeof v);
+    for (int j = 0; j < 5; ++j)
+        for (int k = 0; k < 7; ++k) {
+            const double f0 = bx.lo[1] + (bx.hi[1] - bx.lo[1]) * j / 4.0, la = bx.lo[2] + (bx.hi[2] - bx.lo[2]) * k / 6.0;
+            double prod[PGLOSS__METER_NP];
+            const double scale = pgloss__bridge_table_products(&TABLES, model, f0, exp(la), prod);
+            for (int i = 0; i < 5; ++i) {
+                const double beta = bx.lo[0] + (bx.hi[0] - bx.lo[0]) * i / 4.0;
+                double r[4], res[3];
+                pgloss__meter_read_target(&TABLES.basis, prod, beta * scale, r);
+                residual_of_reading(r, want, res);
+                if (norm2(res) < best) {
+                    best = norm2(res);
+                    u[0] = beta;
+                    u[1] = f0;
+                    u[2] = la;
                 }
             }
+        }
     const double f = solve_box(model, &bx, want, u);
 
     double base[3];

@@ -101,9 +101,10 @@ static inline double pgloss__meter_fit(const pgloss__meter_basis *b, double la, 
 }
 
 /* The meter's reading (ρd, ρs, α, relative RMS residual) of an image with products xw (NW),
- * xd = ⟨X, D⟩, xx = ⟨X, X⟩: the best node, then bisection on the sign of dQ/dla over the
- * node interval on the rising side. (A search on the residual itself would find α only to
- * the square root of the rounding error, too coarse to invert.) */
+ * xd = ⟨X, D⟩, xx = ⟨X, X⟩: the best node, then the root of dQ/dla in the node interval on its
+ * rising side, by regula falsi (Illinois) kept inside a shrinking bracket. (A search on the
+ * residual itself would find α only to the square root of the rounding error, too coarse to
+ * invert.) */
 static inline void pgloss__meter_read(const pgloss__meter_basis *b, const double *xw, double xd, double xx,
                                       double out[4])
 {
@@ -111,25 +112,44 @@ static inline void pgloss__meter_read(const pgloss__meter_basis *b, const double
     const double h = (lmax - lmin) / (PGLOSS__METER_NW - 1);
     double rd, rs, dq, best = -INFINITY;
     int kb = 0;
-    for (int k = 0; k < PGLOSS__METER_NW; ++k) {
-        const double q = pgloss__meter_fit(b, lmin + k * h, xw, xd, &rd, &rs, &dq);
+    for (int k = 0; k < PGLOSS__METER_NW; ++k) { /* at a node W(α) is the node image */
+        const double y = xw[k], bw = b->dw[k], c = b->gram[k * 7 + 3];
+        const double q = (xd * xd * c - 2 * xd * y * bw + y * y * b->dd) / (b->dd * c - bw * bw);
         if (q > best) {
             best = q;
             kb = k;
         }
     }
-    pgloss__meter_fit(b, lmin + kb * h, xw, xd, &rd, &rs, &dq);
-    double lo = lmin + kb * h, hi = lo;
-    if (dq > 0 && kb < PGLOSS__METER_NW - 1)
+    double lo = lmin + kb * h, hi = lo, glo, ghi;
+    pgloss__meter_fit(b, lo, xw, xd, &rd, &rs, &glo);
+    ghi = glo;
+    if (glo > 0 && kb < PGLOSS__METER_NW - 1) {
         hi = lo + h;
-    else if (dq < 0 && kb > 0)
+        pgloss__meter_fit(b, hi, xw, xd, &rd, &rs, &ghi);
+    } else if (glo < 0 && kb > 0) {
         lo = hi - h;
-    for (int it = 0; it < 64 && hi - lo > 1e-15; ++it) {
-        const double mid = 0.5 * (lo + hi);
-        pgloss__meter_fit(b, mid, xw, xd, &rd, &rs, &dq);
-        if (dq > 0) lo = mid; else hi = mid;
+        pgloss__meter_fit(b, lo, xw, xd, &rd, &rs, &glo);
     }
-    const double la = 0.5 * (lo + hi), q = pgloss__meter_fit(b, la, xw, xd, &out[0], &out[1], &dq);
+    double la = glo <= 0 ? lo : hi; /* no sign change: the maximum is at that end */
+    if (glo > 0 && ghi < 0) {
+        int side = 0;
+        for (int it = 0; it < 100 && hi - lo > 1e-15; ++it) {
+            la = (lo * ghi - hi * glo) / (ghi - glo);
+            if (!(la > lo && la < hi)) la = 0.5 * (lo + hi);
+            pgloss__meter_fit(b, la, xw, xd, &rd, &rs, &dq);
+            if (dq == 0) break;
+            if (dq > 0) {
+                lo = la; glo = dq;
+                if (side == 1) ghi *= 0.5;
+                side = 1;
+            } else {
+                hi = la; ghi = dq;
+                if (side == -1) glo *= 0.5;
+                side = -1;
+            }
+        }
+    }
+    const double q = pgloss__meter_fit(b, la, xw, xd, &out[0], &out[1], &dq);
     out[2] = exp(la);
     out[3] = xx > 0 ? sqrt(fmax(xx - q, 0) / xx) : 0;
 }
@@ -176,25 +196,30 @@ typedef struct {
 
 static inline double pgloss__axis(double x, double lo, double hi, int n) { return 1 + (x - lo) / (hi - lo) * (n - 3); }
 
-/* The reading (ρd, ρs, α, residual) of model m at base luminance beta, F0 f0, α alpha (inside
- * the tables' range). Models from rint_model0 on are Mitsuba's roughplastic, whose diffuse
- * image the tables hold without its factor 1/(η² (1 − R_int)): that factor, from the R_int
- * table, scales beta. */
+/* The products p (PGLOSS__METER_NP) of model m at F0 f0 and α alpha (inside the tables'
+ * range), and the factor of β: models from rint_model0 on are Mitsuba's roughplastic, whose
+ * diffuse image the tables hold without its factor 1/(η² (1 − R_int)), from the R_int table. */
+static inline double pgloss__bridge_table_products(const pgloss__bridge_tables *t, int m, double f0, double alpha,
+                                                   double *p)
+{
+    const double ua = pgloss__axis(log(alpha), log(t->at_min), log(t->at_max), t->nat);
+    pgloss__bicubic(&t->products[(size_t)m * (size_t)t->nf0 * (size_t)t->nat * PGLOSS__METER_NP], t->nf0, t->nat,
+                    PGLOSS__METER_NP, pgloss__axis(sqrt(f0), sqrt(t->f0_min), sqrt(t->f0_max), t->nf0), ua, p);
+    if (m < t->rint_model0)
+        return 1;
+    double rint;
+    const double s = sqrt(f0), eta = (1 + s) / (1 - s);
+    pgloss__bicubic(&t->rint[(size_t)(m - t->rint_model0) * (size_t)t->nat * (size_t)t->nfr], t->nat, t->nfr, 1, ua,
+                    pgloss__axis(f0, t->f0_min, t->f0_max, t->nfr), &rint);
+    return 1 / (eta * eta * (1 - rint));
+}
+
+/* The reading (ρd, ρs, α, residual) of model m at base luminance beta, F0 f0, α alpha. */
 static inline void pgloss__bridge_table_read(const pgloss__bridge_tables *t, int m, double beta, double f0,
                                              double alpha, double out[4])
 {
     double p[PGLOSS__METER_NP];
-    const double ua = pgloss__axis(log(alpha), log(t->at_min), log(t->at_max), t->nat);
-    pgloss__bicubic(&t->products[(size_t)m * (size_t)t->nf0 * (size_t)t->nat * PGLOSS__METER_NP], t->nf0, t->nat,
-                    PGLOSS__METER_NP, pgloss__axis(sqrt(f0), sqrt(t->f0_min), sqrt(t->f0_max), t->nf0), ua, p);
-    double scale = 1;
-    if (m >= t->rint_model0) {
-        double rint;
-        const double s = sqrt(f0), eta = (1 + s) / (1 - s);
-        pgloss__bicubic(&t->rint[(size_t)(m - t->rint_model0) * (size_t)t->nat * (size_t)t->nfr], t->nat, t->nfr, 1,
-                        ua, pgloss__axis(f0, t->f0_min, t->f0_max, t->nfr), &rint);
-        scale = 1 / (eta * eta * (1 - rint));
-    }
+    const double scale = pgloss__bridge_table_products(t, m, f0, alpha, p);
     pgloss__meter_read_target(&t->basis, p, beta * scale, out);
 }
 
