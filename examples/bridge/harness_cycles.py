@@ -397,8 +397,10 @@ def render(material: dict, out: Path, **kw) -> np.ndarray:
 def main(argv: Optional[List[str]] = None) -> int:
     argv = sys.argv[1:] if argv is None else argv
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("material", help="JSON object (or a file holding one)")
-    ap.add_argument("--out", type=Path, required=True)
+    ap.add_argument("material", nargs="?", help="JSON object (or a file holding one)")
+    ap.add_argument("--out", type=Path)
+    ap.add_argument("--jobs", type=Path, help="a JSON list of {material, out, spp, seed}: render them all in this "
+                    "process (bpy starts once)")
     ap.add_argument("--spp", type=int, default=1024)
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--size", default="160x120")
@@ -406,15 +408,24 @@ def main(argv: Optional[List[str]] = None) -> int:
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--scene", type=Path, default=SCENE)
     a = ap.parse_args(argv)
-    try:
-        mat = parameters(a.material)
-    except (ValueError, OSError) as e:
-        print(f"harness_cycles: {e}", file=sys.stderr)
-        return 2
     size = tuple(int(v) for v in a.size.split("x"))
     crop = tuple(int(v) for v in a.crop.split(",")) if a.crop else None
-    img = render(mat, a.out, spp=a.spp, seed=a.seed, size=size, crop=crop, threads=a.threads, scene_path=a.scene)
-    print(f"{a.out}: {img.shape[1]}x{img.shape[0]}, {a.spp} spp, Cycles (bpy 5.0.1), {json.dumps(mat)}")
+    if a.jobs is not None:
+        jobs = json.loads(a.jobs.read_text())
+    elif a.material is not None and a.out is not None:
+        jobs = [{"material": a.material, "out": str(a.out), "spp": a.spp, "seed": a.seed}]
+    else:
+        ap.error("give MATERIAL and --out, or --jobs")
+    for job in jobs:
+        try:
+            mat = parameters(job["material"] if isinstance(job["material"], str) else json.dumps(job["material"]))
+        except (ValueError, OSError) as e:
+            print(f"harness_cycles: {e}", file=sys.stderr)
+            return 2
+        out = Path(job["out"])
+        spp, seed = int(job.get("spp", a.spp)), int(job.get("seed", a.seed))
+        img = render(mat, out, spp=spp, seed=seed, size=size, crop=crop, threads=a.threads, scene_path=a.scene)
+        print(f"{out}: {img.shape[1]}x{img.shape[0]}, {spp} spp, Cycles (bpy 5.0.1), {json.dumps(mat)}", flush=True)
     return 0
 
 

@@ -19,13 +19,14 @@ control in a renderer that is not ours).
     python examples/bridge/harness_mitsuba.py BSDF.json|'{…}' --out sphere.exr [--spp 1024]
         [--seed 1] [--size 160x120] [--full] [--threads 2]
 
-Needs DRJIT_LIBLLVM_PATH at LLVM 19's libLLVM where an older LLVM is installed too
-(scripts/test-bridge.sh sets it).
+Dr.Jit loads the first libLLVM it finds, and clang's LLVM 14 aborts it ("Cannot select:
+fminimum"): unless DRJIT_LIBLLVM_PATH is set, LLVM 19's (Debian's libllvm19) is chosen here.
 """
 from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 import tempfile
 from pathlib import Path
@@ -67,9 +68,14 @@ def bsdf_dict(p: dict) -> dict:
     return p
 
 
+LLVM_19 = ("/usr/lib/x86_64-linux-gnu/libLLVM-19.so", "/usr/lib/llvm-19/lib/libLLVM-19.so")
+
+
 def render(bsdf: dict, *, spp: int, seed: int, size: tuple[int, int], crop: tuple[int, int, int, int] | None,
            threads: int) -> np.ndarray:
     """Linear RGB (rows, columns, 3) of the scene with ``bsdf`` on the sphere."""
+    if "DRJIT_LIBLLVM_PATH" not in os.environ:
+        os.environ.update({"DRJIT_LIBLLVM_PATH": p for p in LLVM_19 if os.path.exists(p)})
     import drjit as dr  # noqa: PLC0415
     import mitsuba as mi  # noqa: PLC0415
 

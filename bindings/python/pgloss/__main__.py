@@ -242,6 +242,10 @@ COMMANDS: Tuple[Command, ...] = tuple(_tool(n) for n in (
             "(serve), proximity matrices and magnitude table (export)", _experiment_arguments, _experiment_run,
             "Pairwise gloss differences (§3.2.3) and magnitude estimation (§3.3.3) in a browser, stored in "
             "SQLite (see pgloss.experiment)."),
+    Command("image-meter", "(c, d) of the sphere in a linear render of the stimulus scene (the image gloss meter)",
+            lambda p: __import__("pgloss.image_meter").image_meter.add_arguments(p),
+            lambda a: __import__("pgloss.image_meter").image_meter.run(a),
+            "Fits the Ward paint that reproduces the sphere's pixels (see pgloss.image_meter, docs/image-meter.md)."),
 )
 
 

@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
+# The gloss bridge's instruments (tests/bridge): the image gloss meter (pgloss.image_meter) on
+# pgloss-tracer Ward renders of known paints, and one low-spp batch per real-renderer harness
+# (examples/bridge): Mitsuba 3 from PyPI (llvm_ad_rgb, LLVM 19), Cycles from PyPI bpy 5.0.1
+# (.venv-bpy of scripts/test-osl.sh: Principled, glTF through Blender's importer, MaterialX
+# open_pbr_surface through genosl). Sets up .venv-bridge (Mitsuba, OpenImageIO, MaterialX, the
+# pgloss package) and pgloss-tracer (build-tracer-test, as scripts/test-tracer.sh).
+# Nothing is skipped: with PGLOSS_REQUIRE_ALL=1 (the default here, and what CI sets) a skipped
+# test is a failure.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+export PGLOSS_REQUIRE_ALL="${PGLOSS_REQUIRE_ALL:-1}"
+# libllvm19: Dr.Jit's LLVM back end (Mitsuba's llvm_ad_rgb); the tracer's packages as test-tracer.sh.
+bash scripts/bootstrap.sh apt g++ cmake python3 python3-venv python3-dev libllvm19 pkg-config libembree-dev \
+  libopenimageio-dev openimageio-tools libopencolorio-dev libglm-dev fonts-dejavu-core libgtest-dev
+PGLOSS_OSL_SETUP_ONLY=1 bash scripts/test-osl.sh
+
+root=$PWD
+venv=.venv-bridge
+py=$venv/bin/python
+pins=(mitsuba==3.9.1 drjit==1.5.0 openimageio==3.2.2.0 MaterialX==1.39.5 numpy==2.4.6 pytest==9.2.0
+      scikit-build-core==1.1.2 pybind11==3.1.0)
+if [[ ! -x $py ]] || [[ "$(cat "$venv/.pgloss-pins" 2>/dev/null)" != "${pins[*]}" ]]; then
+  echo "== creating $venv (${pins[*]})"
+  rm -rf "$venv"
+  /usr/bin/python3 -m venv "$venv"
+  "$py" -m pip install -q --disable-pip-version-check "${pins[@]}"
+  echo "${pins[*]}" >"$venv/.pgloss-pins"
+fi
+sources=$(find pyproject.toml CMakeLists.txt libpgloss bindings/python -type f \
+            -not -path '*/__pycache__/*' -print0 | sort -z | xargs -0 sha256sum | sha256sum | cut -c1-16)
+if [[ "$(cat "$venv/.pgloss-installed" 2>/dev/null)" != "$sources" ]] || ! (cd / && "$root/$py" -c "import pgloss._core") 2>/dev/null; then
+  echo "== pip install . into $venv (sources changed)"
+  export CMAKE_BUILD_PARALLEL_LEVEL="${CMAKE_BUILD_PARALLEL_LEVEL:-2}"
+  "$py" -m pip install -q --disable-pip-version-check --no-build-isolation --force-reinstall --no-deps .
+  echo "$sources" >"$venv/.pgloss-installed"
+fi
+
+echo "== pgloss-tracer (build-tracer-test)"
+cmake --preset tracer-test >/dev/null
+cmake --build --preset tracer-test --target pgloss-tracer >/dev/null
+
+# Dr.Jit loads the first libLLVM it finds; clang's LLVM 14 aborts it ("Cannot select: fminimum").
+llvm=$(ls /usr/lib/x86_64-linux-gnu/libLLVM-19.so /usr/lib/llvm-19/lib/libLLVM-19.so 2>/dev/null | head -1 || true)
+[[ -n $llvm ]] || { echo "test-bridge: libLLVM-19.so not found (libllvm19)"; exit 1; }
+export DRJIT_LIBLLVM_PATH=$llvm
+start=$SECONDS
+set +e
+PGLOSS_TRACER=$root/build-tracer-test/examples/tracer/pgloss-tracer \
+  "$py" -m pytest -q -s -p no:cacheprovider -rs tests/bridge 2>&1 | grep -v -e 'DeprecationWarning' -e 'use_nodes'
+rc=${PIPESTATUS[0]}
+set -e
+echo "== bridge tests: exit $rc ($((SECONDS - start)) s)"
+exit "$rc"
