@@ -402,11 +402,12 @@ def main(argv: Optional[List[str]] = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("report", choices=("harnesses", "table"))
     ap.add_argument("--spp", type=int, default=1024, help="spp of each validation render (%(default)s)")
-    ap.add_argument("--basis-spp", type=int, default=1024, help="spp of the meter's basis renders (%(default)s)")
+    ap.add_argument("--basis-spp", type=int, default=2048, help="spp of the meter's basis renders (%(default)s)")
     ap.add_argument("--lambert-spp", type=int, default=4096, help="total spp per renderer of check 1 (%(default)s)")
     ap.add_argument("--noise-spp", default="64,256,1024")
     ap.add_argument("--noise-reps", type=int, default=8)
-    ap.add_argument("--alphas", type=int, default=40, help="log-spaced α nodes of the basis, 0.01-0.3 (%(default)s)")
+    ap.add_argument("--alphas", type=int, default=21, help="log-spaced α nodes of the basis, 0.01-0.3 (%(default)s; "
+                    "19 %% steps interpolate to 0.0003 in d, docs/image-meter.md)")
     ap.add_argument("--targets", default=",".join(TARGETS))
     ap.add_argument("--quick", action="store_true", help="grey paints only (a smoke run; the report is printed, not written)")
     ap.add_argument("--tracer", type=Path, default=Path(os.environ.get("PGLOSS_TRACER",

@@ -51,6 +51,8 @@ SETUPS: Tuple[str, ...] = ("rho_d-known", "rho_d-fitted")
 DEFAULT_ALPHAS: Tuple[float, ...] = tuple(float(a) for a in np.geomspace(0.01, 0.3, 40))
 #: ρs of the basis's Ward renders (the middle of Fig. 4's 0.033–0.099).
 RHO_S_REF = 0.066
+#: Version of the cached basis's layout (part of its cache key).
+BASIS_FORMAT = 2
 #: The meter's frame: the stimulus camera at 160 × 120 (2,114 sphere pixels).
 DEFAULT_SIZE = (160, 120)
 #: Noise of (c, d) fitted to a Ward render of n spp against a 4,096-spp basis (measured; see
@@ -201,13 +203,17 @@ def sphere_pixels(image: np.ndarray, view: View) -> np.ndarray:
 @dataclass
 class Basis:
     """Sphere-pixel luminances of pgloss-tracer renders at one ρd: ``diffuse`` (ρs = 0) and
-    ``ward[k]`` (ρs = ``rho_s_ref``, α = ``alphas[k]``)."""
+    ``ward[k]`` (ρs = ``rho_s_ref``, α = ``alphas[k]``), each the mean of two renders of spp/2
+    with seeds s and s + 1; ``diffuse_half``, ``ward_half`` are half their differences (the
+    basis's own noise, for the fit's correction)."""
 
     rho_d: float
     rho_s_ref: float
     alphas: np.ndarray
     diffuse: np.ndarray
     ward: np.ndarray
+    diffuse_half: np.ndarray
+    ward_half: np.ndarray
     spp: int
     view: View
     meta: Dict[str, str] = field(default_factory=dict)
@@ -216,7 +222,7 @@ class Basis:
         path.parent.mkdir(parents=True, exist_ok=True)
         tmp = path.with_suffix(".tmp.npz")
         np.savez_compressed(tmp, alphas=self.alphas, diffuse=self.diffuse, ward=self.ward,
-                            header=json.dumps({"rho_d": self.rho_d, "rho_s_ref": self.rho_s_ref, "spp": self.spp,
+                            diffuse_half=self.diffuse_half, ward_half=self.ward_half, header=json.dumps({"rho_d": self.rho_d, "rho_s_ref": self.rho_s_ref, "spp": self.spp,
                                                "view": asdict(self.view), "meta": self.meta}))
         os.replace(tmp, path)
 
@@ -226,7 +232,8 @@ class Basis:
             h = json.loads(str(z["header"]))
             v = h["view"]
             view = View(**{k: tuple(x) if isinstance(x, list) else x for k, x in v.items()})
-            return cls(h["rho_d"], h["rho_s_ref"], z["alphas"], z["diffuse"], z["ward"], h["spp"], view, h["meta"])
+            return cls(h["rho_d"], h["rho_s_ref"], z["alphas"], z["diffuse"], z["ward"], z["diffuse_half"],
+                       z["ward_half"], h["spp"], view, h["meta"])
 
 
 def scene_with_paint(text: str, line: str) -> str:
@@ -256,7 +263,7 @@ def paint_line(rho_d: float, rho_s: float = 0.0, alpha: float = 0.1) -> str:
 def basis_key(scene_text: str, tracer_version: str, rho_d: float, alphas: Sequence[float], spp: int,
               size: Tuple[int, int], seed: int, rho_s_ref: float = RHO_S_REF) -> str:
     """The cache file name: ρd, spp and a hash of everything else the pixels depend on."""
-    h = hashlib.sha256(json.dumps([scene_text, tracer_version, list(map(float, alphas)), size, seed, rho_s_ref,
+    h = hashlib.sha256(json.dumps([BASIS_FORMAT, scene_text, tracer_version, list(map(float, alphas)), size, seed, rho_s_ref,
                                    float(rho_d)]).encode()).hexdigest()[:12]
     return f"basis-rd{rho_d:.6g}-spp{spp}-{h}.npz"
 
@@ -302,19 +309,22 @@ def render_basis(tracer: Path, scene_path: Path, rho_d: float, *, alphas: Sequen
     threads = threads or os.cpu_count() or 1
     text_crop, crop_size = crop_scene(text, view)  # the crop window alone (View.crop)
     t0 = time.monotonic()
+    if spp < 2 or spp % 2:
+        raise MeterError(f"the basis's spp must be even (two halves), not {spp}")
     with tempfile.TemporaryDirectory(prefix="pgloss-meter-") as tmp:
-        def lum(line: str) -> np.ndarray:
-            img = render_tracer(tracer, scene_with_paint(text_crop, line), spp, crop_size, seed, threads, Path(tmp))
-            return sphere_pixels(img, view)
+        def lum(line: str) -> Tuple[np.ndarray, np.ndarray]:
+            y = [sphere_pixels(render_tracer(tracer, scene_with_paint(text_crop, line), spp // 2, crop_size, sd,
+                                             threads, Path(tmp)), view) for sd in (seed, seed + 1)]
+            return (y[0] + y[1]) / 2, (y[0] - y[1]) / 2
 
-        diffuse = lum(paint_line(rho_d))
-        ward = np.empty((alphas.size, diffuse.size))
+        diffuse, diffuse_half = lum(paint_line(rho_d))
+        ward, ward_half = np.empty((alphas.size, diffuse.size)), np.empty((alphas.size, diffuse.size))
         for k, a in enumerate(alphas):
-            ward[k] = lum(paint_line(rho_d, RHO_S_REF, a))
+            ward[k], ward_half[k] = lum(paint_line(rho_d, RHO_S_REF, a))
             if progress:
                 print(f"  basis rho_d {rho_d:g}: alpha {a:.4f} ({k + 1}/{alphas.size}), "
                       f"{time.monotonic() - t0:.0f} s", file=sys.stderr, flush=True)
-    b = Basis(float(rho_d), RHO_S_REF, alphas, diffuse, ward, spp, view,
+    b = Basis(float(rho_d), RHO_S_REF, alphas, diffuse, ward, diffuse_half, ward_half, spp, view,
               {"tracer": version, "scene": str(scene_path), "seed": str(seed)})
     if path is not None:
         b.save(path)
@@ -365,26 +375,39 @@ def fit(image: np.ndarray, basis: Basis, *, setup: str = "rho_d-known",
         keep = cos[mask] >= math.cos(math.radians(exclude_rim_deg))
     y, D, W = y_all[keep], basis.diffuse[keep], basis.ward[:, keep]
     dlt = W - D  # (K, n): the specular part of ρs_ref at each α
+    # The basis's own noise: half the difference of its two half-spp renders estimates the
+    # noise of their mean, pixel by pixel (docs/image-meter.md, "Noise").
+    nD = basis.diffuse_half[keep]
+    ndlt = basis.ward_half[:, keep] - nD
     u = np.log(basis.alphas)
     yy = float(y @ y)
 
-    def solve(delta: np.ndarray) -> Tuple[float, float, float]:
-        """(residual², scale of the diffuse image, t = ρs / ρs_ref) at one α."""
+    def solve(delta: np.ndarray, ndelta: np.ndarray) -> Tuple[float, float, float, float]:
+        """(corrected residual², residual², scale of the diffuse image, t = ρs / ρs_ref) at one α.
+        The model s D + t Δ carries the basis's noise s nD + t nΔ, whose expected square adds
+        to the residual and favours the α whose basis is least noisy; the corrected residual
+        ‖y − s D − t Δ‖² − ‖s nD + t nΔ‖² takes it out (errors-in-variables least squares)."""
         if setup == "rho_d-known":
-            t = max(float(delta @ (y - D)) / float(delta @ delta), 0.0)
-            r = y - D - t * delta
-            return float(r @ r), 1.0, t
-        a = np.array([[D @ D, D @ delta], [D @ delta, delta @ delta]])
-        s, t = np.linalg.solve(a, np.array([D @ y, delta @ y]))
-        if t < 0:
-            s, t = float(D @ y) / float(D @ D), 0.0
-        r = y - s * D - t * delta
-        return float(r @ r), float(s), float(t)
+            den = float(delta @ delta - ndelta @ ndelta)
+            if den <= 0:
+                den = float(delta @ delta)
+            s_, t = 1.0, max(float(delta @ (y - D) + nD @ ndelta) / den, 0.0)
+        else:
+            a = np.array([[D @ D - nD @ nD, D @ delta - nD @ ndelta], [D @ delta - nD @ ndelta,
+                                                                      delta @ delta - ndelta @ ndelta]])
+            s_, t = (float(v) for v in np.linalg.solve(a, np.array([D @ y, delta @ y])))
+            if t < 0:
+                s_, t = float(D @ y) / float(D @ D - nD @ nD), 0.0
+        r = y - s_ * D - t * delta
+        n = s_ * nD + t * ndelta
+        r2 = float(r @ r)
+        return r2 - float(n @ n), r2, s_, t
 
-    def at(x: float) -> Tuple[float, float, float]:
+    def at(x: float) -> Tuple[float, float, float, float]:
         k = min(int(np.searchsorted(u, x, side="right")) - 1, len(u) - 2)
         k = max(k, 0)
-        return solve(_catmull_rom(u, k, (x - u[k]) / (u[k + 1] - u[k]), dlt))
+        tk = (x - u[k]) / (u[k + 1] - u[k])
+        return solve(_catmull_rom(u, k, tk, dlt), _catmull_rom(u, k, tk, ndlt))
 
     xs = np.concatenate([np.linspace(u[k], u[k + 1], 8, endpoint=False) for k in range(len(u) - 1)] + [u[-1:]])
     rs = np.array([at(x)[0] for x in xs])
@@ -403,7 +426,7 @@ def fit(image: np.ndarray, basis: Basis, *, setup: str = "rho_d-known",
             b_ = lo + g * (hi - lo)
             fb = at(b_)[0]
     x = (lo + hi) / 2
-    r2, s, t = at(x)
+    _, r2, s, t = at(x)
     status = "ok"
     if i == 0 or i == len(xs) - 1:
         status = f"alpha at the basis's edge ({math.exp(x):.4g}): the render may be outside its range"
