@@ -10,6 +10,8 @@
 
 #include "pgloss/pgloss.h"
 
+int pgloss_cli_bridge(int argc, char **argv);
+
 #define DEG (3.14159265358979323846 / 180.0)
 
 static const char *USAGE =
@@ -24,6 +26,7 @@ static const char *USAGE =
     "  eval rho_d rho_s alpha theta_o phi_o theta_i phi_i [norm]\n"
     "                                   BRDF value and pdf, angles in degrees\n"
     "  demo                             the paper's worked examples\n"
+    "  bridge TARGET L a b c d | bridge --from TARGET FILE.json   paint <-> renderer parameters (JSON)\n"
     "  --version                        the version of the pgloss library in use\n"
     "norm: ward (eq. 2, default) | ward-dur | bounded\n";
 
@@ -268,6 +271,7 @@ int main(int argc, char **argv)
     else if (!strcmp(cmd, "envelope")) rc = cmd_envelope(rest, n);
     else if (!strcmp(cmd, "eval")) rc = cmd_eval(rest, n);
     else if (!strcmp(cmd, "demo")) rc = demo();
+    else if (!strcmp(cmd, "bridge")) rc = pgloss_cli_bridge(n, rest); /* tools/cli_bridge.c */
     else {
         fprintf(stderr, "pgloss: unknown command '%s'\n%s", cmd, USAGE);
         return 2;

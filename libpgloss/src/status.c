@@ -22,6 +22,12 @@ const char *pgloss_status_string(pgloss_status status)
     case PGLOSS_ERR_NORMALIZATION: return "unknown normalization of the specular lobe";
     case PGLOSS_ERR_ARGUMENT: return "an argument is outside its documented domain";
     case PGLOSS_ERR_RANDOM: return "a random number is NaN";
+    case PGLOSS_ERR_BRIDGE_BASE:
+        return "out of the target's reach: the lightness needs a base colour channel outside [0, 1] after the target's diffuse dimming";
+    case PGLOSS_ERR_BRIDGE_SPECULAR:
+        return "out of the target's reach: the contrast gloss c needs an F0 (IOR, specular weight) outside the target's range";
+    case PGLOSS_ERR_BRIDGE_ROUGHNESS:
+        return "out of the target's reach: the DOI gloss d needs a roughness outside the target's range";
     }
     return "unknown pgloss status code";
 }
@@ -43,6 +49,9 @@ const char *pgloss_status_name(pgloss_status status)
     case PGLOSS_ERR_NORMALIZATION: return "PGLOSS_ERR_NORMALIZATION";
     case PGLOSS_ERR_ARGUMENT: return "PGLOSS_ERR_ARGUMENT";
     case PGLOSS_ERR_RANDOM: return "PGLOSS_ERR_RANDOM";
+    case PGLOSS_ERR_BRIDGE_BASE: return "PGLOSS_ERR_BRIDGE_BASE";
+    case PGLOSS_ERR_BRIDGE_SPECULAR: return "PGLOSS_ERR_BRIDGE_SPECULAR";
+    case PGLOSS_ERR_BRIDGE_ROUGHNESS: return "PGLOSS_ERR_BRIDGE_ROUGHNESS";
     }
     return "PGLOSS_UNKNOWN";
 }

@@ -2235,6 +2235,69 @@ def gen_sample(mats: Dict[str, Tuple[Dict[str, Any], Material]]) -> Dict[str, An
 # Main.
 # ----------------------------------------------------------------------------------
 
+# ----------------------------------------------------------------------------------
+# The gloss bridge's conventions (libpgloss/include/pgloss/bridge.h, docs/bridge.md): a target's
+# parameters <-> (base luminance, F0, microfacet alpha), transcribed from the header's rules.
+# ----------------------------------------------------------------------------------
+
+def gen_bridge() -> Dict[str, Any]:
+    ggx = {"openpbr", "standard_surface", "gltf", "gltf_core", "principled"}
+    air = mpf("1.000277")  # Mitsuba's ext_ior default, "air"
+
+    def f0_ior(ior: Any) -> Any:
+        return ((ior - 1) / (ior + 1)) ** 2
+
+    def ior_f0(f0: Any) -> Any:
+        return (1 + mp.sqrt(f0)) / (1 - mp.sqrt(f0))
+
+    def f0_of(t: str, ior: Any, spec: Any) -> Any:
+        if t in ("roughplastic_ggx", "roughplastic_beckmann"):
+            return f0_ior(ior / air)
+        k = 2 * spec if t == "principled" else spec
+        return min(k * f0_ior(ior), mpf("0.99999") if t == "openpbr" else mpf(1))
+
+    def canonical(t: str, f0: Any, alpha: Any) -> Dict[str, float]:
+        rough = mp.sqrt(alpha) if t in ggx else alpha
+        if t == "openpbr":
+            ior, spec = mpf("1.5"), f0 / mpf("0.04")
+        elif t == "gltf":
+            ior, spec = (mpf("1.5"), f0 / mpf("0.04")) if f0 <= mpf("0.04") else (ior_f0(f0), mpf(1))
+        elif t == "gltf_core":
+            ior, spec = mpf("1.5"), mpf(1)
+        elif t == "principled":
+            ior, spec = ior_f0(f0), mpf("0.5")
+        elif t in ("roughplastic_ggx", "roughplastic_beckmann"):
+            ior, spec = ior_f0(f0) * air, mpf(1)
+        else:
+            ior, spec = ior_f0(f0), mpf(1)
+        return {"roughness": D(rough), "ior": D(ior), "specular": D(spec)}
+
+    rows = [
+        ("openpbr", [0.8, 0.2, 0.1], 0.3, 1.5, 1.0), ("openpbr", [0.5, 0.5, 0.5], 0.1, 1.5, 2.5),
+        ("standard_surface", [0.2, 0.3, 0.4], 0.25, 1.6, 1.0), ("standard_surface", [0.9, 0.9, 0.9], 0.5, 2.0, 1.0),
+        ("gltf", [0.1, 0.6, 0.2], 0.3, 1.5, 0.5), ("gltf", [0.03, 0.03, 0.03], 0.2, 1.9, 1.0),
+        ("gltf_core", [0.7, 0.7, 0.2], 0.4, 1.5, 1.0), ("gltf_core", [0.193, 0.193, 0.193], 0.15, 1.5, 1.0),
+        ("principled", [0.6, 0.1, 0.1], 0.2, 1.45, 0.5), ("principled", [0.3, 0.3, 0.3], 0.35, 1.5, 0.8),
+        ("roughplastic_ggx", [0.193, 0.193, 0.193], 0.07, 1.5, 1.0), ("roughplastic_ggx", [0.5, 0.4, 0.3], 0.2, 1.8, 1.0),
+        ("roughplastic_beckmann", [0.767, 0.767, 0.767], 0.04, 1.5, 1.0),
+        ("roughplastic_beckmann", [0.05, 0.1, 0.2], 0.15, 2.2, 1.0),
+    ]
+    cases = []
+    for t, base, rough, ior, spec in rows:
+        b = [mpf(x) for x in base]
+        beta = sum(LUMA[j] * b[j] for j in range(3))
+        f0 = f0_of(t, mpf(ior), mpf(spec))
+        alpha = mpf(rough) ** 2 if t in ggx else mpf(rough)
+        cases.append({"id": f"bridge_{len(cases):02d}_{t}", "target": t,
+                      "params": {"base_color": base, "roughness": rough, "ior": ior, "specular": spec},
+                      "beta": D(beta), "f0": D(f0), "alpha": D(alpha),
+                      "canonical": canonical(t, mpf(D(f0)), mpf(D(alpha)))})
+    return {"format": FORMAT, "version": VERSION, "generator": GENERATOR,
+            "notes": "pgloss_bridge_model_inputs: params -> beta (Rec. 709 Y of base_color), f0, alpha; "
+                     "pgloss_bridge_params_from_model(base_color, f0, alpha) -> canonical (roughness, ior, specular)",
+            "cases": cases}
+
+
 def generate_all() -> Dict[str, str]:
     """File name -> content."""
     mats = brdf_materials()
@@ -2248,6 +2311,7 @@ def generate_all() -> Dict[str, str]:
         "material.json": gen_material(),
         "brdf_eval.json": gen_eval(mats),
         "brdf_sample.json": gen_sample(mats),
+        "bridge.json": gen_bridge(),
     }
     return {name: dump_file(doc) for name, doc in docs.items()}
 

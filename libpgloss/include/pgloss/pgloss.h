@@ -20,5 +20,6 @@
 #include "pgloss/color.h"
 #include "pgloss/perceptual.h"
 #include "pgloss/perceptual_batch.h"
+#include "pgloss/bridge.h"
 
 #endif /* PGLOSS_PGLOSS_H */

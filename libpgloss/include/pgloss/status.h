@@ -38,8 +38,13 @@ typedef enum pgloss_status {
     PGLOSS_ERR_DIRECTION = -9,         /* a direction is zero-length or not finite */
     PGLOSS_ERR_NORMALIZATION = -10,    /* unknown pgloss_normalization value */
     PGLOSS_ERR_ARGUMENT = -11,         /* another argument is out of its domain (documented per function) */
-    PGLOSS_ERR_RANDOM = -12            /* a random number is NaN (every other value, ±Inf
+    PGLOSS_ERR_RANDOM = -12,           /* a random number is NaN (every other value, ±Inf
                                           included, is clamped to [0, 1 - 2^-24]) */
+    /* The gloss bridge (bridge.h): the paint is out of the target's reach; the outputs hold
+       the nearest reachable paint's parameters. */
+    PGLOSS_ERR_BRIDGE_BASE = -13,      /* a base colour channel would leave [0, 1] */
+    PGLOSS_ERR_BRIDGE_SPECULAR = -14,  /* F0 outside the target's range (c too high or too low) */
+    PGLOSS_ERR_BRIDGE_ROUGHNESS = -15  /* α outside the target's range (d too high or too low) */
 } pgloss_status;
 
 /* A static, human-readable English sentence naming the reason; never NULL. */

@@ -1,0 +1,927 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
+/*
+ * pgloss_bridge_tables — generates libpgloss/src/bridge_tables.inc, the gloss bridge's tables
+ * (docs/bridge.md). For each target BRDF model and each node of a grid over its parameters
+ * (base luminance β, F0, α), it renders the stimulus sphere's pixels by a deterministic
+ * quadrature and reads the image with the bridge's gloss meter: the Ward paint (ρd, ρs, α) of
+ * eq. 2 whose image is nearest in luminance least squares. The table holds that reading.
+ *
+ *   pgloss_bridge_tables OUT.inc          write the tables
+ *   pgloss_bridge_tables --check OUT.inc  exit 1 if OUT.inc differs from what would be written
+ *   pgloss_bridge_tables --report         print the residuals and the interpolation errors
+ *
+ * The scene is examples/tracer/scenes/stimulus.scene (numbers below, checked against the file
+ * when it is given with --scene). Deterministic: no random numbers, fixed loop order, so the
+ * output is the same bytes on every machine with IEEE double and the same libm.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+static void stamp(const char *what)
+{
+    if (getenv("PGLOSS_BRIDGE_VERBOSE"))
+        fprintf(stderr, "%8.2f s  %s\n", (double)clock() / CLOCKS_PER_SEC, what);
+}
+
+#define PI 3.14159265358979323846
+
+/* ---- The stimulus scene (examples/tracer/scenes/stimulus.scene) ---- */
+static const double CAM_POS[3] = {0, 1.5, 1.95}, CAM_AT[3] = {0, 0.45, -0.5};
+static const double CAM_FOV_DEG = 48.0;
+#define IMG_W 160 /* the bridge's image: 160 × 120, the sphere's pixels are those whose */
+#define IMG_H 120 /* centre ray hits the sphere (2,114 pixels)                          */
+static const double SPH_C[3] = {0, 0.5, -0.5}, SPH_R = 0.5;
+static const double BOX_MIN[3] = {-2, 0, -2}, BOX_MAX[3] = {2, 3, 2};
+static const double CHECK_SIZE = 0.5, CHECK_OFF = 0.125, CHECK_A = 0.03, CHECK_B = 0.767;
+static const double LIGHT_Y = 2.999, LIGHT_X0 = -0.5, LIGHT_X1 = 0.5, LIGHT_Z0 = -1.0,
+                    LIGHT_Z1 = 0.0, LIGHT_L = 16.0;
+
+typedef struct { double x, y, z; } v3;
+static v3 V(double x, double y, double z) { v3 r = {x, y, z}; return r; }
+static v3 add(v3 a, v3 b) { return V(a.x + b.x, a.y + b.y, a.z + b.z); }
+static v3 sub(v3 a, v3 b) { return V(a.x - b.x, a.y - b.y, a.z - b.z); }
+static v3 mul(v3 a, double s) { return V(a.x * s, a.y * s, a.z * s); }
+static double dot(v3 a, v3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static v3 cross(v3 a, v3 b) { return V(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x); }
+static v3 unit(v3 a) { return mul(a, 1.0 / sqrt(dot(a, a))); }
+static double comp(v3 a, int k) { return k == 0 ? a.x : k == 1 ? a.y : a.z; }
+
+/* The checker of the box (a solid texture, as the tracer's material_index_at). */
+static double check_albedo(v3 p)
+{
+    long q = (long)floor((p.x - CHECK_OFF) / CHECK_SIZE) + (long)floor((p.y - CHECK_OFF) / CHECK_SIZE) +
+             (long)floor((p.z - CHECK_OFF) / CHECK_SIZE);
+    return (q & 1L) ? CHECK_B : CHECK_A;
+}
+
+/* Does the segment from a to b (t in (0, 1)) cross the sphere? */
+static int sphere_blocks(v3 a, v3 b)
+{
+    v3 d = sub(b, a), oc = sub(a, V(SPH_C[0], SPH_C[1], SPH_C[2]));
+    double A = dot(d, d), B = dot(oc, d), C = dot(oc, oc) - SPH_R * SPH_R;
+    double disc = B * B - A * C;
+    if (disc <= 0) return 0;
+    double s = sqrt(disc), t0 = (-B - s) / A, t1 = (-B + s) / A;
+    (void)t1; /* a and b lie outside the sphere: the first root decides */
+    return t0 > 1e-9 && t0 < 1 - 1e-9;
+}
+
+/* ---- Walls: six planes, each with a node grid for the irradiance ---- */
+#define WALL_H (1.0 / 16.0) /* node spacing of the irradiance grid (m) */
+#define PATCH 0.25          /* radiosity patch size (m) */
+typedef struct {
+    int axis;      /* the plane is comp(p, axis) = pos */
+    double pos;
+    v3 n;          /* inward normal */
+    int ua, va;    /* the two in-plane axes */
+    double u0, u1, v0, v1;
+    int nu, nv;    /* nodes */
+    double *E;     /* irradiance at the nodes */
+} wall;
+static wall WALLS[6];
+
+static v3 wall_point(const wall *w, double u, double v)
+{
+    double c[3];
+    c[w->axis] = w->pos;
+    c[w->ua] = u;
+    c[w->va] = v;
+    return V(c[0], c[1], c[2]);
+}
+
+static void walls_init(void)
+{
+    for (int k = 0; k < 6; ++k) {
+        wall *w = &WALLS[k];
+        w->axis = k / 2;
+        w->pos = (k % 2) ? BOX_MAX[w->axis] : BOX_MIN[w->axis];
+        double n[3] = {0, 0, 0};
+        n[w->axis] = (k % 2) ? -1 : 1;
+        w->n = V(n[0], n[1], n[2]);
+        w->ua = (w->axis + 1) % 3;
+        w->va = (w->axis + 2) % 3;
+        w->u0 = BOX_MIN[w->ua]; w->u1 = BOX_MAX[w->ua];
+        w->v0 = BOX_MIN[w->va]; w->v1 = BOX_MAX[w->va];
+        w->nu = (int)lround((w->u1 - w->u0) / WALL_H) + 1;
+        w->nv = (int)lround((w->v1 - w->v0) / WALL_H) + 1;
+        w->E = calloc((size_t)w->nu * (size_t)w->nv, sizeof(double));
+    }
+}
+
+/* Direct irradiance from the light at wall point p (normal n), the sphere casting its shadow. */
+#define LIGHT_N 12
+static double direct_irradiance(v3 p, v3 n)
+{
+    double sum = 0, dA = (LIGHT_X1 - LIGHT_X0) * (LIGHT_Z1 - LIGHT_Z0) / (LIGHT_N * LIGHT_N);
+    for (int i = 0; i < LIGHT_N; ++i)
+        for (int j = 0; j < LIGHT_N; ++j) {
+            v3 l = V(LIGHT_X0 + (i + 0.5) * (LIGHT_X1 - LIGHT_X0) / LIGHT_N, LIGHT_Y,
+                     LIGHT_Z0 + (j + 0.5) * (LIGHT_Z1 - LIGHT_Z0) / LIGHT_N);
+            v3 d = sub(l, p);
+            double r2 = dot(d, d), r = sqrt(r2);
+            double cp = dot(n, d) / r, cl = d.y / r; /* the light faces -y */
+            if (cp <= 0 || cl <= 0) continue;
+            if (sphere_blocks(p, l)) continue;
+            sum += LIGHT_L * cp * cl * dA / r2;
+        }
+    return sum;
+}
+
+/* Radiosity on 0.25 m patches (direct + 10 gathers), then the irradiance at every node. */
+typedef struct { v3 c, n; double rho, E, B; int wall; } patch;
+
+static double point_patch_ff(v3 p, v3 n, const patch *q)
+{
+    /* Form factor from a point to a patch, the patch split 4 × 4 when it is close. */
+    v3 d = sub(q->c, p);
+    double r2 = dot(d, d);
+    int s = r2 < 4 * PATCH * PATCH ? 4 : 1;
+    const wall *w = &WALLS[q->wall];
+    double uc = comp(q->c, w->ua), vc = comp(q->c, w->va), sum = 0, a = PATCH * PATCH / (s * s);
+    for (int i = 0; i < s; ++i)
+        for (int j = 0; j < s; ++j) {
+            v3 y = wall_point(w, uc + PATCH * ((i + 0.5) / s - 0.5), vc + PATCH * ((j + 0.5) / s - 0.5));
+            v3 e = sub(y, p);
+            double e2 = dot(e, e), el = sqrt(e2);
+            double c1 = dot(n, e) / el, c2 = -dot(q->n, e) / el;
+            if (c1 <= 0 || c2 <= 0) continue;
+            sum += c1 * c2 * a / (PI * e2);
+        }
+    if (sum > 0 && sphere_blocks(p, q->c)) sum = 0;
+    return sum;
+}
+
+static void solve_walls(void)
+{
+    int np = 0;
+    for (int k = 0; k < 6; ++k)
+        np += (int)lround((WALLS[k].u1 - WALLS[k].u0) / PATCH) * (int)lround((WALLS[k].v1 - WALLS[k].v0) / PATCH);
+    patch *P = calloc((size_t)np, sizeof(patch));
+    int m = 0;
+    for (int k = 0; k < 6; ++k) {
+        const wall *w = &WALLS[k];
+        int nu = (int)lround((w->u1 - w->u0) / PATCH), nv = (int)lround((w->v1 - w->v0) / PATCH);
+        for (int i = 0; i < nu; ++i)
+            for (int j = 0; j < nv; ++j) {
+                patch *q = &P[m++];
+                double u = w->u0 + (i + 0.5) * PATCH, v = w->v0 + (j + 0.5) * PATCH;
+                q->c = wall_point(w, u, v);
+                q->n = w->n;
+                q->wall = k;
+                q->rho = 0;
+                q->E = 0;
+                for (int a = 0; a < 2; ++a)
+                    for (int b = 0; b < 2; ++b) {
+                        v3 y = wall_point(w, u + PATCH * (a - 0.5) / 2, v + PATCH * (b - 0.5) / 2);
+                        q->rho += 0.25 * check_albedo(y);
+                        q->E += 0.25 * direct_irradiance(y, w->n);
+                    }
+            }
+    }
+    /* Form factors between patches (point at the centre to patch). */
+    float *F = malloc(sizeof(float) * (size_t)np * (size_t)np);
+    for (int i = 0; i < np; ++i)
+        for (int j = 0; j < np; ++j)
+            F[(size_t)i * np + j] = (i == j || P[i].wall == P[j].wall) ? 0.0f : (float)point_patch_ff(P[i].c, P[i].n, &P[j]);
+    double *Bn = malloc(sizeof(double) * (size_t)np);
+    for (int i = 0; i < np; ++i) P[i].B = P[i].rho * P[i].E;
+    for (int it = 0; it < 10; ++it) {
+        for (int i = 0; i < np; ++i) {
+            double g = 0;
+            for (int j = 0; j < np; ++j) g += F[(size_t)i * np + j] * P[j].B;
+            Bn[i] = P[i].rho * (P[i].E + g);
+        }
+        for (int i = 0; i < np; ++i) P[i].B = Bn[i];
+    }
+    /* Nodes: direct at the node, indirect gathered from the patches' radiosity. */
+    for (int k = 0; k < 6; ++k) {
+        wall *w = &WALLS[k];
+        for (int i = 0; i < w->nu; ++i)
+            for (int j = 0; j < w->nv; ++j) {
+                v3 y = wall_point(w, w->u0 + i * WALL_H, w->v0 + j * WALL_H);
+                v3 yin = add(y, mul(w->n, 1e-7));
+                double e = direct_irradiance(yin, w->n);
+                for (int q = 0; q < np; ++q)
+                    if (P[q].wall != k) e += point_patch_ff(yin, w->n, &P[q]) * P[q].B;
+                w->E[(size_t)i * w->nv + j] = e;
+            }
+    }
+    free(Bn);
+    free(F);
+    free(P);
+}
+
+static double wall_irradiance(const wall *w, double u, double v)
+{
+    double fu = (u - w->u0) / WALL_H, fv = (v - w->v0) / WALL_H;
+    int i = (int)floor(fu), j = (int)floor(fv);
+    if (i < 0) i = 0;
+    if (j < 0) j = 0;
+    if (i > w->nu - 2) i = w->nu - 2;
+    if (j > w->nv - 2) j = w->nv - 2;
+    double a = fu - i, b = fv - j;
+    const double *E = w->E;
+    size_t s = (size_t)w->nv;
+    return (1 - a) * ((1 - b) * E[i * s + j] + b * E[i * s + j + 1]) +
+           a * ((1 - b) * E[(i + 1) * s + j] + b * E[(i + 1) * s + j + 1]);
+}
+
+/* Radiance arriving at x from direction d (unit), x on the sphere, d leaving it. light: 1 to
+ * count the light's emission, 0 to leave it out (it is then integrated by explicit sampling). */
+static double incident(v3 x, v3 d, int light)
+{
+    if (d.y > 0) {
+        double t = (LIGHT_Y - x.y) / d.y;
+        double lx = x.x + t * d.x, lz = x.z + t * d.z;
+        if (lx >= LIGHT_X0 && lx <= LIGHT_X1 && lz >= LIGHT_Z0 && lz <= LIGHT_Z1)
+            return light ? LIGHT_L : 0.0;
+    }
+    double tbest = 1e300;
+    int kbest = 0;
+    for (int a = 0; a < 3; ++a) {
+        double da = comp(d, a);
+        if (da == 0) continue;
+        double t = ((da > 0 ? BOX_MAX[a] : BOX_MIN[a]) - comp(x, a)) / da;
+        if (t < tbest) { tbest = t; kbest = 2 * a + (da > 0); }
+    }
+    const wall *w = &WALLS[kbest];
+    v3 y = add(x, mul(d, tbest));
+    return check_albedo(y) / PI * wall_irradiance(w, comp(y, w->ua), comp(y, w->va));
+}
+
+/* ---- The camera and the sphere's pixels ---- */
+typedef struct { v3 f, r, u; double th; } camera;
+static camera CAM;
+static void camera_init(void)
+{
+    CAM.f = unit(sub(V(CAM_AT[0], CAM_AT[1], CAM_AT[2]), V(CAM_POS[0], CAM_POS[1], CAM_POS[2])));
+    CAM.r = unit(cross(CAM.f, V(0, 1, 0)));
+    CAM.u = cross(CAM.r, CAM.f);
+    CAM.th = tan(0.5 * CAM_FOV_DEG * PI / 180.0);
+}
+/* The camera ray through image position (px, py) hits the sphere at x with normal n, view wo. */
+static int camera_hit(double px, double py, v3 *x, v3 *n, v3 *wo)
+{
+    double sx = (2 * px / IMG_W - 1) * ((double)IMG_W / IMG_H) * CAM.th, sy = (1 - 2 * py / IMG_H) * CAM.th;
+    v3 d = unit(add(CAM.f, add(mul(CAM.r, sx), mul(CAM.u, sy))));
+    v3 o = V(CAM_POS[0], CAM_POS[1], CAM_POS[2]), oc = sub(o, V(SPH_C[0], SPH_C[1], SPH_C[2]));
+    double b = dot(d, oc), c = dot(oc, oc) - SPH_R * SPH_R, disc = b * b - c;
+    if (disc <= 0) return 0;
+    double t = -b - sqrt(disc);
+    *x = add(o, mul(d, t));
+    *n = unit(sub(*x, V(SPH_C[0], SPH_C[1], SPH_C[2])));
+    *wo = mul(d, -1);
+    return 1;
+}
+
+static void frame(v3 n, v3 *s, v3 *t)
+{
+    *s = unit(fabs(n.x) > 0.5 ? cross(n, V(0, 1, 0)) : cross(n, V(1, 0, 0)));
+    *t = cross(n, *s);
+}
+
+static double frac(double x) { return x - floor(x); }
+
+/* Pixels and their quadrature. Specular: per pixel, NR × NA half-vector cells (a cap, then
+ * rings log-spaced in θh up to π/2), each cell with its own sub-pixel position (an R2
+ * sequence), so one sample covers the pixel and the cell. Diffuse: SUB × SUB sub-pixel shading
+ * points, each with the light sampled on a grid and the walls by stratified cosine directions. */
+#define NR 48
+#define NA 20
+#define NS (NR * NA)
+#define TH0 0.0006
+#define SUB 3
+#define HEMI 16
+#define NMU 32 /* hat-function bins in μi for the diffuse moments */
+typedef struct { float mo, mi, t2, cd, w; } spec_sample; /* μo, μi, tan²θh, ωo·h, weight */
+static int NPIX;
+static spec_sample *SS; /* NPIX × NS */
+static double *DIFF_MO; /* NPIX × SUB² : μo at the diffuse shading points (−1 where it misses) */
+static double *DIFF_H;  /* NPIX × SUB² × NMU : irradiance/π binned by μi (hat functions) */
+
+static void hat_add(double *H, double mu, double val)
+{
+    double f = mu * (NMU - 1);
+    int i = (int)floor(f);
+    if (i >= NMU - 1) i = NMU - 2;
+    if (i < 0) i = 0;
+    double a = f - i;
+    H[i] += (1 - a) * val;
+    H[i + 1] += a * val;
+}
+
+static void build_samples(void)
+{
+    int cnt = 0;
+    v3 x, n, wo;
+    for (int py = 0; py < IMG_H; ++py)
+        for (int px = 0; px < IMG_W; ++px) cnt += camera_hit(px + 0.5, py + 0.5, &x, &n, &wo);
+    NPIX = cnt;
+    SS = calloc((size_t)NPIX * NS, sizeof(spec_sample));
+    DIFF_MO = calloc((size_t)NPIX * SUB * SUB, sizeof(double));
+    DIFF_H = calloc((size_t)NPIX * SUB * SUB * NMU, sizeof(double));
+    double q = pow(0.5 * PI / TH0, 1.0 / (NR - 1));
+    int p = 0;
+    for (int py = 0; py < IMG_H; ++py)
+        for (int px = 0; px < IMG_W; ++px) {
+            if (!camera_hit(px + 0.5, py + 0.5, &x, &n, &wo)) continue;
+            double poff = frac(p * 0.6180339887498949);
+            for (int r = 0; r < NR; ++r) {
+                double ta = r == 0 ? 0 : TH0 * pow(q, r - 1), tb = TH0 * pow(q, r);
+                if (r == NR - 1) tb = 0.5 * PI;
+                double ca = cos(ta), cb = cos(tb), area = (ca - cb) * 2 * PI / NA;
+                double ch = 0.5 * (ca + cb), sh = sqrt(1 - ch * ch);
+                for (int a = 0; a < NA; ++a) {
+                    int j = r * NA + a;
+                    spec_sample *s = &SS[(size_t)p * NS + j];
+                    double sx = frac(0.5 + poff + j * 0.7548776662466927), sy = frac(0.5 + poff + j * 0.5698402909980532);
+                    v3 xs, ns, ws, t1, t2;
+                    if (!camera_hit(px + sx, py + sy, &xs, &ns, &ws)) continue;
+                    double phi = 2 * PI * (a + frac(r * 0.6180339887498949 + poff)) / NA;
+                    frame(ns, &t1, &t2);
+                    v3 h = add(mul(ns, ch), add(mul(t1, sh * cos(phi)), mul(t2, sh * sin(phi))));
+                    double oh = dot(ws, h), mo = dot(ns, ws);
+                    if (oh <= 0 || mo <= 0) continue;
+                    v3 wi = sub(mul(h, 2 * oh), ws);
+                    double mi = dot(ns, wi);
+                    if (mi <= 0) continue;
+                    double L = incident(add(xs, mul(ns, 1e-9)), wi, 1);
+                    s->mo = (float)mo;
+                    s->mi = (float)mi;
+                    s->t2 = (float)((1 - ch * ch) / (ch * ch));
+                    s->cd = (float)oh;
+                    s->w = (float)(L * mi * 4 * oh * area);
+                }
+            }
+            for (int k = 0; k < SUB * SUB; ++k) {
+                double sx = (k % SUB + 0.5) / SUB, sy = (k / SUB + 0.5) / SUB;
+                v3 xs, ns, ws, t1, t2;
+                double *H = &DIFF_H[((size_t)p * SUB * SUB + k) * NMU];
+                if (!camera_hit(px + sx, py + sy, &xs, &ns, &ws)) { DIFF_MO[(size_t)p * SUB * SUB + k] = -1; continue; }
+                DIFF_MO[(size_t)p * SUB * SUB + k] = dot(ns, ws);
+                v3 xo = add(xs, mul(ns, 1e-9));
+                frame(ns, &t1, &t2);
+                double dA = (LIGHT_X1 - LIGHT_X0) * (LIGHT_Z1 - LIGHT_Z0) / (4.0 * LIGHT_N * LIGHT_N);
+                for (int i = 0; i < 2 * LIGHT_N; ++i)
+                    for (int jj = 0; jj < 2 * LIGHT_N; ++jj) {
+                        v3 l = V(LIGHT_X0 + (i + 0.5) * (LIGHT_X1 - LIGHT_X0) / (2 * LIGHT_N), LIGHT_Y,
+                                 LIGHT_Z0 + (jj + 0.5) * (LIGHT_Z1 - LIGHT_Z0) / (2 * LIGHT_N));
+                        v3 d = sub(l, xo);
+                        double r2 = dot(d, d), rr = sqrt(r2), mu = dot(ns, d) / rr, cl = d.y / rr;
+                        if (mu <= 0 || cl <= 0) continue;
+                        hat_add(H, mu, LIGHT_L * mu * cl * dA / r2 / PI);
+                    }
+                for (int i = 0; i < HEMI; ++i)
+                    for (int jj = 0; jj < HEMI; ++jj) {
+                        double u1 = (i + 0.5) / HEMI, u2 = (jj + frac(0.5 + i * 0.6180339887498949)) / HEMI;
+                        double mu = sqrt(1 - u1), st = sqrt(u1), ph = 2 * PI * u2;
+                        v3 d = add(mul(ns, mu), add(mul(t1, st * cos(ph)), mul(t2, st * sin(ph))));
+                        /* cosine-weighted: ∫ L μ dω / π ≈ mean of L */
+                        hat_add(H, mu, incident(xo, d, 0) / (HEMI * HEMI));
+                    }
+            }
+            ++p;
+        }
+}
+
+/* ---- The target BRDF models (docs/bridge.md cites each source) ---- */
+enum { M_PRINCIPLED, M_MATERIALX, M_RP_GGX, M_RP_BECKMANN, M_COUNT };
+static const char *const MODEL_NAME[M_COUNT] = {"principled", "materialx", "roughplastic_ggx",
+                                                "roughplastic_beckmann"};
+
+/* Unpolarised Fresnel reflectance of a dielectric interface, relative IOR eta, cosine c > 0. */
+static double fresnel(double c, double eta)
+{
+    double g2 = eta * eta - 1 + c * c;
+    if (g2 <= 0) return 1.0; /* total internal reflection */
+    double g = sqrt(g2), a = (g - c) / (g + c), b = (c * (g + c) - 1) / (c * (g - c) + 1);
+    return 0.5 * a * a * (1 + b * b);
+}
+static inline double f0_of_eta(double eta) { return ((eta - 1) / (eta + 1)) * ((eta - 1) / (eta + 1)); }
+static double eta_of_f0(double f0) { double s = sqrt(f0); return (1 + s) / (1 - s); }
+
+/* tan²θ of a direction with cosine mu. */
+static double tan2(double mu) { return (1 - mu * mu) / (mu * mu); }
+static double ggx_D(double t2, double a)
+{
+    double a2 = a * a, k = a2 + t2;
+    return a2 * (1 + t2) * (1 + t2) / (PI * k * k);
+}
+static double ggx_lambda(double mu, double a) { return 0.5 * (sqrt(1 + a * a * tan2(mu)) - 1); }
+static double beck_D(double t2, double a) { return exp(-t2 / (a * a)) * (1 + t2) * (1 + t2) / (PI * a * a); }
+/* Mitsuba 3's rational fit of Beckmann's G1 (include/mitsuba/render/microfacet.h, smith_g1). */
+static double beck_G1(double mu, double a)
+{
+    double t = sqrt(tan2(mu));
+    if (t == 0) return 1;
+    double x = 1 / (a * t);
+    return x >= 1.6 ? 1.0 : (3.535 * x + 2.181 * x * x) / (1 + 2.276 * x + 2.577 * x * x);
+}
+
+/* The specular lobe f·(4 μi μo) without the Fresnel factor: D G. */
+static double lobe_DG(int m, double mi, double mo, double t2, double a)
+{
+    switch (m) {
+    case M_PRINCIPLED:
+    case M_MATERIALX: /* height-correlated Smith (Cycles bsdf_G; MaterialX mx_ggx_smith_G2) */
+        return ggx_D(t2, a) / (1 + ggx_lambda(mi, a) + ggx_lambda(mo, a));
+    case M_RP_GGX: /* separable Smith (Mitsuba MicrofacetDistribution::G) */
+        return ggx_D(t2, a) / ((1 + ggx_lambda(mi, a)) * (1 + ggx_lambda(mo, a)));
+    default:
+        return beck_D(t2, a) * beck_G1(mi, a) * beck_G1(mo, a);
+    }
+}
+
+/* Ring r of the albedo quadrature over the half vector (96 rings, log-spaced in θh from a 1e-4
+ * cap to π/2, 48 cells over a half circle): its centre cosine and sine, cell area, tan²θh. */
+#define HR 96
+#define HA 48
+static void hring(int r, double *ch, double *sh, double *area, double *t2)
+{
+    const double q = pow(0.5 * PI / 1e-4, 1.0 / (HR - 1));
+    double ta = r == 0 ? 0 : 1e-4 * pow(q, r - 1), tb = r == HR - 1 ? 0.5 * PI : 1e-4 * pow(q, r);
+    double ca = cos(ta), cb = cos(tb);
+    *ch = 0.5 * (ca + cb);
+    *sh = sqrt(1 - *ch * *ch);
+    *area = (ca - cb) * PI / HA;
+    *t2 = (1 - *ch * *ch) / (*ch * *ch);
+}
+
+/* Integral over the half vector h of g(h) for a view at cosine mu in the local frame:
+ * directional albedos. kind 0: D G /(4 μo) (F = 1); 1: times F(ωo·h, eta); 2: times Schlick's
+ * (1 − ωo·h)^5. Log-polar rings in θh as the pixel quadrature, 96 × 48 cells over a half
+ * circle (the integrand is even in φ). */
+static double albedo(int m, double mu, double a, int kind, double eta)
+{
+    double so = sqrt(1 - mu * mu), sum = 0;
+    for (int r = 0; r < HR; ++r) {
+        double ch, sh, area, t2;
+        hring(r, &ch, &sh, &area, &t2);
+        for (int k = 0; k < HA; ++k) {
+            double ph = PI * (k + 0.5) / HA;
+            double oh = so * sh * cos(ph) + mu * ch;
+            if (oh <= 0) continue;
+            double mi = 2 * oh * ch - mu;
+            if (mi <= 0) continue;
+            double f = lobe_DG(m, mi, mu, t2, a) / (4 * mi * mu);
+            if (kind == 1) f *= fresnel(oh, eta);
+            if (kind == 2) f *= pow(1 - oh, 5);
+            sum += 2 * f * mi * 4 * oh * area;
+        }
+    }
+    return sum;
+}
+
+/* Mitsuba's rough-interface transmittance t(μ) (eval_transmittance) and reflectance
+ * (eval_reflectance), by the same integral over microfacet normals m: the visible normals
+ * D(m) G1(wi, m) (wi·m)/μ, times (1 − F) G1(refracted) or F G1(reflected). */
+static double rough_interface(int m, double mu, double a, double eta, int transmit)
+{
+    double so = sqrt(1 - mu * mu), sum = 0;
+    for (int r = 0; r < HR; ++r) {
+        double ch, sh, area, t2;
+        hring(r, &ch, &sh, &area, &t2);
+        for (int k = 0; k < HA; ++k) {
+            double ph = PI * (k + 0.5) / HA;
+            double c = so * sh * cos(ph) + mu * ch; /* wi·m */
+            if (c <= 0) continue;
+            double D = m == M_RP_BECKMANN ? beck_D(t2, a) : ggx_D(t2, a);
+            double g1i = m == M_RP_BECKMANN ? beck_G1(mu, a) : 1 / (1 + ggx_lambda(mu, a));
+            double F = fresnel(c, eta), vz, val;
+            if (transmit) {
+                double ct2 = 1 - (1 - c * c) / (eta * eta);
+                if (ct2 <= 0) continue;
+                vz = -mu / eta + ch * (c / eta - sqrt(ct2)); /* z of the refracted direction */
+                if (vz >= 0) continue;
+                val = 1 - F;
+            } else {
+                vz = 2 * c * ch - mu;
+                if (vz <= 0) continue;
+                val = F;
+            }
+            /* |v| = 1 for both the reflected and the refracted direction: |vz| is its cosine. */
+            double g1o = m == M_RP_BECKMANN ? beck_G1(fabs(vz), a) : 1 / (1 + ggx_lambda(fabs(vz), a));
+            sum += 2 * D * g1i * c / mu * val * g1o * ch * area;
+        }
+    }
+    return sum;
+}
+
+/* ---- Images over the sphere's pixels ---- */
+#define NMO 33 /* μ nodes of the per-view factors */
+static double interp_mu(const double *t, double mu)
+{
+    double f = mu * (NMO - 1);
+    int i = (int)floor(f);
+    if (i >= NMO - 1) i = NMO - 2;
+    if (i < 0) i = 0;
+    return t[i] + (f - i) * (t[i + 1] - t[i]);
+}
+
+/* The Lambertian image (ρd = 1): each pixel's irradiance / π, averaged over its sub-pixels. */
+static void image_lambert(double *img, const double *view_factor /* NMO or NULL */,
+                          const double *mu_factor /* NMU or NULL */)
+{
+    for (int p = 0; p < NPIX; ++p) {
+        double sum = 0;
+        for (int k = 0; k < SUB * SUB; ++k) {
+            double mo = DIFF_MO[(size_t)p * SUB * SUB + k];
+            if (mo < 0) continue;
+            const double *H = &DIFF_H[((size_t)p * SUB * SUB + k) * NMU];
+            double e = 0;
+            for (int b = 0; b < NMU; ++b) e += H[b] * (mu_factor ? mu_factor[b] : 1.0);
+            sum += e * (view_factor ? interp_mu(view_factor, mo) : 1.0);
+        }
+        img[p] = sum / (SUB * SUB);
+    }
+}
+
+/* Ward's specular lobe, eq. 2, on the pixel samples: the same formula as pgloss_eval's
+ * PGLOSS_NORM_WARD, written here on (tan²θh, μi, μo) in double because the samples store
+ * those, not directions. */
+static void image_ward(double *img, double a)
+{
+    for (int p = 0; p < NPIX; ++p) {
+        double sum = 0;
+        const spec_sample *s = &SS[(size_t)p * NS];
+        for (int j = 0; j < NS; ++j) {
+            if (s[j].w == 0) continue;
+            sum += s[j].w * exp(-s[j].t2 / (a * a)) / (4 * PI * a * a * sqrt((double)s[j].mi * s[j].mo));
+        }
+        img[p] = sum;
+    }
+}
+
+/* A target's specular lobe with Fresnel at eta and a per-view factor (NMO table or NULL).
+ * The lobe's D G w / (4 μi μo) per sample depends on the model and α only: it is kept for the
+ * last (model, α), and the Fresnel factor comes from a table in ωo·h for each eta. */
+#define NFT 4097
+static double *GBUF;
+static int GBUF_M = -1;
+static double GBUF_A = -1;
+static void image_spec(double *img, int m, double a, double eta, const double *view_factor)
+{
+    if (!GBUF) GBUF = malloc(sizeof(double) * (size_t)NPIX * NS);
+    if (GBUF_M != m || GBUF_A != a) {
+        for (size_t j = 0; j < (size_t)NPIX * NS; ++j) {
+            const spec_sample *s = &SS[j];
+            GBUF[j] = s->w == 0 ? 0 : s->w * lobe_DG(m, s->mi, s->mo, s->t2, a) / (4.0 * s->mi * s->mo);
+        }
+        GBUF_M = m;
+        GBUF_A = a;
+    }
+    static double Ft[NFT];
+    for (int k = 0; k < NFT; ++k) Ft[k] = fresnel(k == 0 ? 1e-6 : (double)k / (NFT - 1), eta);
+    for (int p = 0; p < NPIX; ++p) {
+        double sum = 0;
+        const spec_sample *s = &SS[(size_t)p * NS];
+        const double *G = &GBUF[(size_t)p * NS];
+        for (int j = 0; j < NS; ++j) {
+            if (G[j] == 0) continue;
+            double f = s[j].cd * (NFT - 1);
+            int i = (int)f;
+            if (i > NFT - 2) i = NFT - 2;
+            double F = Ft[i] + (f - i) * (Ft[i + 1] - Ft[i]);
+            sum += G[j] * F * (view_factor ? interp_mu(view_factor, s[j].mo) : 1.0);
+        }
+        img[p] = sum;
+    }
+}
+
+/* ---- The gloss meter of the bridge: Ward (ρd, ρs, α) by luminance least squares ---- */
+#define NW 56
+#define W_AMIN 0.004
+#define W_AMAX 0.8
+static double *WIMG; /* NW × NPIX */
+static double *DIMG; /* NPIX: Lambert */
+static double w_alpha(int k) { return W_AMIN * pow(W_AMAX / W_AMIN, (double)k / (NW - 1)); }
+
+typedef struct { double rho_d, rho_s, alpha, residual; } reading;
+
+/* The meter works on inner products: for the Ward image at any α (Catmull-Rom in log α over the
+ * node images) ⟨X, W(α)⟩, ⟨D, W(α)⟩ and ⟨W(α), W(α)⟩ are sums over four nodes of the nodes'
+ * products, precomputed once (GRAM: node × node within 3, DW: ⟨D, W_k⟩, DD: ⟨D, D⟩). */
+static double GRAM[NW][7], DW[NW], DD;
+static void meter_init(void)
+{
+    DD = 0;
+    for (int p = 0; p < NPIX; ++p) DD += DIMG[p] * DIMG[p];
+    for (int k = 0; k < NW; ++k) {
+        DW[k] = 0;
+        for (int p = 0; p < NPIX; ++p) DW[k] += DIMG[p] * WIMG[(size_t)k * NPIX + p];
+        for (int o = -3; o <= 3; ++o) {
+            int l = k + o;
+            double s = 0;
+            if (l >= 0 && l < NW)
+                for (int p = 0; p < NPIX; ++p) s += WIMG[(size_t)k * NPIX + p] * WIMG[(size_t)l * NPIX + p];
+            GRAM[k][o + 3] = s;
+        }
+    }
+}
+
+static void cr_nodes(double la, int idx[4], double w[4])
+{
+    double f = (la - log(W_AMIN)) / (log(W_AMAX / W_AMIN) / (NW - 1));
+    int i = (int)floor(f);
+    if (i < 0) i = 0;
+    if (i > NW - 2) i = NW - 2;
+    double t = f - i, t2 = t * t, t3 = t2 * t;
+    w[0] = -0.5 * t3 + t2 - 0.5 * t; w[1] = 1.5 * t3 - 2.5 * t2 + 1;
+    w[2] = -1.5 * t3 + 2 * t2 + 0.5 * t; w[3] = 0.5 * t3 - 0.5 * t2;
+    idx[0] = i > 0 ? i - 1 : 0; idx[1] = i; idx[2] = i + 1; idx[3] = i + 2 < NW ? i + 2 : NW - 1;
+}
+
+/* Least squares of X on (D, W(α)) from the products; returns the residual, writes ρd, ρs. */
+static double ls_at(double la, const double *XW, double XD, double XX, double *rd, double *rs)
+{
+    int idx[4];
+    double w[4], xw = 0, dw = 0, ww = 0;
+    cr_nodes(la, idx, w);
+    for (int a = 0; a < 4; ++a) {
+        xw += w[a] * XW[idx[a]];
+        dw += w[a] * DW[idx[a]];
+        for (int b = 0; b < 4; ++b) ww += w[a] * w[b] * GRAM[idx[a]][idx[b] - idx[a] + 3];
+    }
+    double det = DD * ww - dw * dw;
+    *rd = (XD * ww - xw * dw) / det;
+    *rs = (xw * DD - XD * dw) / det;
+    return XX - (*rd) * XD - (*rs) * xw;
+}
+
+static reading meter(const double *X)
+{
+    double XW[NW], XD = 0, XX = 0, best = 1e300, rd, rs;
+    for (int p = 0; p < NPIX; ++p) { XD += X[p] * DIMG[p]; XX += X[p] * X[p]; }
+    for (int k = 0; k < NW; ++k) {
+        double s = 0;
+        const double *W = &WIMG[(size_t)k * NPIX];
+        for (int p = 0; p < NPIX; ++p) s += X[p] * W[p];
+        XW[k] = s;
+    }
+    int kb = 0;
+    for (int k = 0; k < NW; ++k) {
+        double r = ls_at(log(w_alpha(k)), XW, XD, XX, &rd, &rs);
+        if (r < best) { best = r; kb = k; }
+    }
+    double h = log(W_AMAX / W_AMIN) / (NW - 1);
+    double lo = fmax(log(w_alpha(kb)) - h, log(W_AMIN)), hi = fmin(log(w_alpha(kb)) + h, log(W_AMAX));
+    const double g = 0.6180339887498949;
+    double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
+    double f1 = ls_at(x1, XW, XD, XX, &rd, &rs), f2 = ls_at(x2, XW, XD, XX, &rd, &rs);
+    for (int it = 0; it < 60; ++it) {
+        if (f1 < f2) { hi = x2; x2 = x1; f2 = f1; x1 = hi - g * (hi - lo); f1 = ls_at(x1, XW, XD, XX, &rd, &rs); }
+        else { lo = x1; x1 = x2; f1 = f2; x2 = lo + g * (hi - lo); f2 = ls_at(x2, XW, XD, XX, &rd, &rs); }
+    }
+    reading o;
+    double res = ls_at(0.5 * (lo + hi), XW, XD, XX, &o.rho_d, &o.rho_s);
+    o.alpha = exp(0.5 * (lo + hi));
+    o.residual = sqrt(fmax(res, 0) / XX);
+    return o;
+}
+
+/* ---- One target model at one (F0, α) node: its diffuse image per unit β and its specular image ---- */
+static double trap_mu(const double *t) /* 2 ∫ t(μ) μ dμ over the NMO nodes */
+{
+    double s = 0;
+    for (int i = 0; i < NMO - 1; ++i) {
+        double m0 = (double)i / (NMO - 1), m1 = (double)(i + 1) / (NMO - 1);
+        s += 0.5 * (t[i] * m0 + t[i + 1] * m1) * (m1 - m0);
+    }
+    return 2 * s;
+}
+static double mu_node(int i) { return i == 0 ? 1e-3 : (double)i / (NMO - 1); }
+
+static void target_images(int m, double f0, double a, double *Dt, double *St)
+{
+    double eta = eta_of_f0(f0), E[NMO], vf[NMO], df[NMO];
+    if (m == M_PRINCIPLED || m == M_MATERIALX) {
+        static double S5[NMO], Ec[NMO], last_a = -1;
+        static int last_m = -1;
+        double EF[NMO], Fh[NMO];
+        if (last_m != m || last_a != a) { /* E and S5 do not depend on eta */
+            for (int i = 0; i < NMO; ++i) {
+                Ec[i] = albedo(m, mu_node(i), a, 0, eta);
+                S5[i] = albedo(m, mu_node(i), a, 2, eta);
+            }
+            last_m = m;
+            last_a = a;
+        }
+        for (int i = 0; i < NMO; ++i) {
+            E[i] = Ec[i];
+            EF[i] = albedo(m, mu_node(i), a, 1, eta);
+            Fh[i] = fresnel(mu_node(i), eta);
+        }
+        double Eavg = trap_mu(E);
+        if (m == M_PRINCIPLED) {
+            /* Cycles: energy_scale × darkening = 1 + Fms (1 − E)/E (microfacet_ggx_preserve_energy),
+             * Fms from Kulla & Conty; the base is weighted by 1 − albedo of the layer. */
+            double Fss = trap_mu(Fh), Fms = Fss * Eavg / (1 - Fss * (1 - Eavg));
+            for (int i = 0; i < NMO; ++i) {
+                vf[i] = 1 + Fms * (1 - E[i]) / E[i];
+                df[i] = 1 - vf[i] * EF[i];
+            }
+        } else {
+            /* MaterialX: comp = 1 + Fss (1 − E)/E with Fss = F0 + (1 − F0)/21
+             * (mx_ggx_energy_compensation); throughput 1 − comp · (F0 A + B) (mx_dielectric_bsdf). */
+            double Fss = f0 + (1 - f0) / 21.0;
+            for (int i = 0; i < NMO; ++i) {
+                vf[i] = 1 + Fss * (1 - E[i]) / E[i];
+                df[i] = 1 - vf[i] * (f0 * (E[i] - S5[i]) + S5[i]);
+            }
+        }
+        image_lambert(Dt, df, NULL);
+        image_spec(St, m, a, eta, vf);
+    } else {
+        /* Mitsuba roughplastic (nonlinear = false): R t(μi) t(μo) / (π η² (1 − R_int)). */
+        double R[NMO], tb[NMU];
+        for (int i = 0; i < NMO; ++i) {
+            E[i] = rough_interface(m, mu_node(i), a, eta, 1);
+            R[i] = rough_interface(m, mu_node(i), a, 1 / eta, 0);
+        }
+        double Rint = trap_mu(R);
+        for (int i = 0; i < NMO; ++i) vf[i] = E[i] / (eta * eta * (1 - Rint));
+        for (int b = 0; b < NMU; ++b) tb[b] = interp_mu(E, (double)b / (NMU - 1));
+        image_lambert(Dt, vf, tb);
+        image_spec(St, m, a, eta, NULL);
+    }
+}
+
+/* ---- The table grid ---- */
+#define NBETA 9
+#define NF0 9
+#define NAT 20
+static const double F0_MIN = 0.01, F0_MAX = 0.25, AT_MIN = 0.004, AT_MAX = 0.35;
+#define NCHECK 16
+
+static double *OUT;   /* M_COUNT × NBETA × NF0 × NAT × 4 */
+static double *CHECK; /* M_COUNT × NCHECK × 7 */
+
+static void fill_model(int m, int report)
+{
+    double *Dt = malloc(sizeof(double) * (size_t)NPIX), *St = malloc(sizeof(double) * (size_t)NPIX),
+           *X = malloc(sizeof(double) * (size_t)NPIX);
+    for (int j = 0; j < NAT; ++j)
+        for (int i = 0; i < NF0; ++i) {
+            double f0 = F0_MIN + (F0_MAX - F0_MIN) * i / (NF0 - 1), a = AT_MIN * pow(AT_MAX / AT_MIN, (double)j / (NAT - 1));
+            target_images(m, f0, a, Dt, St);
+            for (int b = 0; b < NBETA; ++b) {
+                double beta = (double)b / (NBETA - 1);
+                for (int p = 0; p < NPIX; ++p) X[p] = beta * Dt[p] + St[p];
+                reading r = meter(X);
+                double *o = &OUT[((((size_t)m * NBETA + b) * NF0 + i) * NAT + j) * 4];
+                o[0] = r.rho_d; o[1] = r.rho_s; o[2] = r.alpha; o[3] = r.residual;
+            }
+        }
+    /* Off-grid checks (a fixed low-discrepancy set inside the grid) for the interpolation test. */
+    for (int k = 0; k < NCHECK; ++k) {
+        double u = frac(0.5 + k * 0.8191725133961645), v = frac(0.5 + k * 0.6710436067037893),
+               w = frac(0.5 + k * 0.5497004779019703);
+        double beta = u, f0 = F0_MIN + (F0_MAX - F0_MIN) * v, a = 0.01 * pow(0.3 / 0.01, w);
+        target_images(m, f0, a, Dt, St);
+        for (int p = 0; p < NPIX; ++p) X[p] = beta * Dt[p] + St[p];
+        reading r = meter(X);
+        double *c = &CHECK[((size_t)m * NCHECK + k) * 7];
+        c[0] = beta; c[1] = f0; c[2] = a; c[3] = r.rho_d; c[4] = r.rho_s; c[5] = r.alpha; c[6] = r.residual;
+        if (report)
+            printf("%-22s beta %.3f F0 %.4f alpha %.4f -> rho_d %.5f rho_s %.5f alpha %.5f residual %.4f\n",
+                   MODEL_NAME[m], beta, f0, a, r.rho_d, r.rho_s, r.alpha, r.residual);
+    }
+    free(Dt); free(St); free(X);
+}
+
+static void print_array(FILE *f, const double *v, size_t n)
+{
+    for (size_t i = 0; i < n; ++i) fprintf(f, "%.9e,%s", v[i], (i % 4 == 3) ? "\n" : " ");
+    if (n % 4) fputc('\n', f);
+}
+
+static void write_tables(FILE *f)
+{
+    fprintf(f, "/* SPDX-FileCopyrightText: 2026 The pgloss authors\n * SPDX-License-Identifier: Apache-2.0\n"
+               " * GENERATED by tools/bridge_tables.c (pgloss_bridge_tables): do not edit. docs/bridge.md\n"
+               " * says what the numbers are. Per target model: the bridge's gloss-meter reading\n"
+               " * (rho_d, rho_s, alpha, relative RMS residual) of the stimulus sphere rendered with base\n"
+               " * luminance beta, F0 and GGX/Beckmann alpha, on the grid below; then off-grid checks\n"
+               " * (beta, F0, alpha, rho_d, rho_s, alpha, residual) for the interpolation test. */\n");
+    fprintf(f, "#define PGLOSS__BRIDGE_MODELS %d\n#define PGLOSS__BRIDGE_NBETA %d\n#define PGLOSS__BRIDGE_NF0 %d\n"
+               "#define PGLOSS__BRIDGE_NAT %d\n#define PGLOSS__BRIDGE_NCHECK %d\n",
+            M_COUNT, NBETA, NF0, NAT, NCHECK);
+    fprintf(f, "#define PGLOSS__BRIDGE_F0_MIN %.17g\n#define PGLOSS__BRIDGE_F0_MAX %.17g\n"
+               "#define PGLOSS__BRIDGE_AT_MIN %.17g\n#define PGLOSS__BRIDGE_AT_MAX %.17g\n"
+               "#define PGLOSS__BRIDGE_SPHERE_PIXELS %d\n",
+            F0_MIN, F0_MAX, AT_MIN, AT_MAX, NPIX);
+    fprintf(f, "static const double pgloss__bridge_reading[%d * %d * %d * %d * 4] = {\n", M_COUNT, NBETA, NF0, NAT);
+    print_array(f, OUT, (size_t)M_COUNT * NBETA * NF0 * NAT * 4);
+    fprintf(f, "};\nstatic const double pgloss__bridge_check[%d * %d * 7] = {\n", M_COUNT, NCHECK);
+    print_array(f, CHECK, (size_t)M_COUNT * NCHECK * 7);
+    fprintf(f, "};\n");
+}
+
+/* The numbers of a file, in order. */
+static size_t read_numbers(const char *path, double **out)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return 0;
+    fseek(f, 0, SEEK_END);
+    long n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    char *buf = malloc((size_t)n + 1);
+    size_t got = fread(buf, 1, (size_t)n, f);
+    buf[got] = 0;
+    fclose(f);
+    size_t cap = 1024, k = 0;
+    double *v = malloc(sizeof(double) * cap);
+    for (char *p = buf; *p;) {
+        if ((*p >= '0' && *p <= '9') || ((*p == '-' || *p == '.') && p[1] >= '0' && p[1] <= '9')) {
+            if (p > buf && (p[-1] == '_' || (p[-1] >= 'A' && p[-1] <= 'z'))) { ++p; continue; }
+            char *e;
+            double x = strtod(p, &e);
+            if (k == cap) v = realloc(v, sizeof(double) * (cap *= 2));
+            v[k++] = x;
+            p = e;
+        } else {
+            ++p;
+        }
+    }
+    free(buf);
+    *out = v;
+    return k;
+}
+
+int main(int argc, char **argv)
+{
+    setvbuf(stdout, NULL, _IOLBF, 0);
+    int check = 0, report = 0;
+    const char *path = NULL;
+    for (int i = 1; i < argc; ++i) {
+        if (!strcmp(argv[i], "--check")) check = 1;
+        else if (!strcmp(argv[i], "--report")) report = 1;
+        else path = argv[i];
+    }
+    if (!path && !report) {
+        fprintf(stderr, "usage: pgloss_bridge_tables [--check] OUT.inc | --report\n");
+        return 2;
+    }
+    camera_init();
+    walls_init();
+    solve_walls();
+    stamp("walls");
+    build_samples();
+    stamp("samples");
+    DIMG = malloc(sizeof(double) * (size_t)NPIX);
+    image_lambert(DIMG, NULL, NULL);
+    WIMG = malloc(sizeof(double) * (size_t)NW * NPIX);
+    for (int k = 0; k < NW; ++k) image_ward(&WIMG[(size_t)k * NPIX], w_alpha(k));
+    meter_init();
+    OUT = calloc((size_t)M_COUNT * NBETA * NF0 * NAT * 4, sizeof(double));
+    CHECK = calloc((size_t)M_COUNT * NCHECK * 7, sizeof(double));
+    if (report) {
+        /* The control: Ward paints read back as themselves. */
+        double *X = malloc(sizeof(double) * (size_t)NPIX), *W = malloc(sizeof(double) * (size_t)NPIX);
+        const double rd[3] = {0.03, 0.193, 0.767}, rs[3] = {0.033, 0.066, 0.099}, al[3] = {0.04, 0.07, 0.1};
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) {
+                image_ward(W, al[j]);
+                for (int p = 0; p < NPIX; ++p) X[p] = rd[i] * DIMG[p] + rs[j] * W[p];
+                reading r = meter(X);
+                printf("ward control rho_d %.3f rho_s %.3f alpha %.3f -> %.6f %.6f %.6f residual %.2e\n", rd[i], rs[j],
+                       al[j], r.rho_d, r.rho_s, r.alpha, r.residual);
+            }
+        free(X); free(W);
+    }
+    stamp("ward basis");
+    for (int m = 0; m < M_COUNT; ++m) { fill_model(m, report); stamp(MODEL_NAME[m]); }
+    if (!path) return 0;
+    if (check) {
+        char tmp[4096];
+        snprintf(tmp, sizeof tmp, "%s.check.tmp", path);
+        FILE *f = fopen(tmp, "w");
+        if (!f) { perror(tmp); return 2; }
+        write_tables(f);
+        fclose(f);
+        double *a, *b;
+        size_t na = read_numbers(tmp, &a), nb = read_numbers(path, &b);
+        remove(tmp);
+        int bad = na != nb;
+        for (size_t i = 0; !bad && i < na; ++i)
+            if (fabs(a[i] - b[i]) > 1e-6 * fmax(1.0, fabs(a[i]))) {
+                fprintf(stderr, "number %zu: generated %.9e, file %.9e\n", i, a[i], b[i]);
+                bad = 1;
+            }
+        if (bad) {
+            fprintf(stderr, "out of date: %s (run: pgloss_bridge_tables %s)\n", path, path);
+            return 1;
+        }
+        printf("%s is up to date (%zu numbers)\n", path, na);
+        return 0;
+    }
+    FILE *f = fopen(path, "w");
+    if (!f) { perror(path); return 2; }
+    write_tables(f);
+    fclose(f);
+    return 0;
+}
