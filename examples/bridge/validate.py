@@ -117,50 +117,37 @@ class Renderers:
 
 
 # ------------------------------------------------------------------------------------- targets
-# The mapping's parameters (pgloss/bridge.h, pgloss_bridge_params: base_color, roughness, ior,
-# specular) under each target's own names, as each renderer takes them.
-def _grey(v) -> List[float]:
-    return [float(v)] * 3 if isinstance(v, (int, float)) else [float(x) for x in v]
-
-
-def _materialx(node: str, names: Tuple[str, str, str, str, str]) -> Callable[[dict, Path], dict]:
+# `pgloss bridge TARGET …` prints the parameters under each target's own names (tools/cli_bridge.c):
+# MaterialX inputs, glTF material fields, Principled inputs, Mitsuba plugin parameters.
+def _materialx(node: str) -> Callable[[dict, Path], dict]:
     def make(p: dict, work: Path) -> dict:
         import materialx_osl  # noqa: PLC0415
 
-        base, weight, rough, ior, spec = names
-        inputs = {base: _grey(p["base_color"]), weight: 1.0, rough: p["roughness"], ior: p["ior"], spec: p["specular"]}
-        return {"type": "osl", "file": str(materialx_osl.osl_shader(node, inputs, work / "materialx")), "output": "out"}
+        return {"type": "osl", "file": str(materialx_osl.osl_shader(node, p, work / "materialx")), "output": "out"}
     return make
 
 
 def _gltf(extensions: bool) -> Callable[[dict, Path], dict]:
+    """The flat glTF fields as a glTF 2.0 material object (pbrMetallicRoughness, and
+    KHR_materials_ior / KHR_materials_specular for the full target)."""
     def make(p: dict, work: Path) -> dict:
-        m: dict = {"pbrMetallicRoughness": {"baseColorFactor": _grey(p["base_color"]) + [1.0], "metallicFactor": 0.0,
-                                            "roughnessFactor": float(p["roughness"])}}
+        m: dict = {"pbrMetallicRoughness": {"baseColorFactor": [float(x) for x in p["baseColorFactor"]],
+                                            "metallicFactor": float(p.get("metallicFactor", 0.0)),
+                                            "roughnessFactor": float(p["roughnessFactor"])}}
         if extensions:
             m["extensions"] = {"KHR_materials_ior": {"ior": float(p["ior"])},
-                               "KHR_materials_specular": {"specularFactor": float(p["specular"])}}
+                               "KHR_materials_specular": {"specularFactor": float(p["specularFactor"])}}
         return {"type": "gltf", "material": m}
     return make
 
 
-def _roughplastic(dist: str) -> Callable[[dict, Path], dict]:
-    return lambda p, w: {"type": "roughplastic", "distribution": dist, "alpha": float(p["roughness"]),
-                         "int_ior": float(p["ior"]), "ext_ior": 1.000277, "diffuse_reflectance": _grey(p["base_color"]),
-                         "nonlinear": False}
-
-
 #: Target name (as ``pgloss bridge TARGET``) → (renderer, its material from the mapping's parameters).
 TARGETS: Dict[str, Tuple[str, Callable[[dict, Path], dict]]] = {
-    "roughplastic_ggx": ("mitsuba", _roughplastic("ggx")),
-    "roughplastic_beckmann": ("mitsuba", _roughplastic("beckmann")),
-    "principled": ("cycles", lambda p, w: {"type": "principled", "Base Color": _grey(p["base_color"]),
-                                           "Roughness": float(p["roughness"]), "IOR": float(p["ior"]),
-                                           "Specular IOR Level": float(p["specular"]), "distribution": "MULTI_GGX"}),
-    "openpbr": ("cycles", _materialx("open_pbr_surface", ("base_color", "base_weight", "specular_roughness",
-                                                          "specular_ior", "specular_weight"))),
-    "standard_surface": ("cycles", _materialx("standard_surface", ("base_color", "base", "specular_roughness",
-                                                                   "specular_IOR", "specular"))),
+    "roughplastic_ggx": ("mitsuba", lambda p, w: dict(p, type="roughplastic")),
+    "roughplastic_beckmann": ("mitsuba", lambda p, w: dict(p, type="roughplastic")),
+    "principled": ("cycles", lambda p, w: dict(p, type="principled", distribution="MULTI_GGX")),
+    "openpbr": ("cycles", _materialx("open_pbr_surface")),
+    "standard_surface": ("cycles", _materialx("standard_surface")),
     "gltf": ("cycles", _gltf(True)),
     "gltf_core": ("cycles", _gltf(False)),
 }
@@ -177,11 +164,9 @@ def mapped(target: str, L: float, c: float, d: float, tool: Optional[Path]) -> T
     if not p.stdout.strip().startswith("{"):
         raise RuntimeError(f"pgloss bridge {target}: exit {p.returncode}: {p.stderr.strip() or p.stdout.strip()}")
     r = json.loads(p.stdout)
-    params = r.get("parameters", r)
-    missing = [k for k in ("base_color", "roughness", "ior", "specular") if k not in params]
-    if missing:
-        raise RuntimeError(f"pgloss bridge {target}: the JSON lacks {missing}: {p.stdout.strip()}")
-    return dict(params), str(r.get("status", "ok")).lower()
+    if "parameters" not in r:
+        raise RuntimeError(f"pgloss bridge {target}: no parameters ({r.get('status')}: {r.get('reason')})")
+    return dict(r["parameters"]), str(r.get("status", "ok")).lower()
 
 
 # ---------------------------------------------------------------------------------- the meter
@@ -400,12 +385,12 @@ def validation_table(r: Renderers, meter: Meter, args: argparse.Namespace) -> Li
 def main(argv: Optional[List[str]] = None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("report", choices=("harnesses", "table"))
+    ap.add_argument("report", choices=("harnesses", "table", "all"), help="all: the table, then the harnesses")
     ap.add_argument("--spp", type=int, default=1024, help="spp of each validation render (%(default)s)")
     ap.add_argument("--basis-spp", type=int, default=2048, help="spp of the meter's basis renders (%(default)s)")
     ap.add_argument("--lambert-spp", type=int, default=4096, help="total spp per renderer of check 1 (%(default)s)")
-    ap.add_argument("--noise-spp", default="64,256,1024")
-    ap.add_argument("--noise-reps", type=int, default=8)
+    ap.add_argument("--noise-spp", default="256,1024")
+    ap.add_argument("--noise-reps", type=int, default=6)
     ap.add_argument("--alphas", type=int, default=21, help="log-spaced α nodes of the basis, 0.01-0.3 (%(default)s; "
                     "19 %% steps interpolate to 0.0003 in d, docs/image-meter.md)")
     ap.add_argument("--targets", default=",".join(TARGETS))
@@ -413,7 +398,7 @@ def main(argv: Optional[List[str]] = None) -> int:
     ap.add_argument("--tracer", type=Path, default=Path(os.environ.get("PGLOSS_TRACER",
                                                                          "build-bridge/examples/tracer/pgloss-tracer")))
     ap.add_argument("--tool", type=Path, default=Path(os.environ.get("PGLOSS_TOOL", "build-bridge/tools/pgloss")),
-                    help="the C tool whose 'bridge' command maps paints (when pgloss.bridge is not there)")
+                    help="the C tool whose bridge command maps the paints (%(default)s)")
     ap.add_argument("--bpy-python", type=Path, default=Path(".venv-bpy/bin/python"))
     ap.add_argument("--work", type=Path, default=Path("build-bridge/validate"))
     ap.add_argument("--threads", type=int, default=2)
@@ -425,24 +410,27 @@ def main(argv: Optional[List[str]] = None) -> int:
     for t in args.targets:
         if t not in TARGETS:
             ap.error(f"unknown target {t!r} ({', '.join(TARGETS)})")
-    started, load0 = time.time(), os.getloadavg()[0]
     r = Renderers(args.tracer, args.work, args.threads, args.bpy_python)
     meter = Meter(args)
     for rd in (0.193,) if args.quick else RHO_D:  # the bases first: their progress is what the first minutes show
         meter.basis(rd)
-    if args.report == "harnesses":
-        body = lambertian(r, args) + control(r, meter, args) + noise(r, meter, args) + facts(r, meter, args)
-        title, default = "The gloss bridge's instruments: harnesses and image gloss meter", "docs/bridge-harnesses.md"
-    else:
-        body = validation_table(r, meter, args)
-        title, default = "The gloss bridge validated in real renderers", "docs/bridge-validation.md"
-    text = "\n".join(_header(title, args, argv, started, load0) + body) + "\n"
-    if args.quick:
-        print(text)
-        return 0
-    out = args.out or ROOT / default
-    out.write_text(text)
-    print(f"wrote {out}", file=sys.stderr)
+    reports = ["table", "harnesses"] if args.report == "all" else [args.report]
+    for report in reports:
+        t0, l0 = time.time(), os.getloadavg()[0]
+        if report == "harnesses":
+            body = lambertian(r, args) + control(r, meter, args) + noise(r, meter, args) + facts(r, meter, args)
+            title, default = "The gloss bridge's instruments: harnesses and image gloss meter", "docs/bridge-harnesses.md"
+        else:
+            body = validation_table(r, meter, args)
+            title, default = "The gloss bridge validated in real renderers", "docs/bridge-validation.md"
+        cmd = [report if a == "all" else a for a in argv]
+        text = "\n".join(_header(title, args, cmd, t0, l0) + body) + "\n"
+        if args.quick:
+            print(text)
+            continue
+        out = args.out or ROOT / default
+        out.write_text(text)
+        print(f"wrote {out}", file=sys.stderr, flush=True)
     return 0
 
 

@@ -33,6 +33,7 @@ SCENE = ROOT / "examples" / "tracer" / "scenes" / "stimulus.scene"
 TRACER = Path(os.environ.get("PGLOSS_TRACER", ROOT / "build-tracer-test" / "examples" / "tracer" / "pgloss-tracer"))
 WORK = ROOT / "build-bridge" / "ci"
 BPY = ROOT / ".venv-bpy" / "bin" / "python"
+TOOL = Path(os.environ.get("PGLOSS_TOOL", ROOT / "build-test" / "tools" / "pgloss"))
 RD = 0.193
 # 26 % steps over the α the tests use (interpolation error < 0.001 in d; docs/image-meter.md).
 ALPHAS = tuple(float(a) for a in np.geomspace(0.02, 0.2, 11))
@@ -53,6 +54,26 @@ def _tracer(view: im.View, rd: float, rs: float, a: float, spp: int, seed: int) 
     text, size = im.crop_scene(SCENE.read_text(), view)
     WORK.mkdir(parents=True, exist_ok=True)
     return im.render_tracer(TRACER, im.scene_with_paint(text, im.paint_line(rd, rs, a)), spp, size, seed, 2, WORK)
+
+
+#: The grey stimulus of Fig. 4 (ρd .193, ρs .066, α .07) as a paint: L*, c, d (eqs. 3-4).
+GREY = tuple(float(v) for v in pgloss.gloss_from_physical(RD, 0.066, 0.07))
+
+
+def _mapped(target: str, work: Path) -> dict:
+    """The harness material of ``pgloss bridge TARGET`` for the grey stimulus."""
+    import validate
+
+    assert TOOL.exists(), f"{TOOL}: the pgloss tool (scripts/test-core.sh builds it)"
+    params, status = validate.mapped(target, GREY[0], GREY[1], GREY[2], TOOL)
+    assert status == "ok", (target, status)
+    return validate.TARGETS[target][1](params, work)
+
+
+def _loose(f: im.Fit, what: str) -> None:
+    """A mapped paint read back at low spp: within twice the validation tolerance."""
+    print(f"{what}: c {GREY[1]:.4f} -> {f.c:.4f}, d {GREY[2]:.4f} -> {f.d:.4f}, residual {f.residual:.3f}")
+    assert abs(f.c - GREY[1]) <= 0.01 and abs(f.d - GREY[2]) <= 0.02, (what, f)
 
 
 def test_view_is_the_stimulus_sphere(view: im.View) -> None:
@@ -108,6 +129,9 @@ def test_mitsuba_harness(basis: im.Basis, view: im.View) -> None:
     _, c, d = pgloss.gloss_from_physical(RD, 0.066, 0.07)
     print(f"Mitsuba Ward: c {c:.4f} -> {f.c:.4f}, d {d:.4f} -> {f.d:.4f}")
     assert abs(f.c - c) <= 0.005 and abs(f.d - d) <= 0.01, f
+    ggx = harness_mitsuba.render(_mapped("roughplastic_ggx", WORK), spp=512, seed=8, size=(160, 120), crop=crop,
+                                 threads=2)
+    _loose(im.fit(ggx, basis), "Mitsuba roughplastic GGX, mapped")
 
 
 def test_cycles_harnesses(basis: im.Basis, view: im.View, tmp_path: Path) -> None:
@@ -120,8 +144,9 @@ def test_cycles_harnesses(basis: im.Basis, view: im.View, tmp_path: Path) -> Non
     openpbr = {"type": "osl", "output": "out", "file": str(materialx_osl.osl_shader(
         "open_pbr_surface", {"base_color": RD, "specular_roughness": 0.3, "specular_ior": 1.5}, tmp_path))}
     mats = {"diffuse": {"type": "diffuse", "reflectance": RD}, "principled": principled, "gltf": gltf,
-            "openpbr": openpbr}
-    jobs = [{"material": m, "out": str(tmp_path / f"{k}.exr"), "spp": 256, "seed": 7} for k, m in mats.items()]
+            "openpbr": openpbr, **{f"mapped {t}": _mapped(t, tmp_path) for t in ("principled", "gltf", "openpbr")}}
+    jobs = [{"material": m, "out": str(tmp_path / f"{k}.exr"), "spp": 512 if "mapped" in k else 256, "seed": 7}
+            for k, m in mats.items()]
     (tmp_path / "jobs.json").write_text(json.dumps(jobs))
     assert BPY.exists(), f"{BPY}: scripts/test-osl.sh makes the bpy venv"
     r = subprocess.run([str(BPY), str(ROOT / "examples" / "bridge" / "harness_cycles.py"), "--jobs",
@@ -140,3 +165,5 @@ def test_cycles_harnesses(basis: im.Basis, view: im.View, tmp_path: Path) -> Non
     for f in (fp, fo):
         assert 0.02 < f.c < 0.15 and 0.85 < f.d < 0.97 and f.status == "ok", f
     assert abs(fp.c - fo.c) < 0.02 and abs(fp.d - fo.d) < 0.02
+    for t in ("principled", "gltf", "openpbr"):
+        _loose(im.fit(img[f"mapped {t}"], basis), f"Cycles {t}, mapped")
