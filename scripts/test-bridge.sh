@@ -15,6 +15,7 @@ export PGLOSS_REQUIRE_ALL="${PGLOSS_REQUIRE_ALL:-1}"
 # libllvm19: Dr.Jit's LLVM back end (Mitsuba's llvm_ad_rgb); the tracer's packages as test-tracer.sh.
 bash scripts/bootstrap.sh apt g++ cmake python3 python3-venv python3-dev libllvm19 pkg-config libembree-dev \
   libopenimageio-dev openimageio-tools libopencolorio-dev libglm-dev fonts-dejavu-core libgtest-dev
+bash scripts/bootstrap.sh test  # .venv-tools, which the test preset (the pgloss tool's build) names
 PGLOSS_OSL_SETUP_ONLY=1 bash scripts/test-osl.sh
 
 root=$PWD
@@ -38,9 +39,11 @@ if [[ "$(cat "$venv/.pgloss-installed" 2>/dev/null)" != "$sources" ]] || ! (cd /
   echo "$sources" >"$venv/.pgloss-installed"
 fi
 
-echo "== pgloss-tracer (build-tracer-test)"
+echo "== pgloss-tracer (build-tracer-test) and the pgloss tool (build-test; its bridge command maps the paints)"
 cmake --preset tracer-test >/dev/null
 cmake --build --preset tracer-test --target pgloss-tracer >/dev/null
+cmake --preset test >/dev/null
+cmake --build --preset test --target pgloss_cli >/dev/null
 
 # Dr.Jit loads the first libLLVM it finds; clang's LLVM 14 aborts it ("Cannot select: fminimum").
 llvm=$(ls /usr/lib/x86_64-linux-gnu/libLLVM-19.so /usr/lib/llvm-19/lib/libLLVM-19.so 2>/dev/null | head -1 || true)
@@ -48,7 +51,7 @@ llvm=$(ls /usr/lib/x86_64-linux-gnu/libLLVM-19.so /usr/lib/llvm-19/lib/libLLVM-1
 export DRJIT_LIBLLVM_PATH=$llvm
 start=$SECONDS
 set +e
-PGLOSS_TRACER=$root/build-tracer-test/examples/tracer/pgloss-tracer \
+PGLOSS_TRACER=$root/build-tracer-test/examples/tracer/pgloss-tracer PGLOSS_TOOL=$root/build-test/tools/pgloss \
   "$py" -m pytest -q -s -p no:cacheprovider -rs tests/bridge 2>&1 | grep -v -e 'DeprecationWarning' -e 'use_nodes'
 rc=${PIPESTATUS[0]}
 set -e
