@@ -19,25 +19,9 @@ bash scripts/bootstrap.sh test  # .venv-tools, which the test preset (the pgloss
 PGLOSS_OSL_SETUP_ONLY=1 bash scripts/test-osl.sh
 
 root=$PWD
-venv=.venv-bridge
-py=$venv/bin/python
-pins=(mitsuba==3.9.1 drjit==1.5.0 openimageio==3.2.2.0 MaterialX==1.39.5 numpy==2.4.6 pytest==9.2.0
-      scikit-build-core==1.1.2 pybind11==3.1.0)
-if [[ ! -x $py ]] || [[ "$(cat "$venv/.pgloss-pins" 2>/dev/null)" != "${pins[*]}" ]]; then
-  echo "== creating $venv (${pins[*]})"
-  rm -rf "$venv"
-  /usr/bin/python3 -m venv "$venv"
-  "$py" -m pip install -q --disable-pip-version-check "${pins[@]}"
-  echo "${pins[*]}" >"$venv/.pgloss-pins"
-fi
-sources=$(find pyproject.toml CMakeLists.txt libpgloss bindings/python -type f \
-            -not -path '*/__pycache__/*' -print0 | sort -z | xargs -0 sha256sum | sha256sum | cut -c1-16)
-if [[ "$(cat "$venv/.pgloss-installed" 2>/dev/null)" != "$sources" ]] || ! (cd / && "$root/$py" -c "import pgloss._core") 2>/dev/null; then
-  echo "== pip install . into $venv (sources changed)"
-  export CMAKE_BUILD_PARALLEL_LEVEL="${CMAKE_BUILD_PARALLEL_LEVEL:-2}"
-  "$py" -m pip install -q --disable-pip-version-check --no-build-isolation --force-reinstall --no-deps .
-  echo "$sources" >"$venv/.pgloss-installed"
-fi
+py=.venv-bridge/bin/python
+bash scripts/venv-pgloss.sh .venv-bridge mitsuba==3.9.1 drjit==1.5.0 openimageio==3.2.2.0 MaterialX==1.39.5 \
+  numpy==2.4.6 pytest==9.2.0 scikit-build-core==1.1.2 pybind11==3.1.0
 
 echo "== pgloss-tracer (build-tracer-test) and the pgloss tool (build-test; its bridge command maps the paints)"
 cmake --preset tracer-test >/dev/null

@@ -44,6 +44,8 @@ from typing import Dict, List, Optional, Tuple
 
 import numpy as np
 
+import harness_json  # examples/bridge, this script's folder
+
 ROOT = Path(__file__).resolve().parents[2]
 SCENE = ROOT / "examples" / "tracer" / "scenes" / "stimulus.scene"
 
@@ -73,13 +75,8 @@ def vec(s: str) -> Tuple[float, ...]:
 
 # ---------------------------------------------------------------------------------- materials
 def parameters(text: str) -> dict:
-    p = Path(text)
-    obj = json.loads(p.read_text() if not text.lstrip().startswith("{") and p.exists() else text)
-    if isinstance(obj, dict) and isinstance(obj.get("parameters"), dict):
-        obj = obj["parameters"]
-    if not isinstance(obj, dict) or "type" not in obj:
-        raise ValueError("the material must be a JSON object with a 'type' (principled, diffuse, gltf, osl)")
-    return obj
+    """The material object (harness_json.parameters)."""
+    return harness_json.parameters(text, "principled, diffuse, gltf, osl")
 
 
 def _rgba(v) -> Tuple[float, float, float, float]:
@@ -363,18 +360,11 @@ def build(bpy, material: dict, tmp: Path, *, spp: int, seed: int, size: Tuple[in
 
 def _bpy():
     """bpy, with the modules it bundles outside sys.path (oslquery for OSL Script nodes,
-    OpenImageIO) reachable, as tests/osl/oslrt.py sets up."""
-    import importlib.util  # noqa: PLC0415
+    OpenImageIO) reachable: tests/osl/oslrt.py's set-up."""
+    sys.path.insert(0, str(ROOT / "tests" / "osl"))
+    import oslrt  # noqa: PLC0415
 
-    spec = importlib.util.find_spec("bpy")
-    if spec is None or spec.origin is None:
-        raise ImportError("bpy (PyPI bpy==5.0.1) is not installed in this interpreter")
-    bundled = Path(spec.origin).parent / "5.0" / "python" / "lib" / "python3.11" / "site-packages"
-    if str(bundled) not in sys.path:
-        sys.path.append(str(bundled))
-    import bpy  # noqa: PLC0415
-
-    return bpy
+    return oslrt.bpy
 
 
 def render(material: dict, out: Path, **kw) -> np.ndarray:

@@ -35,6 +35,7 @@ import numpy as np
 
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "examples" / "tracer" / "bench"))
+import harness_json  # noqa: E402  (examples/bridge, this script's folder)
 import mitsuba_compare  # noqa: E402  (the scene's construction, shared with the benchmark)
 
 #: Reflectances that Mitsuba takes as textures: a number or an RGB triple becomes an "rgb" value.
@@ -42,15 +43,8 @@ _SPECTRA = ("reflectance", "diffuse_reflectance", "specular_reflectance")
 
 
 def parameters(text: str) -> dict:
-    """The BSDF object from JSON text or a file name; a ``{"parameters": {...}}`` wrapper (the
-    bridge tool's output) is unwrapped."""
-    p = Path(text)
-    obj = json.loads(p.read_text() if not text.lstrip().startswith("{") and p.exists() else text)
-    if isinstance(obj, dict) and isinstance(obj.get("parameters"), dict):
-        obj = obj["parameters"]
-    if not isinstance(obj, dict) or "type" not in obj:
-        raise ValueError("the BSDF must be a JSON object with a 'type' (roughplastic, diffuse, ward, …)")
-    return obj
+    """The BSDF object (harness_json.parameters)."""
+    return harness_json.parameters(text, "roughplastic, diffuse, ward, …")
 
 
 def bsdf_dict(p: dict) -> dict:
