@@ -55,15 +55,16 @@ ALPHA = (0.04, 0.07, 0.10)
 TOL_C, TOL_D = 0.005, 0.01
 
 
-def paints() -> List[Tuple[str, float, float, float]]:
+def paints(which: str = "all") -> List[Tuple[str, float, float, float]]:
     """(label, ρd, ρs, α): Fig. 4's 27 stimuli, then Fig. 12's matched triplet (the white paint
-    ρs .099, α .04, and the grey and black paints given its c and d by match_gloss)."""
+    ρs .099, α .04, and the grey and black paints given its c and d by match_gloss);
+    ``which="grey"``: those of ρd .193 alone (one basis)."""
     out = [(f"fig4 {rd:g}/{rs:g}/{a:g}", rd, rs, a) for rd in RHO_D for rs in RHO_S for a in ALPHA]
     _, _, d0 = pgloss.gloss_from_physical(RHO_D[0], 0.099, 0.04)
     for name, rd in zip(("white", "grey", "black"), RHO_D):
         rdm, rsm = pgloss.match_gloss(RHO_D[0], 0.099, pgloss.lightness_from_luminance(rd))
         out.append((f"fig12 {name}", float(rdm), float(rsm), float(1 - d0)))
-    return out
+    return [p for p in out if which == "all" or abs(p[1] - 0.193) < 1e-6]
 
 
 # ------------------------------------------------------------------------------ the renderers
@@ -254,9 +255,9 @@ def lambertian(r: Renderers, args: argparse.Namespace) -> List[str]:
 
 def control(r: Renderers, meter: Meter, args: argparse.Namespace) -> List[str]:
     """(2) Ward renders of known paints read back (pgloss-tracer, and Mitsuba's Dr.Jit Ward)."""
-    ps = paints()
+    ps = paints(args.paints)
     if args.quick:
-        ps = [p for p in ps if p[1] == 0.193 and p[3] == 0.07]
+        ps = [p for p in ps if p[3] == 0.07]
     out = ["## 2. The meter's control: Ward renders of known paints read back", "",
            f"Each paint rendered at {args.spp} spp (seeds other than the basis's) and fitted (ρd known). "
            "Pass: |Δc| ≤ 0.0025 and |Δd| ≤ 0.005 (half the target tolerance). The sensitivities are the "
@@ -351,11 +352,13 @@ def facts(r: Renderers, meter: Meter, args: argparse.Namespace) -> List[str]:
 
 
 # ----------------------------------------------------------------------------------- the table
-def validation_table(r: Renderers, meter: Meter, args: argparse.Namespace) -> List[str]:
+def validation_table(r: Renderers, meter: Meter, args: argparse.Namespace,
+                     progress: Optional[Callable[[List[str]], None]] = None) -> List[str]:
     out = ["Each paint's (L*, c, d) mapped by `pgloss bridge TARGET L 0 0 c d`, rendered in the target's own "
-           f"renderer at {args.spp} spp, read back by the image gloss meter (ρd known from L*). Pass: |Δc| ≤ 0.005 "
+           f"renderer at {args.spp} spp, read back by the image gloss meter (ρd known from L*). Paints: "
+           f"{'all 30' if args.paints == 'all' else 'the 10 of ρd .193 (Fig. 4 grey row, Fig. 12 grey)'}. Pass: |Δc| ≤ 0.005 "
            "and |Δd| ≤ 0.01. Paints the mapping reports out of reach are listed with its status and not counted.", ""]
-    ps = paints()
+    ps = paints(args.paints)
     for target in args.targets:
         renderer, make = TARGETS[target]
         jobs, meta = [], []
@@ -379,6 +382,9 @@ def validation_table(r: Renderers, meter: Meter, args: argparse.Namespace) -> Li
                 *_table(("paint", "c", "c read", "|Δc|", "d", "d read", "|Δd|", "residual", "result"), rows), "",
                 f"**{npass}/{nreach} reachable paints pass** ({len(ps) - nreach} out of reach).", ""]
         print(f"  table: {target} done", file=sys.stderr, flush=True)
+        if progress is not None and target != args.targets[-1]:
+            progress(out + [f"(The run is still going: {args.targets.index(target) + 1} of {len(args.targets)} "
+                            "targets done.)", ""])
     return out
 
 
@@ -394,6 +400,8 @@ def main(argv: Optional[List[str]] = None) -> int:
     ap.add_argument("--alphas", type=int, default=21, help="log-spaced α nodes of the basis, 0.01-0.3 (%(default)s; "
                     "19 %% steps interpolate to 0.0003 in d, docs/image-meter.md)")
     ap.add_argument("--targets", default=",".join(TARGETS))
+    ap.add_argument("--paints", choices=("all", "grey"), default="all",
+                    help="all 30 paints, or the 10 of ρd .193 (one basis; the machine-time-limited run)")
     ap.add_argument("--quick", action="store_true", help="grey paints only (a smoke run; the report is printed, not written)")
     ap.add_argument("--tracer", type=Path, default=Path(os.environ.get("PGLOSS_TRACER",
                                                                          "build-bridge/examples/tracer/pgloss-tracer")))
@@ -412,25 +420,31 @@ def main(argv: Optional[List[str]] = None) -> int:
             ap.error(f"unknown target {t!r} ({', '.join(TARGETS)})")
     r = Renderers(args.tracer, args.work, args.threads, args.bpy_python)
     meter = Meter(args)
-    for rd in (0.193,) if args.quick else RHO_D:  # the bases first: their progress is what the first minutes show
+    # The bases first: their progress is what the first minutes show.
+    for rd in (0.193,) if args.quick or args.paints == "grey" else RHO_D:
         meter.basis(rd)
     reports = ["table", "harnesses"] if args.report == "all" else [args.report]
     for report in reports:
         t0, l0 = time.time(), os.getloadavg()[0]
+        cmd = [report if a == "all" else a for a in argv]
         if report == "harnesses":
-            body = lambertian(r, args) + control(r, meter, args) + noise(r, meter, args) + facts(r, meter, args)
             title, default = "The gloss bridge's instruments: harnesses and image gloss meter", "docs/bridge-harnesses.md"
         else:
-            body = validation_table(r, meter, args)
             title, default = "The gloss bridge validated in real renderers", "docs/bridge-validation.md"
-        cmd = [report if a == "all" else a for a in argv]
-        text = "\n".join(_header(title, args, cmd, t0, l0) + body) + "\n"
-        if args.quick:
-            print(text)
-            continue
         out = args.out or ROOT / default
-        out.write_text(text)
-        print(f"wrote {out}", file=sys.stderr, flush=True)
+
+        def write(body: List[str]) -> None:
+            text = "\n".join(_header(title, args, cmd, t0, l0) + body) + "\n"
+            if args.quick:
+                print(text)
+                return
+            out.write_text(text)
+            print(f"wrote {out}", file=sys.stderr, flush=True)
+
+        if report == "harnesses":
+            write(lambertian(r, args) + control(r, meter, args) + noise(r, meter, args) + facts(r, meter, args))
+        else:
+            write(validation_table(r, meter, args, None if args.quick else write))
     return 0
 
 
