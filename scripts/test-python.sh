@@ -23,24 +23,8 @@ root=$PWD
 venv=.venv-py
 py=$venv/bin/python
 pins=(scikit-build-core==1.1.2 pybind11==3.1.0 numpy==2.4.6 scipy==1.17.1 matplotlib==3.11.2 scikit-learn==1.9.1 pytest==9.2.0 colour-science==0.4.7 pybind11-stubgen==3.0.0)
-if [[ ! -x $py ]] || [[ "$(cat "$venv/.pgloss-pins" 2>/dev/null)" != "${pins[*]}" ]]; then
-  echo "== creating $venv (${pins[*]})"
-  rm -rf "$venv"
-  /usr/bin/python3 -m venv "$venv"
-  step "pip install (pins)" "$py" -m pip install --disable-pip-version-check "${pins[@]}"
-  echo "${pins[*]}" >"$venv/.pgloss-pins"
-fi
-
-# `pip install .` (the README's install command), with the venv's pinned build tools.
-sources=$(find pyproject.toml CMakeLists.txt libpgloss tools bindings/python -type f \
-            -not -path '*/__pycache__/*' -print0 | sort -z | xargs -0 sha256sum | sha256sum | cut -c1-16)
-if [[ "$(cat "$venv/.pgloss-installed" 2>/dev/null)" != "$sources" ]] || ! (cd / && "$root/$py" -c "import pgloss._core") 2>/dev/null; then
-  echo "== pip install . (sources changed; a first build takes a few minutes)"
-  export CMAKE_BUILD_PARALLEL_LEVEL="${CMAKE_BUILD_PARALLEL_LEVEL:-2}"
-  # -v: scikit-build-core's CMake and Ninja output ([n/N]), which step shows as progress
-  step "pip install ." "$py" -m pip install -v --disable-pip-version-check --no-build-isolation --force-reinstall --no-deps .
-  echo "$sources" >"$venv/.pgloss-installed"
-fi
+# The venv with the pins, and `pip install .` when the sources changed (scripts/venv-pgloss.sh).
+bash scripts/venv-pgloss.sh "$venv" "${pins[@]}"
 
 # bench/run.sh needs the installed package only.
 [[ ${PGLOSS_PY_SETUP_ONLY:-0} == 1 ]] && exit 0

@@ -16,6 +16,7 @@ bash scripts/test-materialx.sh
 bash scripts/test-osl.sh
 bash scripts/test-blender.sh
 bash scripts/test-tracer.sh
+bash scripts/test-bridge.sh
 bash scripts/test-web.sh
 bash scripts/test-experiment.sh
 bash scripts/test-tsan.sh

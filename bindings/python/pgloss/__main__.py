@@ -11,6 +11,8 @@ The package's own commands (``python -m pgloss COMMAND --help`` for each):
   (:mod:`pgloss.psychophysics.magnitude_cli`);
 * ``experiment stimuli|serve|export|export-jspsych|import …`` — run the paper's experiments in a
   browser, locally or as a jsPsych/JATOS study (:mod:`pgloss.experiment.cli`).
+* ``image-meter IMAGE …`` — (c, d) of the sphere in a linear render of the stimulus scene
+  (:mod:`pgloss.image_meter`).
 
 Every other command (``to-physical``, ``check``, ``match``, ``distance``, ``eval``, ``demo``, …,
 ``--version``) is the C tool's, which the wheel ships and which runs as it is (:mod:`pgloss.cli`);
@@ -256,6 +258,10 @@ COMMANDS: Tuple[Command, ...] = (
             "Render stimuli (stimuli), run pairwise gloss differences (§3.2.3) and magnitude estimation (§3.3.3) "
             "in a browser, stored in SQLite (serve), as a jsPsych/JATOS study (export-jspsych, import), write "
             "proximity matrices and the magnitude table (export); see pgloss.experiment."),
+    Command("image-meter", "IMAGE [options]", "(c, d) of the sphere in a linear render of the stimulus scene",
+            lambda p: __import__("pgloss.image_meter").image_meter.add_arguments(p),
+            lambda a: __import__("pgloss.image_meter").image_meter.run(a),
+            "Fits the Ward paint that reproduces the sphere's pixels (see pgloss.image_meter, docs/image-meter.md)."),
 )
 
 #: Exit code when the output could not be written (the C tool's too).

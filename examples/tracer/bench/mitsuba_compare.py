@@ -175,7 +175,10 @@ def box_faces_obj(folder: Path) -> list[Path]:
     return out
 
 
-def mitsuba_scene(mi, material: str, width: int, height: int, folder: Path):
+def mitsuba_scene(mi, material: str, width: int, height: int, folder: Path, *, paint: dict | None = None,
+                  crop: tuple[int, int, int, int] | None = None):
+    """The stimulus scene; ``paint`` (a Mitsuba BSDF dict) replaces MATERIALS[material]'s sphere,
+    ``crop`` = (x0, y0, w, h) renders that window of the film alone (the gloss bridge's harness)."""
     m = MATERIALS[material]
     black = {"type": "diffuse", "reflectance": {"type": "rgb", "value": 0.0}}
     d = {
@@ -196,12 +199,14 @@ def mitsuba_scene(mi, material: str, width: int, height: int, folder: Path):
             "bsdf": black,
         },
     }
-    if m["rho_s"] > 0:
+    if crop is not None:
+        film = d["sensor"]["film"]
+        film.update(crop_offset_x=crop[0], crop_offset_y=crop[1], crop_width=crop[2], crop_height=crop[3])
+    if paint is None and m["rho_s"] > 0:
         paint = {"type": "ward_pgloss", "rho_d": m["rho_d"], "rho_s": m["rho_s"], "alpha": m["alpha"]}
-    else:
-        paint = {"type": "diffuse", "reflectance": {"type": "rgb", "value": m["rho_d"]}}
-    d["sphere"] = {"type": "sphere", "center": SPHERE_C.tolist(), "radius": SPHERE_R,
-                   "bsdf": {"type": "twosided", "bsdf": paint} if m["rho_s"] == 0 else paint}
+    elif paint is None:
+        paint = {"type": "twosided", "bsdf": {"type": "diffuse", "reflectance": {"type": "rgb", "value": m["rho_d"]}}}
+    d["sphere"] = {"type": "sphere", "center": SPHERE_C.tolist(), "radius": SPHERE_R, "bsdf": paint}
     for path in box_faces_obj(folder):
         c0, c1 = 0.03, 0.767
         d[path.stem] = {

@@ -1,0 +1,169 @@
+# SPDX-FileCopyrightText: 2026 The pgloss authors
+# SPDX-License-Identifier: Apache-2.0
+"""The gloss bridge's instruments, CI-sized (scripts/test-bridge.sh runs this with .venv-bridge):
+
+* the image gloss meter on pgloss-tracer Ward renders of known paints (the control: within half
+  the validation tolerance, |Δc| ≤ 0.0025, |Δd| ≤ 0.005), against a small basis (α 0.02–0.2);
+* its refusals (wrong size, NaN, a black sphere);
+* one low-spp batch per real renderer: a Lambertian sphere agrees with pgloss-tracer's within
+  noise (Mitsuba 3, Cycles); Mitsuba's own Ward reads back as its paint; the glTF importer's
+  material renders as the Principled BSDF it should make; MaterialX open_pbr_surface through
+  genosl in Cycles reads as a plausible (c, d) near Principled's.
+
+The expected (c, d) come from the paper's eqs. 3–4 (pgloss.gloss_from_physical), the Lambertian
+references from another renderer: nothing here is the meter's output pasted back.
+"""
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import pgloss
+from pgloss import image_meter as im
+
+ROOT = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(ROOT / "examples" / "bridge"))
+SCENE = ROOT / "examples" / "tracer" / "scenes" / "stimulus.scene"
+TRACER = Path(os.environ.get("PGLOSS_TRACER", ROOT / "build-tracer-test" / "examples" / "tracer" / "pgloss-tracer"))
+WORK = ROOT / "build-bridge" / "ci"
+BPY = ROOT / ".venv-bpy" / "bin" / "python"
+TOOL = Path(os.environ.get("PGLOSS_TOOL", ROOT / "build-test" / "tools" / "pgloss"))
+RD = 0.193
+# 26 % steps over the α the tests use (interpolation error < 0.001 in d; docs/image-meter.md).
+ALPHAS = tuple(float(a) for a in np.geomspace(0.02, 0.2, 11))
+
+
+@pytest.fixture(scope="module")
+def basis() -> im.Basis:
+    assert TRACER.exists(), f"{TRACER}: build pgloss-tracer first (scripts/test-bridge.sh does)"
+    return im.render_basis(TRACER, SCENE, RD, alphas=ALPHAS, spp=1024, threads=2, cache=WORK / "basis")
+
+
+@pytest.fixture(scope="module")
+def view() -> im.View:
+    return im.View.from_scene(SCENE.read_text())
+
+
+def _tracer(view: im.View, rd: float, rs: float, a: float, spp: int, seed: int) -> np.ndarray:
+    text, size = im.crop_scene(SCENE.read_text(), view)
+    WORK.mkdir(parents=True, exist_ok=True)
+    return im.render_tracer(TRACER, im.scene_with_paint(text, im.paint_line(rd, rs, a)), spp, size, seed, 2, WORK)
+
+
+#: The grey stimulus of Fig. 4 (ρd .193, ρs .066, α .07) as a paint: L*, c, d (eqs. 3-4).
+GREY = tuple(float(v) for v in pgloss.gloss_from_physical(RD, 0.066, 0.07))
+
+
+def _mapped(target: str, work: Path) -> dict:
+    """The harness material of ``pgloss bridge TARGET`` for the grey stimulus."""
+    import validate
+
+    assert TOOL.exists(), f"{TOOL}: the pgloss tool (scripts/test-core.sh builds it)"
+    params, status = validate.mapped(target, GREY[0], GREY[1], GREY[2], TOOL)
+    assert status == "ok", (target, status)
+    return validate.TARGETS[target][1](params, work)
+
+
+def _loose(f: im.Fit, what: str) -> None:
+    """A mapped paint read back at low spp: within twice the validation tolerance."""
+    print(f"{what}: c {GREY[1]:.4f} -> {f.c:.4f}, d {GREY[2]:.4f} -> {f.d:.4f}, residual {f.residual:.3f}")
+    assert abs(f.c - GREY[1]) <= 0.01 and abs(f.d - GREY[2]) <= 0.02, (what, f)
+
+
+def test_view_is_the_stimulus_sphere(view: im.View) -> None:
+    mask, cos = view.sphere()
+    # A 0.5 m sphere 2.65 m from a 48° camera spans ~26 px of radius at 160 x 120: π 26² ≈ 2,120.
+    assert 2000 < mask.sum() < 2250
+    x0, y0, w, h = view.crop()
+    assert mask[y0:y0 + h, x0:x0 + w].sum() == mask.sum()
+    assert (x0 * 2 + w, y0 * 2 + h) == (view.width, view.height)  # centred
+
+
+@pytest.mark.parametrize("rs,a", [(0.066, 0.07), (0.033, 0.04), (0.099, 0.1)])
+def test_meter_control_tracer_ward(basis: im.Basis, view: im.View, rs: float, a: float) -> None:
+    img = _tracer(view, RD, rs, a, 512, 91)
+    f = im.fit(img, basis)
+    _, c, d = pgloss.gloss_from_physical(RD, rs, a)
+    print(f"\nWard {RD}/{rs}/{a}: c {c:.4f} -> {f.c:.4f}, d {d:.4f} -> {f.d:.4f}, residual {f.residual:.4f}")
+    assert abs(f.c - c) <= 0.0025 and abs(f.d - d) <= 0.005, f
+    assert f.status == "ok" and f.residual < 0.1
+    g = im.fit(img, basis, setup="rho_d-fitted")
+    assert abs(g.rho_d - RD) < 0.01 and abs(g.c - c) <= 0.005 and abs(g.d - d) <= 0.01, g
+
+
+def test_meter_refuses_what_it_cannot_read(basis: im.Basis, view: im.View) -> None:
+    with pytest.raises(im.MeterError, match="160x120"):
+        im.fit(np.ones((10, 10, 3)), basis)
+    img = np.full((view.height, view.width, 3), 0.1)
+    img[view.sphere()[0]] = np.nan
+    with pytest.raises(im.MeterError, match="NaN"):
+        im.fit(img, basis)
+    with pytest.raises(im.MeterError, match="black"):
+        im.fit(np.zeros((view.height, view.width, 3)), basis)
+    with pytest.raises(im.MeterError, match="setup"):
+        im.fit(np.ones((view.height, view.width, 3)), basis, setup="bogus")
+
+
+def _sphere_mean(img: np.ndarray, view: im.View) -> float:
+    return float(im.sphere_pixels(img, view).mean())
+
+
+def test_mitsuba_harness(basis: im.Basis, view: im.View) -> None:
+    import harness_mitsuba
+
+    crop = view.crop()
+    lam = harness_mitsuba.render({"type": "diffuse", "reflectance": RD}, spp=256, seed=5, size=(160, 120), crop=crop,
+                                 threads=2)
+    want = float(basis.diffuse.mean())
+    print(f"\nLambertian sphere: Mitsuba {_sphere_mean(lam, view):.5f}, pgloss-tracer {want:.5f}")
+    assert abs(_sphere_mean(lam, view) / want - 1) < 0.01  # per-pixel noise ~4 %, over 2,114 pixels ~0.2 %
+    ward = harness_mitsuba.render({"type": "ward", "rho_d": RD, "rho_s": 0.066, "alpha": 0.07}, spp=512, seed=6,
+                                  size=(160, 120), crop=crop, threads=2)
+    f = im.fit(ward, basis)
+    _, c, d = pgloss.gloss_from_physical(RD, 0.066, 0.07)
+    print(f"Mitsuba Ward: c {c:.4f} -> {f.c:.4f}, d {d:.4f} -> {f.d:.4f}")
+    assert abs(f.c - c) <= 0.005 and abs(f.d - d) <= 0.01, f
+    ggx = harness_mitsuba.render(_mapped("roughplastic_ggx", WORK), spp=512, seed=8, size=(160, 120), crop=crop,
+                                 threads=2)
+    _loose(im.fit(ggx, basis), "Mitsuba roughplastic GGX, mapped")
+
+
+def test_cycles_harnesses(basis: im.Basis, view: im.View, tmp_path: Path) -> None:
+    import materialx_osl
+
+    principled = {"type": "principled", "Base Color": RD, "Roughness": 0.3, "IOR": 1.5, "Specular IOR Level": 0.5}
+    gltf = {"type": "gltf", "material": {
+        "pbrMetallicRoughness": {"baseColorFactor": [RD, RD, RD, 1.0], "metallicFactor": 0.0, "roughnessFactor": 0.3},
+        "extensions": {"KHR_materials_ior": {"ior": 1.5}, "KHR_materials_specular": {"specularFactor": 1.0}}}}
+    openpbr = {"type": "osl", "output": "out", "file": str(materialx_osl.osl_shader(
+        "open_pbr_surface", {"base_color": RD, "specular_roughness": 0.3, "specular_ior": 1.5}, tmp_path))}
+    mats = {"diffuse": {"type": "diffuse", "reflectance": RD}, "principled": principled, "gltf": gltf,
+            "openpbr": openpbr, **{f"mapped {t}": _mapped(t, tmp_path) for t in ("principled", "gltf", "openpbr")}}
+    jobs = [{"material": m, "out": str(tmp_path / f"{k}.exr"), "spp": 512 if "mapped" in k else 256, "seed": 7}
+            for k, m in mats.items()]
+    (tmp_path / "jobs.json").write_text(json.dumps(jobs))
+    assert BPY.exists(), f"{BPY}: scripts/test-osl.sh makes the bpy venv"
+    r = subprocess.run([str(BPY), str(ROOT / "examples" / "bridge" / "harness_cycles.py"), "--jobs",
+                        str(tmp_path / "jobs.json"), "--crop", ",".join(map(str, view.crop())), "--threads", "2"],
+                       capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr[-3000:]
+    img = {k: im.read_linear(tmp_path / f"{k}.exr") for k in mats}
+    want = float(basis.diffuse.mean())
+    print(f"\nLambertian sphere: Cycles {_sphere_mean(img['diffuse'], view):.5f}, pgloss-tracer {want:.5f}")
+    assert abs(_sphere_mean(img["diffuse"], view) / want - 1) < 0.01
+    # The importer turns this glTF material into that Principled BSDF: the same image, same seed.
+    np.testing.assert_allclose(img["gltf"], img["principled"], rtol=1e-4, atol=1e-6)
+    fp, fo = im.fit(img["principled"], basis), im.fit(img["openpbr"], basis)
+    print(f"Principled roughness 0.3: c {fp.c:.4f} d {fp.d:.4f}; OpenPBR (genosl): c {fo.c:.4f} d {fo.d:.4f}")
+    # Both are GGX α 0.09 over a Lambertian-like base with F0 0.04: glossy, about as the paper's grey stimuli.
+    for f in (fp, fo):
+        assert 0.02 < f.c < 0.15 and 0.85 < f.d < 0.97 and f.status == "ok", f
+    assert abs(fp.c - fo.c) < 0.02 and abs(fp.d - fo.d) < 0.02
+    for t in ("principled", "gltf", "openpbr"):
+        _loose(im.fit(img[f"mapped {t}"], basis), f"Cycles {t}, mapped")
