@@ -209,7 +209,15 @@ struct Renderer::Impl {
         float nv0;                // n·v0
         GeomRef ref;
     };
-    std::vector<Para> paras;
+    std::vector<Para> paras;  // at most kSmallTriangles / 2: a bit each in a std::uint32_t
+    // For shadow rays (shadow_skip): the boxes whose six faces are parallelograms, shrunk by
+    // eps/2, and the bit of the only light's parallelogram (0 if there are other lights).
+    struct Room {
+        glm::vec3 lo, hi;
+        std::uint32_t paras;  // the bits of its faces
+    };
+    std::vector<Room> rooms;
+    std::uint32_t only_light = 0;
     bool small_scene = false;
     // A *hybrid* scene — `mesh` lines, and boxes, quads and lights of at most kSmallTriangles
     // triangles, at most kAnalyticSpheres spheres (the mug scene) — has the latter in the lane
@@ -276,6 +284,19 @@ struct Renderer::Impl {
             hybrid = pass == 1 && fits && meshes_left_out;
         }
         if (!small_scene && !hybrid) tris.clear(), paras.clear();
+        for (size_t k = 0; k < paras.size(); ++k)
+            if (paras[k].ref.kind == GeomKind::LIGHT && s.lights.size() == 1 && !s.has_environment) only_light |= 1u << k;
+        for (size_t i = 0; i < s.meshes.size(); ++i) {
+            if (s.meshes[i].label != "box") continue;
+            Room room{glm::vec3(std::numeric_limits<float>::infinity()), glm::vec3(-std::numeric_limits<float>::infinity()), 0u};
+            size_t faces = 0;
+            for (size_t k = 0; k < paras.size(); ++k)
+                if (paras[k].ref.kind == GeomKind::MESH && paras[k].ref.index == int(i)) room.paras |= 1u << k, ++faces;
+            if (2 * faces != s.meshes[i].faces.size()) continue;  // not all of it in the lane loops
+            for (const glm::vec3 &v : s.meshes[i].vertices) room.lo = glm::min(room.lo, v), room.hi = glm::max(room.hi, v);
+            room.lo += 0.5f * eps, room.hi -= 0.5f * eps;  // rays leave surfaces eps off them
+            rooms.push_back(room);
+        }
         if (!hybrid) {
             build_all();
             return;
@@ -472,9 +493,14 @@ struct Renderer::Impl {
     // The closest parallelogram, triangle or sphere along each ray of p with 0 < t < p.tfar
     // (any, if any_hit): Möller & Trumbore 1997 for the triangles, edges inclusive (a ray
     // through an edge two primitives share hits one of them), the spheres as sphere_hit.
+    //
+    // any_hit is for shadow rays, which end short of the light they aim at: it leaves out the
+    // parallelograms that cannot occlude any ray of p (shadow_skip).
     template <bool any_hit>
     void small_intersect(Packet &p) const {
+        const std::uint32_t skip = any_hit ? shadow_skip(p) : 0u;
         for (size_t k = 0; k < paras.size(); ++k) {
+            if (skip >> k & 1u) continue;
             const Para &Q = paras[k];
             const int id = int(tris.size() + k);
             for (int j = 0; j < 16; ++j) {
@@ -529,6 +555,25 @@ struct Renderer::Impl {
                 p.prim[j] = h ? id : p.prim[j];
             }
         }
+    }
+
+    // The parallelograms (a bit each) that no shadow ray of p can meet: the only light, when
+    // there is no other (a shadow ray stops short of it), and the faces of a box that holds
+    // both ends of every ray, eps/2 inside (a segment inside a convex box does not cross it).
+    std::uint32_t shadow_skip(const Packet &p) const {
+        std::uint32_t skip = only_light;
+        for (const Room &b : rooms) {
+            int inside = 0;  // lanes (a count, which the compiler vectorises)
+            for (int j = 0; j < 16; ++j) {
+                const float ex = p.ox[j] + p.tfar[j] * p.dx[j], ey = p.oy[j] + p.tfar[j] * p.dy[j],
+                            ez = p.oz[j] + p.tfar[j] * p.dz[j];
+                inside += (p.ox[j] > b.lo.x) & (p.ox[j] < b.hi.x) & (p.oy[j] > b.lo.y) & (p.oy[j] < b.hi.y) &
+                          (p.oz[j] > b.lo.z) & (p.oz[j] < b.hi.z) & (ex > b.lo.x) & (ex < b.hi.x) &
+                          (ey > b.lo.y) & (ey < b.hi.y) & (ez > b.lo.z) & (ez < b.hi.z);
+            }
+            if (inside == 16) skip |= b.paras;
+        }
+        return skip;
     }
 
     // The hit record of a ray whose closest primitive small_intersect found (prim, t).
@@ -676,15 +721,19 @@ struct Renderer::Impl {
         }
     }
 
-    // Whether the segment o + t d, 0 < t < tmax, can meet the meshes' bounds (a hybrid scene):
-    // the slab test, where a NaN from a zero direction component counts as meeting them.
-    bool meets_meshes(glm::vec3 o, glm::vec3 d, float tmax) const {
-        const glm::vec3 inv = 1.0f / d;
-        const glm::vec3 t0 = (mesh_lo - o) * inv, t1 = (mesh_hi - o) * inv;
-        const glm::vec3 tn = glm::min(t0, t1), tf = glm::max(t0, t1);
-        const float lo = std::max(std::max(tn.x, tn.y), std::max(tn.z, 0.0f));
-        const float hi = std::min(std::min(tf.x, tf.y), std::min(tf.z, tmax));
-        return !(lo > hi);
+    // Whether the segment of each ray of p, 0 < t < p.tfar, can meet the meshes' bounds (a
+    // hybrid scene): the slab test, where a NaN from a zero direction component counts as
+    // meeting them.
+    void meets_meshes(const Packet &p, bool meets[16]) const {
+        for (int j = 0; j < 16; ++j) {
+            const float ix = 1.0f / p.dx[j], iy = 1.0f / p.dy[j], iz = 1.0f / p.dz[j];
+            const float x0 = (mesh_lo.x - p.ox[j]) * ix, x1 = (mesh_hi.x - p.ox[j]) * ix;
+            const float y0 = (mesh_lo.y - p.oy[j]) * iy, y1 = (mesh_hi.y - p.oy[j]) * iy;
+            const float z0 = (mesh_lo.z - p.oz[j]) * iz, z1 = (mesh_hi.z - p.oz[j]) * iz;
+            const float lo = std::max(std::max(std::min(x0, x1), std::min(y0, y1)), std::max(std::min(z0, z1), 0.0f));
+            const float hi = std::min(std::min(std::max(x0, x1), std::max(y0, y1)), std::min(std::max(z0, z1), p.tfar[j]));
+            meets[j] = !(lo > hi);
+        }
     }
 
     // The material index at p: mi itself, or the check of a checker that p falls in.
@@ -929,6 +978,7 @@ struct Renderer::Impl {
             wf.hits.resize(na);
             const bool small = small_scene && !set.embree_always;
             const bool hyb = hybrid && !set.embree_always;  // lane loops, then Embree for the meshes
+            wf.embree.clear();
             for (size_t b = 0; (small || hyb) && b < na; b += 16) {
                 const size_t cnt = std::min<size_t>(16, na - b);
                 Packet pk;
@@ -937,18 +987,15 @@ struct Renderer::Impl {
                     pk.set(j, ps.o, ps.d, std::numeric_limits<float>::infinity());
                 }
                 small_intersect<false>(pk);
+                bool meets[16];
+                if (hyb) meets_meshes(pk, meets);
                 for (size_t j = 0; j < cnt; ++j) {
                     const PathState &ps = paths[wf.active[b + j]];
                     wf.hits[b + j] = make_small_hit(ps.o, ps.d, pk.prim[j], pk.tfar[j]);
+                    if (hyb && meets[j]) wf.embree.push_back(std::uint32_t(b + j));
                 }
             }
-            if (hyb) {  // the rays whose segment to the lane loops' hit can meet a mesh
-                wf.embree.clear();
-                for (size_t i = 0; i < na; ++i) {
-                    const PathState &ps = paths[wf.active[i]];
-                    if (meets_meshes(ps.o, ps.d, wf.hits[i].hit ? wf.hits[i].t : std::numeric_limits<float>::infinity()))
-                        wf.embree.push_back(std::uint32_t(i));
-                }
+            if (hyb) {  // the meshes, for the rays whose segment to the lane loops' hit can meet them
                 if (packet16) mesh_closest<RTCRayHit16, 16>(paths, wf, ctx);
                 else mesh_closest<RTCRayHit8, 8>(paths, wf, ctx);
             }
@@ -994,10 +1041,12 @@ struct Renderer::Impl {
                     pk.set(j, ps.shadow_o, ps.shadow_d, ps.shadow_tmax);
                 }
                 small_intersect<true>(pk);
+                bool meets[16];
+                if (hyb) meets_meshes(pk, meets);
                 for (size_t j = 0; j < cnt; ++j)
                     if (pk.prim[j] == -1) {
                         PathState &ps = paths[wf.shadows[b + j]];
-                        if (hyb && meets_meshes(ps.shadow_o, ps.shadow_d, ps.shadow_tmax)) wf.embree.push_back(std::uint32_t(b + j));
+                        if (hyb && meets[j]) wf.embree.push_back(std::uint32_t(b + j));
                         else ps.L += ps.shadow_c;
                     }
             }
