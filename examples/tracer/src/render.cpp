@@ -117,9 +117,15 @@ struct PathState {
     Prev prev = Prev::CAMERA;
     int depth = 0;                   // index of the vertex the next hit will be
     PathSampler smp;                 // its random numbers (sampler.hpp)
-    bool shadow = false;             // a next-event estimate waits for its shadow ray:
-    glm::vec3 shadow_o{0}, shadow_d{0}, shadow_c{0};  // ray, and what it adds if unoccluded
-    float shadow_tmax = 0;
+};
+
+// A next-event estimate's shadow ray o + t d, 0 < t < tmax, and what it adds to path's
+// radiance if nothing occludes it: a step's are gathered in a list of their own, read in order
+// by the shadow passes (not from the paths' scattered state).
+struct ShadowRay {
+    glm::vec3 o, d, c;
+    float tmax;
+    std::uint32_t path;
 };
 
 // Paths traced together: enough for full packets until the last bounces, few enough that
@@ -143,6 +149,8 @@ struct ShadeRec {
     int mat = -1;                    // material index; -1: the path ends at this hit
     Prev strat = Prev::LIGHT;
     bool nee = false;                // a next-event estimate to weight
+    bool shadow = false;             // it waits for its shadow ray (p, wi, tmax), which adds shadow_c
+    glm::vec3 shadow_c{0};
 };
 
 // The structure-of-arrays inputs and outputs of the batched lobe calls (pgloss/batch.h).
@@ -151,7 +159,8 @@ enum Lane { WOX, WOY, WOZ, WIX, WIY, WIZ, U0, U1, U2, FR, FG, FB, FPDF,
 
 // A worker's scratch lists for trace_wavefront (kept across tiles: no allocation per sample).
 struct Wavefront {
-    std::vector<std::uint32_t> active, next, shadows, order;
+    std::vector<std::uint32_t> active, next, order;
+    std::vector<ShadowRay> shadows;
     std::vector<std::uint32_t> embree;  // hybrid scenes: the step's rays that Embree traces
     std::vector<Hit> hits;
     std::vector<PathState> paths;
@@ -698,7 +707,7 @@ struct Renderer::Impl {
             }
         }
     }
-    // The shadow rays paths[wf.shadows[i]], i in wf.embree, against a hybrid scene's meshes:
+    // The shadow rays wf.shadows[i], i in wf.embree, against a hybrid scene's meshes:
     // each unoccluded one adds its next-event estimate.
     template <class RayK, size_t K>
     void mesh_occluded(PathState *paths, const Wavefront &wf, RTCIntersectContext &ctx) const {
@@ -708,15 +717,15 @@ struct Renderer::Impl {
             alignas(64) int valid[K];
             alignas(64) RayK r;
             for (size_t j = 0; j < K; ++j) {
-                const PathState &ps = paths[wf.shadows[wf.embree[b + std::min(j, cnt - 1)]]];
+                const ShadowRay &sr = wf.shadows[wf.embree[b + std::min(j, cnt - 1)]];
                 valid[j] = j < cnt ? -1 : 0;
-                set_ray(r, j, ps.shadow_o, ps.shadow_d, ps.shadow_tmax);
+                set_ray(r, j, sr.o, sr.d, sr.tmax);
             }
             occluded(valid, rtc_mesh, &ctx, &r);
             for (size_t j = 0; j < cnt; ++j)
                 if (!(r.tfar[j] < 0.0f)) {
-                    PathState &ps = paths[wf.shadows[wf.embree[b + j]]];
-                    ps.L += ps.shadow_c;
+                    const ShadowRay &sr = wf.shadows[wf.embree[b + j]];
+                    paths[sr.path].L += sr.c;
                 }
         }
     }
@@ -748,7 +757,8 @@ struct Renderer::Impl {
     // Emitted radiance of light li towards a point, seen along direction -wi (wi points at the light).
     glm::vec3 light_emission(const AreaLight &l, float cos_l) const {
         if (cos_l <= 0) return glm::vec3(0);
-        return l.isotropic ? l.radiance / cos_l : l.radiance;
+        if (!l.isotropic) return l.radiance;
+        return l.radiance / cos_l;
     }
 
     // The solid-angle pdf with which next-event estimation from o picks the point of light li
@@ -775,7 +785,7 @@ struct Renderer::Impl {
         const int max_depth = set.max_depth;
         const glm::vec3 d = ps.d;
         const float nl = float(light_count());
-        ps.shadow = false;
+        r.shadow = false;
         r.mat = -1;
         if (!hit.hit) {
             if (scene.has_environment && ps.prev != Prev::LIGHT) {
@@ -880,16 +890,16 @@ struct Renderer::Impl {
     }
 
     // Stage 3: the next-event estimate from the lobe's f and pdf at r.wil (left in
-    // ps.shadow_* for its shadow ray), and the path continued by the BRDF sample (s_*).
+    // r.shadow_c for its shadow ray), and the path continued by the BRDF sample (s_*).
     // Returns false when the path ends (the shadow ray, if any, is still traced).
-    bool shade_end(PathState &ps, const ShadeRec &r, glm::vec3 f, float pdf_brdf, pgloss_vec3 s_wi,
+    bool shade_end(PathState &ps, ShadeRec &r, glm::vec3 f, float pdf_brdf, pgloss_vec3 s_wi,
                    float s_pdf, glm::vec3 s_weight) const {
         if (r.nee) {
             const float w = r.strat == Prev::MIS ? power_heuristic(r.pdf_light, pdf_brdf) : 1.0f;
             glm::vec3 c = ps.beta * f * r.Le * (r.wil.z * w / r.pdf_light);
             if (max3(c) > 0) {
-                ps.shadow = true;
-                ps.shadow_o = r.p, ps.shadow_d = r.wi, ps.shadow_tmax = r.tmax, ps.shadow_c = c;
+                r.shadow = true;
+                r.shadow_c = c;
             }
         }
         // Continue the path by BRDF sampling.
@@ -1028,7 +1038,8 @@ struct Renderer::Impl {
             wf.next.clear();
             wf.shadows.clear();
             for (size_t i = 0; i < na; ++i) {  // in the wavefront's order: packets as before
-                if (paths[wf.active[i]].shadow) wf.shadows.push_back(wf.active[i]);
+                const ShadeRec &r = wf.recs[i];
+                if (r.shadow) wf.shadows.push_back({r.p, r.wi, r.shadow_c, r.tmax, wf.active[i]});
                 if (wf.recs[i].mat >= 0) wf.next.push_back(wf.active[i]);
             }
             const size_t ns = wf.shadows.size();
@@ -1037,17 +1048,16 @@ struct Renderer::Impl {
                 const size_t cnt = std::min<size_t>(16, ns - b);
                 Packet pk;
                 for (size_t j = 0; j < 16; ++j) {
-                    const PathState &ps = paths[wf.shadows[b + std::min(j, cnt - 1)]];
-                    pk.set(j, ps.shadow_o, ps.shadow_d, ps.shadow_tmax);
+                    const ShadowRay &sr = wf.shadows[b + std::min(j, cnt - 1)];
+                    pk.set(j, sr.o, sr.d, sr.tmax);
                 }
                 small_intersect<true>(pk);
                 bool meets[16];
                 if (hyb) meets_meshes(pk, meets);
                 for (size_t j = 0; j < cnt; ++j)
                     if (pk.prim[j] == -1) {
-                        PathState &ps = paths[wf.shadows[b + j]];
                         if (hyb && meets[j]) wf.embree.push_back(std::uint32_t(b + j));
-                        else ps.L += ps.shadow_c;
+                        else paths[wf.shadows[b + j].path].L += wf.shadows[b + j].c;
                     }
             }
             if (packet16) mesh_occluded<RTCRay16, 16>(paths, wf, ctx);
@@ -1057,18 +1067,15 @@ struct Renderer::Impl {
                 alignas(64) int valid[16];
                 alignas(64) RTCRay16 r;
                 for (size_t j = 0; j < 16; ++j) {
-                    const PathState &ps = paths[wf.shadows[b + std::min(j, cnt - 1)]];
+                    const ShadowRay &sr = wf.shadows[b + std::min(j, cnt - 1)];
                     int si = -1;
-                    const bool by_sphere = j < cnt && sphere_hit(ps.shadow_o, ps.shadow_d, ps.shadow_tmax, si) < ps.shadow_tmax;
+                    const bool by_sphere = j < cnt && sphere_hit(sr.o, sr.d, sr.tmax, si) < sr.tmax;
                     valid[j] = j < cnt && !by_sphere ? -1 : 0;
-                    set_ray(r, j, ps.shadow_o, ps.shadow_d, by_sphere ? -std::numeric_limits<float>::infinity() : ps.shadow_tmax);
+                    set_ray(r, j, sr.o, sr.d, by_sphere ? -std::numeric_limits<float>::infinity() : sr.tmax);
                 }
                 rtcOccluded16(valid, rtc, &ctx, &r);
                 for (size_t j = 0; j < cnt; ++j)
-                    if (!(r.tfar[j] < 0.0f)) {
-                        PathState &ps = paths[wf.shadows[b + j]];
-                        ps.L += ps.shadow_c;
-                    }
+                    if (!(r.tfar[j] < 0.0f)) paths[wf.shadows[b + j].path].L += wf.shadows[b + j].c;
             }
             rays += ns;
             std::swap(wf.active, wf.next);
