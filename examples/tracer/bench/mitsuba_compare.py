@@ -1,39 +1,51 @@
 # SPDX-FileCopyrightText: 2026 The pgloss authors
 # SPDX-License-Identifier: Apache-2.0
-"""pgloss-tracer against Mitsuba 3 (llvm_ad_rgb) on the stimulus scene, side by side.
+"""pgloss-tracer against Mitsuba 3 (llvm_ad_rgb) on a tracer scene, side by side.
 
-A benchmark (prints a Markdown table), not a test. Both renderers draw the same scene,
-examples/tracer/scenes/stimulus.scene:
+A benchmark (prints Markdown tables), not a test. Both renderers draw the same scene, read from
+the tracer's scene file (read_scene) and translated for Mitsuba (mitsuba_dict):
 
-* geometry: the 4 x 3 x 4 m box as six UV-mapped faces whose Mitsuba ``checkerboard`` texture
-  reproduces the tracer's 3-D checker (0.5 m checks, offset 0.125 m, rho_d .03 / .767), the
-  0.5 m sphere, the 1 m^2 one-sided light (radiance 16, black surface);
-* camera: the same pinhole (vertical fov 48 deg), box pixel filter (one pixel per sample);
-* path rules: the tracer's max_depth 8 (eight shading vertices) is Mitsuba's max_depth 9,
-  its Russian roulette after the fourth vertex (q = min(.95, max throughput)) is Mitsuba's
-  rr_depth 4 with the same q; NEE + BSDF sampling combined with the power heuristic;
-* material of the sphere ("paint"): Lambertian rho_d .193 (Mitsuba's ``diffuse``), or the
-  paper's Fig. 4 stimulus (rho_d .193, rho_s .066, alpha .07), Ward eq. 2 written below as
-  a Dr.Jit BSDF with pgloss's sampling (Walter 2005's half vector, lobe chosen by
-  rho_s / (lum(rho_d) + rho_s));
+* geometry: boxes as six UV-mapped faces whose Mitsuba ``checkerboard`` texture reproduces the
+  tracer's 3-D checker; meshes from the same OBJ files with ``face_normals`` (the tracer shades
+  with the triangle's own normal) and ``to_world`` = translate . scale (scale first), each
+  surface in a ``twosided`` BSDF (the tracer turns the normal towards the ray); spheres;
+  one-sided rectangle lights (black surface); a uniform environment as ``constant``;
+* camera: the same pinhole (vertical fov), box pixel filter (one pixel per sample);
+* path rules: the tracer's max_depth (shading vertices) is Mitsuba's max_depth + 1, its Russian
+  roulette after the fourth vertex (q = min(.95, max throughput)) is Mitsuba's rr_depth 4 with
+  the same q; NEE + BSDF sampling combined with the power heuristic;
+* materials: Lambertian as Mitsuba's ``diffuse``; Ward eq. 2 (isotropic, ``norm=ward``) as a
+  Dr.Jit BSDF below with pgloss's sampling (Walter 2005's half vector, lobe chosen by
+  rho_s / (luminance(rho_d) + rho_s)); perceptual paints converted by ``pgloss to-physical``,
+  as the tracer converts them;
 * sampler: independent on both (the comparison); --sobol adds a row for the tracer with its
   Owen-scrambled Sobol' sampler; the same number of threads on both (default 2);
 * light sampling: uniform by area on both (the tracer's default, Mitsuba's rectangle).
 
-Per renderer and material it reports samples/s, the relative RMSE at N spp against the
-renderer's *own* high-spp reference, the time to 1 % relative RMSE and the efficiency ratio
-1/(relMSE x time) tracer / Mitsuba. Relative RMSE = ||x - ref|| / ||ref|| over all pixels and
-RGB channels; the reference's own noise is taken out (relMSE_N = measured x Nref/(N + Nref),
-exact for independent samples of one estimator). The time to 1 % is spp_1% / (spp/s) with
-spp_1% = N (relRMSE_N / 0.01)^2. Runs of the two renderers alternate (tracer, Mitsuba,
-Mitsuba, tracer, ...) so that machine load hits both alike; wall and CPU time are both given
-(the tracer's render loop only; Mitsuba's whole mi.render call, kernel cache warm).
-Finally the two references are compared per region (walls, floor, ceiling, sphere) with the
+The stimulus scene is rendered with each sphere material of --materials (Lambertian rho_d
+.193, the Fig. 4 stimulus rho_d .193, rho_s .066, alpha .07); any other scene as written
+(--scene mug: Fig. 14's glossy red mug). Per renderer it reports samples/s, the relative RMSE
+at N spp against the renderer's *own* high-spp reference, the time to 1 % relative RMSE and the
+efficiency ratio 1/(relMSE x time) tracer / Mitsuba. Relative RMSE = ||x - ref|| / ||ref|| over
+all pixels and RGB channels; the reference's own noise is taken out (relMSE_N = measured x
+Nref/(N + Nref), exact for independent samples of one estimator). The time to 1 % is spp_1% /
+(spp/s) with spp_1% = N (relRMSE_N / 0.01)^2. Runs of the two renderers alternate (tracer,
+Mitsuba, Mitsuba, tracer, ...) so that machine load hits both alike, and the efficiency ratio
+is taken per round from that round's two times (the errors, which do not depend on the load,
+pooled over the rounds): median and range. Wall and CPU time are both given (the tracer's
+render loop only; Mitsuba's whole mi.render call, kernel cache warm; neither includes loading
+the scene). Finally the two references are compared per region (the first hit through each
+pixel centre, by Mitsuba's ray cast: walls, floor, ceiling, each mesh, sphere) with the
 difference's standard error, to show that both converge to the same image.
 
-    python examples/tracer/bench/mitsuba_compare.py [--quick] [--tracer PATH] [--threads 2]
-        [--spp 16,64] [--ref-spp 1024] [--reps 2] [--size 320x240] [--materials diffuse,stimulus]
-        [--sobol]
+--scale N1,N2,... then renders the scene with each mesh triangle cut into N^2
+(subdivide_mesh.py: the same surface, so the same image) and reports each size's build time,
+memory, samples/s and efficiency ratio. --write FILE puts the report in this command's own
+section of FILE (BENCHMARKS.md), written whole.
+
+    bash examples/tracer/bench/run.sh [--quick] [--scene stimulus|mug|FILE.scene] [--spp 16,64]
+        [--ref-spp 1024] [--reps 3] [--size WxH] [--materials diffuse,stimulus] [--sobol]
+        [--scale 1,10,32] [--write BENCHMARKS.md]
 """
 from __future__ import annotations
 
@@ -54,19 +66,12 @@ HERE = Path(__file__).resolve().parent
 SCENES = HERE.parent / "scenes"
 SCENE = SCENES / "stimulus.scene"
 
+# The stimulus scene's sphere materials (its material `paint`, replaced line for line).
 MATERIALS = {
-    "diffuse": {"label": "diffuse sphere (rho_d .193)", "line": "material paint diffuse=0.193",
-                "rho_d": 0.193, "rho_s": 0.0, "alpha": 0.07},
+    "diffuse": {"label": "diffuse sphere (rho_d .193)", "line": "material paint diffuse=0.193"},
     "stimulus": {"label": "Fig. 4 stimulus (rho_d .193, rho_s .066, alpha .07)",
-                 "line": "material paint physical rho_d=0.193 rho_s=0.066 alpha=0.07",
-                 "rho_d": 0.193, "rho_s": 0.066, "alpha": 0.07},
+                 "line": "material paint physical rho_d=0.193 rho_s=0.066 alpha=0.07"},
 }
-
-# The scene's numbers (stimulus.scene); the tracer reads them from the file itself.
-BOX_MIN, BOX_MAX = np.array([-2.0, 0.0, -2.0]), np.array([2.0, 3.0, 2.0])
-CHECK, OFFSET = 0.5, 0.125
-SPHERE_C, SPHERE_R = np.array([0.0, 0.5, -0.5]), 0.5
-CAM_POS, CAM_AT, CAM_UP, FOV = (0, 1.5, 1.95), (0, 0.45, -0.5), (0, 1, 0), 48.0
 
 
 # Rec. 709 luminance weights (libpgloss/include/pgloss/color.h: PGLOSS_LUMA_R, _G, _B).
@@ -150,8 +155,7 @@ def ward_bsdf_class(mi, dr):
     return Ward
 
 
-def box_faces_obj(folder: Path, lo=BOX_MIN, hi=BOX_MAX, check: float = CHECK, offset=(OFFSET,) * 3,
-                  prefix: str = "face") -> list[Path]:
+def box_faces_obj(folder: Path, lo, hi, check: float, offset, prefix: str = "face") -> list[Path]:
     """The box's six faces as one-quad OBJ files with UVs such that Mitsuba's checkerboard
     (colour0 where frac(u) > .5 equals frac(v) > .5) is the tracer's parity
     (floor((x-o)/s) + floor((y-o)/s) + floor((z-o)/s)) & 1 -> white: u is shifted by half a

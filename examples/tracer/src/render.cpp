@@ -310,8 +310,9 @@ struct Renderer::Impl {
             build_all();
             return;
         }
+        // Embree's default (medium) build quality: at 1M triangles it takes half the time of
+        // high's, and the rays cost the same (mug.scene at 960 and 983,040 triangles).
         rtc_mesh = rtcNewScene(device);
-        rtcSetSceneBuildQuality(rtc_mesh, RTC_BUILD_QUALITY_HIGH);
         mesh_lo = glm::vec3(std::numeric_limits<float>::infinity()), mesh_hi = -mesh_lo;
         for (size_t i = 0; i < s.meshes.size(); ++i) {
             const Mesh &m = s.meshes[i];
@@ -1243,7 +1244,7 @@ Image Renderer::render(const RenderSettings &s, const RenderOptions &opt, Render
         // has fewer tiles than there are threads. The passes and tiles are those of the
         // progressive loop below, so the image is the same.
         std::vector<std::pair<int, int>> passes;
-        for (int done = 0, n = 1; done < s.spp; n *= 2) {
+        for (int done = 0, n = 1; done < s.spp; n = std::min(2 * n, std::max(1, opt.max_pass_spp))) {
             const int k = next_pass_spp(n, done);
             passes.emplace_back(done, done + k);
             done += k;
