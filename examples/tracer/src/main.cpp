@@ -5,15 +5,39 @@
 #include "figures.hpp"
 
 #include <atomic>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
 #include <vector>
 #include <string>
+#include <time.h>
+#include <unistd.h>
 
 namespace {
+
+// Resident memory of the process (Linux /proc/self/statm), MiB; 0 where it cannot be read.
+double resident_mib() {
+    std::ifstream f("/proc/self/statm");
+    double pages = 0, resident = 0;
+    f >> pages >> resident;
+    return f ? resident * double(sysconf(_SC_PAGESIZE)) / 1048576.0 : 0.0;
+}
+double cpu_seconds() {
+    timespec ts{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+// Wall and CPU seconds since a mark.
+struct Stopwatch {
+    std::chrono::steady_clock::time_point wall = std::chrono::steady_clock::now();
+    double cpu = cpu_seconds();
+    double wall_s() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall).count(); }
+    double cpu_s() const { return cpu_seconds() - cpu; }
+};
 
 // Set by the first SIGINT/SIGTERM during `render`: the render stops after the tiles under way
 // and what it has is written. A second signal ends the program at once.
@@ -66,7 +90,10 @@ int main(int argc, char **argv) {
     }
     try {
         if (o.command == Cmd::RENDER) {
+            const double mib0 = resident_mib();
+            const Stopwatch load_t;
             pgt::Scene sc = pgt::load_scene(o.scene_path);
+            const double load_s = load_t.wall_s(), load_cpu = load_t.cpu_s();
             pgt::RenderSettings s = sc.settings;
             if (o.width > 0) s.width = o.width, s.height = o.height;
             if (o.spp > 0) s.spp = o.spp;
@@ -82,7 +109,9 @@ int main(int argc, char **argv) {
             const std::string &out = o.out;
             std::filesystem::path parent = std::filesystem::path(out).parent_path();
             if (!parent.empty()) std::filesystem::create_directories(parent);
+            const Stopwatch build_t;
             pgt::Renderer r(sc);
+            const double build_s = build_t.wall_s(), build_cpu = build_t.cpu_s(), scene_mib = resident_mib() - mib0;
             pgt::RenderOptions ro;
             ro.threads = o.threads;
             ro.progress = !o.quiet;
@@ -96,9 +125,11 @@ int main(int argc, char **argv) {
                 throw std::runtime_error("interrupted before any tile was finished; nothing written");
             pgt::write_exr(img, out + ".exr");
             pgt::write_png(pgt::display_image(img, sc.tonemap), out + ".png");
-            std::printf("%s.exr %s.png: %dx%d, %d spp, %s, %.2f s, %.2f Mrays/s, %.2f Msamples/s, %.2f s CPU\n", out.c_str(),
-                        out.c_str(), s.width, s.height, st.spp, pgt::mode_name(s.mode), st.seconds,
-                        double(st.rays) / st.seconds * 1e-6, double(st.samples) / st.seconds * 1e-6, st.cpu_seconds);
+            std::printf("%s.exr %s.png: %dx%d, %d spp, %s, %.2f s, %.2f Mrays/s, %.2f Msamples/s, %.2f s CPU; "
+                        "scene: load %.2f s, BVH %.2f s (CPU %.2f s, %.2f s), +%.0f MiB\n",
+                        out.c_str(), out.c_str(), s.width, s.height, st.spp, pgt::mode_name(s.mode), st.seconds,
+                        double(st.rays) / st.seconds * 1e-6, double(st.samples) / st.seconds * 1e-6, st.cpu_seconds,
+                        load_s, build_s, load_cpu, build_cpu, scene_mib);
             if (st.interrupted) {
                 std::fprintf(stderr, "pgloss-tracer: interrupted; wrote the %llu samples rendered (%d spp or more "
                                      "per pixel)\n", static_cast<unsigned long long>(st.samples), st.spp);

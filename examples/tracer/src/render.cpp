@@ -56,6 +56,7 @@ enum class GeomKind { SPHERE, MESH, LIGHT };
 struct GeomRef {
     GeomKind kind;
     int index;
+    int material = -1;  // the mesh's or sphere's (a checker's index, resolved per hit)
 };
 
 // Flush-to-zero and denormals-are-zero for the scope (restored after): Embree asks for them
@@ -116,9 +117,15 @@ struct PathState {
     Prev prev = Prev::CAMERA;
     int depth = 0;                   // index of the vertex the next hit will be
     PathSampler smp;                 // its random numbers (sampler.hpp)
-    bool shadow = false;             // a next-event estimate waits for its shadow ray:
-    glm::vec3 shadow_o{0}, shadow_d{0}, shadow_c{0};  // ray, and what it adds if unoccluded
-    float shadow_tmax = 0;
+};
+
+// A next-event estimate's shadow ray o + t d, 0 < t < tmax, and what it adds to path's
+// radiance if nothing occludes it: a step's are gathered in a list of their own, read in order
+// by the shadow passes (not from the paths' scattered state).
+struct ShadowRay {
+    glm::vec3 o, d, c;
+    float tmax;
+    std::uint32_t path;
 };
 
 // Paths traced together: enough for full packets until the last bounces, few enough that
@@ -142,6 +149,8 @@ struct ShadeRec {
     int mat = -1;                    // material index; -1: the path ends at this hit
     Prev strat = Prev::LIGHT;
     bool nee = false;                // a next-event estimate to weight
+    bool shadow = false;             // it waits for its shadow ray (p, wi, tmax), which adds shadow_c
+    glm::vec3 shadow_c{0};
 };
 
 // The structure-of-arrays inputs and outputs of the batched lobe calls (pgloss/batch.h).
@@ -150,7 +159,9 @@ enum Lane { WOX, WOY, WOZ, WIX, WIY, WIZ, U0, U1, U2, FR, FG, FB, FPDF,
 
 // A worker's scratch lists for trace_wavefront (kept across tiles: no allocation per sample).
 struct Wavefront {
-    std::vector<std::uint32_t> active, next, shadows, order;
+    std::vector<std::uint32_t> active, next, order;
+    std::vector<ShadowRay> shadows;
+    std::vector<std::uint32_t> embree;  // hybrid scenes: the step's rays that Embree traces
     std::vector<Hit> hits;
     std::vector<PathState> paths;
     std::vector<ShadeRec> recs;
@@ -177,8 +188,10 @@ const char *region_name(int r) {
 struct Renderer::Impl {
     const Scene &scene;
     RTCDevice device = nullptr;
-    RTCScene rtc = nullptr;
-    std::vector<GeomRef> geoms;  // by geomID
+    RTCScene rtc = nullptr;       // every primitive that Embree holds (in a hybrid scene: built by need_all)
+    RTCScene rtc_mesh = nullptr;  // a hybrid scene's `mesh` lines alone
+    std::once_flag rtc_once;
+    std::vector<GeomRef> geoms;  // by geomID (the same IDs in both scenes)
     // A scene with few spheres has them intersected here, analytically, and only its
     // triangles in Embree: Embree 3 traverses a separate BVH for its sphere primitives, which
     // doubled the cost of every ray in the stimulus scene (one sphere, 14 triangles).
@@ -205,8 +218,39 @@ struct Renderer::Impl {
         float nv0;                // n·v0
         GeomRef ref;
     };
-    std::vector<Para> paras;
+    std::vector<Para> paras;  // at most kSmallTriangles / 2: a bit each in a std::uint32_t
+    // For shadow rays (shadow_skip): the boxes whose six faces are parallelograms, shrunk by
+    // eps/2, and the bit of the only light's parallelogram (0 if there are other lights).
+    struct Room {
+        glm::vec3 lo, hi;
+        std::uint32_t paras;  // the bits of its faces
+    };
+    std::vector<Room> rooms;
+    std::uint32_t only_light = 0;
     bool small_scene = false;
+    // A *hybrid* scene — `mesh` lines, and boxes, quads and lights of at most kSmallTriangles
+    // triangles, at most kAnalyticSpheres spheres (the mug scene) — has the latter in the lane
+    // loops and only its meshes in Embree: the room's large faces and the light no longer
+    // overlap every node of the BVH, and a ray whose segment misses the meshes' bounds (most
+    // rays between walls, floor and light) is not given to Embree at all.
+    bool hybrid = false;
+    glm::vec3 mesh_lo{0}, mesh_hi{0};  // the bounds of rtc_mesh, widened by eps
+    bool packet16 = false;             // whether Embree traces packets of 16 natively (AVX-512)
+
+    static bool is_mesh_line(const Mesh &m) { return m.label.compare(0, 5, "mesh:") == 0; }
+    GeomRef mesh_ref(size_t i) const { return {GeomKind::MESH, int(i), scene.meshes[i].material}; }
+    GeomRef sphere_ref(size_t i) const { return {GeomKind::SPHERE, int(i), scene.spheres[i].material}; }
+    // What shading reads of a checker, in a small array of its own (a Material, with its name
+    // and both forms of its lobe, is a few hundred bytes): hit by every shading point of the room.
+    struct Checker {
+        glm::vec3 offset{0};
+        float inv_size = 1;
+        int a = -1, b = -1;  // a < 0: not a checker
+    };
+    std::vector<Checker> checkers;  // by material index
+    static std::vector<glm::vec3> light_corners(const AreaLight &l) {
+        return {l.corner, l.corner + l.edge1, l.corner + l.edge1 + l.edge2, l.corner + l.edge2};
+    }
 
     explicit Impl(const Scene &s) : scene(s) {
         // A Scene built in code has not been through the parser's checks.
@@ -219,65 +263,134 @@ struct Renderer::Impl {
             throw SceneError(s.path + ": the environment's radiance is not finite");
         device = rtcNewDevice("threads=1");  // our own threads call into Embree; BVH build is small
         if (!device) throw std::runtime_error("Embree: rtcNewDevice failed");
-        rtc = rtcNewScene(device);
-        rtcSetSceneBuildQuality(rtc, RTC_BUILD_QUALITY_HIGH);
+        packet16 = rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_NATIVE_RAY16_SUPPORTED) != 0;
         float extent = 1.0f;
         analytic_spheres = s.spheres.size() <= kAnalyticSpheres;
-        for (size_t i = 0; i < s.spheres.size(); ++i) {
+        for (const Sphere &sp : s.spheres) extent = std::max(extent, max3(glm::abs(sp.center)) + sp.radius);
+        for (const Mesh &m : s.meshes)
+            for (auto &p : m.vertices) extent = std::max(extent, max3(glm::abs(p)));
+        eps = 1e-4f * extent;
+        for (const AreaLight &l : s.lights) rects.push_back(rect_frame(l.corner, l.edge1, l.edge2, l.normal));
+        nlights = s.lights.size() + (s.has_environment ? 1 : 0);
+        for (const Material &m : s.materials)
+            checkers.push_back(m.checker ? Checker{m.check_offset, 1.0f / m.check_size, m.check_a, m.check_b} : Checker{});
+        // Which primitives the lane loops take: all (a small scene), all but the `mesh` lines
+        // (a hybrid scene), or none.
+        for (int pass = 0; pass < 2; ++pass) {
+            tris.clear(), paras.clear();
+            bool meshes_left_out = false;
+            for (size_t i = 0; i < s.meshes.size(); ++i) {
+                if (pass == 1 && is_mesh_line(s.meshes[i])) meshes_left_out = true;
+                else add_lane_prims(s.meshes[i].vertices, s.meshes[i].faces, mesh_ref(i));
+            }
+            for (size_t i = 0; i < s.lights.size(); ++i)
+                add_lane_prims(light_corners(s.lights[i]), {{0, 1, 2}, {0, 2, 3}}, {GeomKind::LIGHT, int(i)});
+            const bool fits = analytic_spheres && tris.size() + 2 * paras.size() <= kSmallTriangles;
+            if (pass == 0 && fits) {
+                small_scene = true;
+                break;
+            }
+            hybrid = pass == 1 && fits && meshes_left_out;
+        }
+        if (!small_scene && !hybrid) tris.clear(), paras.clear();
+        for (size_t k = 0; k < paras.size(); ++k)
+            if (paras[k].ref.kind == GeomKind::LIGHT && s.lights.size() == 1 && !s.has_environment) only_light |= 1u << k;
+        for (size_t i = 0; i < s.meshes.size(); ++i) {
+            if (s.meshes[i].label != "box") continue;
+            Room room{glm::vec3(std::numeric_limits<float>::infinity()), glm::vec3(-std::numeric_limits<float>::infinity()), 0u};
+            size_t faces = 0;
+            for (size_t k = 0; k < paras.size(); ++k)
+                if (paras[k].ref.kind == GeomKind::MESH && paras[k].ref.index == int(i)) room.paras |= 1u << k, ++faces;
+            if (2 * faces != s.meshes[i].faces.size()) continue;  // not all of it in the lane loops
+            for (const glm::vec3 &v : s.meshes[i].vertices) room.lo = glm::min(room.lo, v), room.hi = glm::max(room.hi, v);
+            room.lo += 0.5f * eps, room.hi -= 0.5f * eps;  // rays leave surfaces eps off them
+            rooms.push_back(room);
+        }
+        if (!hybrid) {
+            build_all();
+            return;
+        }
+        // Embree's default (medium) build quality: at 1M triangles it takes half the time of
+        // high's, and the rays cost the same (mug.scene at 960 and 983,040 triangles).
+        rtc_mesh = rtcNewScene(device);
+        mesh_lo = glm::vec3(std::numeric_limits<float>::infinity()), mesh_hi = -mesh_lo;
+        for (size_t i = 0; i < s.meshes.size(); ++i) {
+            const Mesh &m = s.meshes[i];
+            if (!is_mesh_line(m)) continue;
+            // The IDs build_all gives (meshes first: the spheres are analytic here).
+            // Quads: each pair of triangles that share an edge as (a, b, c), (a, c, d), any other
+            // triangle as a degenerate quad (one BVH of half as many primitives).
+            add_embree(rtc_mesh, unsigned(i), true, m.vertices, m.faces, mesh_ref(i));
+            for (const glm::uvec3 &f : m.faces)
+                for (unsigned k : {f.x, f.y, f.z}) mesh_lo = glm::min(mesh_lo, m.vertices[k]), mesh_hi = glm::max(mesh_hi, m.vertices[k]);
+        }
+        mesh_lo -= eps, mesh_hi += eps;
+        rtcCommitScene(rtc_mesh);
+    }
+    ~Impl() {
+        if (rtc) rtcReleaseScene(rtc);
+        if (rtc_mesh) rtcReleaseScene(rtc_mesh);
+        if (device) rtcReleaseDevice(device);
+    }
+
+    // Every primitive in one Embree scene: what a scene that is neither small nor hybrid
+    // traces, and what --embree traces (a hybrid scene builds it when a render first asks).
+    void build_all() {
+        const Scene &s = scene;
+        rtc = rtcNewScene(device);
+        rtcSetSceneBuildQuality(rtc, RTC_BUILD_QUALITY_HIGH);
+        unsigned id = 0;
+        for (size_t i = 0; i < s.spheres.size() && !analytic_spheres; ++i) {
             const Sphere &sp = s.spheres[i];
-            extent = std::max(extent, max3(glm::abs(sp.center)) + sp.radius);
-            if (analytic_spheres) continue;
             RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_SPHERE_POINT);
             auto *v = static_cast<float *>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
                                                                     RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1));
             v[0] = sp.center.x, v[1] = sp.center.y, v[2] = sp.center.z, v[3] = sp.radius;
-            attach(g, {GeomKind::SPHERE, int(i)});
+            attach(rtc, id++, g, sphere_ref(size_t(i)));
         }
         // One primitive type for the whole scene (Embree traverses one BVH per type): quads
         // when every mesh pairs up (the stimulus scene: ~1.5x faster traversal than its 14
         // triangles), else triangles.
         use_quads = std::all_of(s.meshes.begin(), s.meshes.end(), [](const Mesh &m) { return pairs_into_quads(m.faces); });
-        for (size_t i = 0; i < s.meshes.size(); ++i) {
-            add_triangles(s.meshes[i].vertices, s.meshes[i].faces, {GeomKind::MESH, int(i)});
-            for (auto &p : s.meshes[i].vertices) extent = std::max(extent, max3(glm::abs(p)));
-        }
-        for (size_t i = 0; i < s.lights.size(); ++i) {
-            const AreaLight &l = s.lights[i];
-            std::vector<glm::vec3> v{l.corner, l.corner + l.edge1, l.corner + l.edge1 + l.edge2, l.corner + l.edge2};
-            add_triangles(v, {{0, 1, 2}, {0, 2, 3}}, {GeomKind::LIGHT, int(i)});
-            rects.push_back(rect_frame(l.corner, l.edge1, l.edge2, l.normal));
-        }
-        eps = 1e-4f * extent;
-        small_scene = analytic_spheres && tris.size() + 2 * paras.size() <= kSmallTriangles;
-        if (!small_scene) tris.clear(), paras.clear();
+        for (size_t i = 0; i < s.meshes.size(); ++i)
+            add_embree(rtc, id++, use_quads, s.meshes[i].vertices, s.meshes[i].faces, mesh_ref(i));
+        for (size_t i = 0; i < s.lights.size(); ++i)
+            add_embree(rtc, id++, use_quads, light_corners(s.lights[i]), {{0, 1, 2}, {0, 2, 3}}, {GeomKind::LIGHT, int(i)});
         rtcCommitScene(rtc);
     }
-    ~Impl() {
-        if (rtc) rtcReleaseScene(rtc);
-        if (device) rtcReleaseDevice(device);
+    // The scene that --embree traces, built once.
+    void need_all() {
+        std::call_once(rtc_once, [this] {
+            if (!rtc) build_all();
+        });
     }
 
-    void attach(RTCGeometry g, GeomRef ref) {
+    void attach(RTCScene sc, unsigned id, RTCGeometry g, GeomRef ref) {
         rtcCommitGeometry(g);
-        unsigned id = rtcAttachGeometry(rtc, g);
+        rtcAttachGeometryByID(sc, g, id);
         rtcReleaseGeometry(g);
         if (geoms.size() <= id) geoms.resize(id + 1);
         geoms[id] = ref;
     }
-    // Whether the triangles come in pairs (a, b, c), (a, c, d), as the scene's boxes, quads
-    // and lights and fan-triangulated OBJ quads do: each pair is then Embree's quad
+    // Whether triangles k and k + 1 are a pair (a, b, c), (a, c, d), as the scene's boxes,
+    // quads and lights and fan-triangulated OBJ quads are: the pair is then Embree's quad
     // (b, c, d, a), whose two triangles (b, c, a) and (d, a, c) are the pair itself.
+    static bool is_pair(const std::vector<glm::uvec3> &faces, size_t k) {
+        return k + 1 < faces.size() && faces[k + 1].x == faces[k].x && faces[k + 1].y == faces[k].z;
+    }
     static bool pairs_into_quads(const std::vector<glm::uvec3> &faces) {
         if (faces.size() % 2 != 0) return false;
         for (size_t k = 0; k < faces.size(); k += 2)
-            if (faces[k + 1].x != faces[k].x || faces[k + 1].y != faces[k].z) return false;
+            if (!is_pair(faces, k)) return false;
         return true;
     }
-    void add_triangles(const std::vector<glm::vec3> &verts, const std::vector<glm::uvec3> &faces, GeomRef ref) {
+    // The lane loops' primitives of a mesh or light: parallelograms and other triangles, while
+    // there are at most kSmallTriangles (a parallelogram counts two).
+    void add_lane_prims(const std::vector<glm::vec3> &verts, const std::vector<glm::uvec3> &faces, GeomRef ref) {
         for (size_t k = 0; k < faces.size() && tris.size() + 2 * paras.size() <= kSmallTriangles; ++k) {
             const glm::uvec3 &f = faces[k];
             const glm::vec3 a = verts[f.x], b = verts[f.y], c = verts[f.z];
-            if (k + 1 < faces.size() && faces[k + 1].x == f.x && faces[k + 1].y == f.z) {
+            if (is_pair(faces, k)) {
                 const glm::vec3 d = verts[faces[k + 1].z], e1 = b - a, e2 = d - a;
                 const glm::vec3 n = glm::cross(e1, e2);
                 const float tol = 1e-6f * (glm::length(e1) + glm::length(e2));
@@ -291,27 +404,47 @@ struct Renderer::Impl {
             }
             tris.push_back({a, b - a, c - a, glm::normalize(glm::cross(b - a, c - a)), ref});
         }
-        RTCGeometry g = rtcNewGeometry(device, use_quads ? RTC_GEOMETRY_TYPE_QUAD : RTC_GEOMETRY_TYPE_TRIANGLE);
+    }
+    void add_embree(RTCScene sc, unsigned id, bool quads, const std::vector<glm::vec3> &verts,
+                    const std::vector<glm::uvec3> &faces, GeomRef ref) {
+        RTCGeometry g = rtcNewGeometry(device, quads ? RTC_GEOMETRY_TYPE_QUAD : RTC_GEOMETRY_TYPE_TRIANGLE);
         auto *v = static_cast<float *>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                                                                 3 * sizeof(float), verts.size()));
         for (size_t k = 0; k < verts.size(); ++k) v[3 * k] = verts[k].x, v[3 * k + 1] = verts[k].y, v[3 * k + 2] = verts[k].z;
-        if (use_quads) {
-            auto *ix = static_cast<unsigned *>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4,
-                                                                        4 * sizeof(unsigned), faces.size() / 2));
-            for (size_t k = 0; k < faces.size(); k += 2) {
-                unsigned *q = ix + 2 * k;
-                q[0] = faces[k].y, q[1] = faces[k].z, q[2] = faces[k + 1].z, q[3] = faces[k].x;
+        if (quads) {  // pairs as quads, a lone triangle (a, b, c) as (a, b, c, c) (Embree: "a line, never hit")
+            std::vector<unsigned> q;
+            q.reserve(4 * faces.size());
+            for (size_t k = 0; k < faces.size(); ++k) {
+                const glm::uvec3 &f = faces[k];
+                if (is_pair(faces, k)) q.insert(q.end(), {f.y, f.z, faces[k + 1].z, f.x}), ++k;
+                else q.insert(q.end(), {f.x, f.y, f.z, f.z});
             }
+            auto *ix = static_cast<unsigned *>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4,
+                                                                        4 * sizeof(unsigned), q.size() / 4));
+            std::copy(q.begin(), q.end(), ix);
         } else {
             auto *ix = static_cast<unsigned *>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                                                                         3 * sizeof(unsigned), faces.size()));
             for (size_t k = 0; k < faces.size(); ++k) ix[3 * k] = faces[k].x, ix[3 * k + 1] = faces[k].y, ix[3 * k + 2] = faces[k].z;
         }
-        attach(g, ref);
+        attach(sc, id, g, ref);
     }
 
     Hit intersect(glm::vec3 o, glm::vec3 d, std::uint64_t &rays) const {
         ++rays;
+        if (hybrid) {  // the lane loops, one ray in every lane, then the meshes before that hit
+            Packet pk;
+            for (size_t j = 0; j < 16; ++j) pk.set(j, o, d, std::numeric_limits<float>::infinity());
+            small_intersect<false>(pk);
+            RTCIntersectContext ctx;
+            rtcInitIntersectContext(&ctx);
+            RTCRayHit rh{};
+            set_ray(rh.ray, o, d, pk.tfar[0]);
+            rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+            rtcIntersect1(rtc_mesh, &ctx, &rh);
+            if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return make_small_hit(o, d, pk.prim[0], pk.tfar[0]);
+            return make_hit(o, d, rh.hit.geomID, rh.ray.tfar, glm::vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z), -1);
+        }
         RTCIntersectContext ctx;
         rtcInitIntersectContext(&ctx);
         RTCRayHit rh{};
@@ -370,9 +503,14 @@ struct Renderer::Impl {
     // The closest parallelogram, triangle or sphere along each ray of p with 0 < t < p.tfar
     // (any, if any_hit): Möller & Trumbore 1997 for the triangles, edges inclusive (a ray
     // through an edge two primitives share hits one of them), the spheres as sphere_hit.
+    //
+    // any_hit is for shadow rays, which end short of the light they aim at: it leaves out the
+    // parallelograms that cannot occlude any ray of p (shadow_skip).
     template <bool any_hit>
     void small_intersect(Packet &p) const {
+        const std::uint32_t skip = any_hit ? shadow_skip(p) : 0u;
         for (size_t k = 0; k < paras.size(); ++k) {
+            if (skip >> k & 1u) continue;
             const Para &Q = paras[k];
             const int id = int(tris.size() + k);
             for (int j = 0; j < 16; ++j) {
@@ -429,6 +567,25 @@ struct Renderer::Impl {
         }
     }
 
+    // The parallelograms (a bit each) that no shadow ray of p can meet: the only light, when
+    // there is no other (a shadow ray stops short of it), and the faces of a box that holds
+    // both ends of every ray, eps/2 inside (a segment inside a convex box does not cross it).
+    std::uint32_t shadow_skip(const Packet &p) const {
+        std::uint32_t skip = only_light;
+        for (const Room &b : rooms) {
+            int inside = 0;  // lanes (a count, which the compiler vectorises)
+            for (int j = 0; j < 16; ++j) {
+                const float ex = p.ox[j] + p.tfar[j] * p.dx[j], ey = p.oy[j] + p.tfar[j] * p.dy[j],
+                            ez = p.oz[j] + p.tfar[j] * p.dz[j];
+                inside += (p.ox[j] > b.lo.x) & (p.ox[j] < b.hi.x) & (p.oy[j] > b.lo.y) & (p.oy[j] < b.hi.y) &
+                          (p.oz[j] > b.lo.z) & (p.oz[j] < b.hi.z) & (ex > b.lo.x) & (ex < b.hi.x) &
+                          (ey > b.lo.y) & (ey < b.hi.y) & (ez > b.lo.z) & (ez < b.hi.z);
+            }
+            if (inside == 16) skip |= b.paras;
+        }
+        return skip;
+    }
+
     // The hit record of a ray whose closest primitive small_intersect found (prim, t).
     Hit make_small_hit(glm::vec3 o, glm::vec3 d, int prim, float t) const {
         Hit h;
@@ -443,7 +600,7 @@ struct Renderer::Impl {
             h.ref = paras[size_t(prim) - tris.size()].ref;
             h.n = paras[size_t(prim) - tris.size()].n;
         } else {
-            h.ref = GeomRef{GeomKind::SPHERE, -2 - prim};
+            h.ref = sphere_ref(size_t(-2 - prim));
             h.n = glm::normalize(h.p - scene.spheres[size_t(-2 - prim)].center);
         }
         return h;
@@ -457,7 +614,7 @@ struct Renderer::Impl {
         h.hit = true;
         h.t = t;
         h.p = o + h.t * d;
-        h.ref = geom_id == RTC_INVALID_GEOMETRY_ID ? GeomRef{GeomKind::SPHERE, sphere} : geoms[geom_id];
+        h.ref = geom_id == RTC_INVALID_GEOMETRY_ID ? sphere_ref(size_t(sphere)) : geoms[geom_id];
         if (h.ref.kind == GeomKind::SPHERE) {
             const Sphere &s = scene.spheres[size_t(h.ref.index)];
             h.n = glm::normalize(h.p - s.center);
@@ -469,6 +626,18 @@ struct Renderer::Impl {
 
     bool occluded(glm::vec3 o, glm::vec3 d, float tfar, std::uint64_t &rays) const {
         ++rays;
+        if (hybrid) {
+            Packet pk;
+            for (size_t j = 0; j < 16; ++j) pk.set(j, o, d, tfar);
+            small_intersect<true>(pk);
+            if (pk.prim[0] != -1) return true;
+            RTCIntersectContext ctx;
+            rtcInitIntersectContext(&ctx);
+            RTCRay r{};
+            set_ray(r, o, d, tfar);
+            rtcOccluded1(rtc_mesh, &ctx, &r);
+            return r.tfar < 0.0f;
+        }
         int si = -1;
         if (sphere_hit(o, d, tfar, si) < tfar) return true;
         RTCIntersectContext ctx;
@@ -483,19 +652,114 @@ struct Renderer::Impl {
         return r.tfar < 0.0f;
     }
 
+    // Embree's ray o + t d, 0 < t < tfar, in a single ray or lane j of a packet.
+    static void set_ray(RTCRay &r, glm::vec3 o, glm::vec3 d, float tfar) {
+        r.org_x = o.x, r.org_y = o.y, r.org_z = o.z;
+        r.dir_x = d.x, r.dir_y = d.y, r.dir_z = d.z;
+        r.tnear = 0.0f, r.tfar = tfar, r.time = 0.0f;
+        r.mask = 0xffffffffu, r.id = 0, r.flags = 0;
+    }
+    template <class RayK>  // RTCRay8, RTCRay16
+    static void set_ray(RayK &r, size_t j, glm::vec3 o, glm::vec3 d, float tfar) {
+        r.org_x[j] = o.x, r.org_y[j] = o.y, r.org_z[j] = o.z;
+        r.dir_x[j] = d.x, r.dir_y[j] = d.y, r.dir_z[j] = d.z;
+        r.tnear[j] = 0.0f, r.tfar[j] = tfar, r.time[j] = 0.0f;
+        r.mask[j] = 0xffffffffu, r.id[j] = 0, r.flags[j] = 0;
+    }
+
+    static void intersect(const int *valid, RTCScene sc, RTCIntersectContext *ctx, RTCRayHit8 *rh) {
+        rtcIntersect8(valid, sc, ctx, rh);
+    }
+    static void intersect(const int *valid, RTCScene sc, RTCIntersectContext *ctx, RTCRayHit16 *rh) {
+        rtcIntersect16(valid, sc, ctx, rh);
+    }
+    static void occluded(const int *valid, RTCScene sc, RTCIntersectContext *ctx, RTCRay8 *r) {
+        rtcOccluded8(valid, sc, ctx, r);
+    }
+    static void occluded(const int *valid, RTCScene sc, RTCIntersectContext *ctx, RTCRay16 *r) {
+        rtcOccluded16(valid, sc, ctx, r);
+    }
+    // A hybrid scene's meshes for the rays paths[wf.active[i]], i in wf.embree, each as far as
+    // its lane loops' hit wf.hits[i]: where a mesh is nearer, it becomes the hit. In packets
+    // of K, Embree's native width (16 with AVX-512; with AVX2 it splits a packet of 16 into
+    // copies of two).
+    template <class RayHitK, size_t K>
+    void mesh_closest(const PathState *paths, Wavefront &wf, RTCIntersectContext &ctx) const {
+        const size_t ne = wf.embree.size();
+        for (size_t b = 0; b < ne; b += K) {
+            const size_t cnt = std::min(K, ne - b);
+            alignas(64) int valid[K];
+            alignas(64) RayHitK rh;
+            for (size_t j = 0; j < K; ++j) {
+                const size_t i = wf.embree[b + std::min(j, cnt - 1)];
+                const PathState &ps = paths[wf.active[i]];
+                valid[j] = j < cnt ? -1 : 0;
+                set_ray(rh.ray, j, ps.o, ps.d, wf.hits[i].hit ? wf.hits[i].t : std::numeric_limits<float>::infinity());
+                rh.hit.geomID[j] = RTC_INVALID_GEOMETRY_ID;
+                rh.hit.instID[0][j] = RTC_INVALID_GEOMETRY_ID;
+            }
+            intersect(valid, rtc_mesh, &ctx, &rh);
+            for (size_t j = 0; j < cnt; ++j) {
+                if (rh.hit.geomID[j] == RTC_INVALID_GEOMETRY_ID) continue;
+                const size_t i = wf.embree[b + j];
+                const PathState &ps = paths[wf.active[i]];
+                wf.hits[i] = make_hit(ps.o, ps.d, rh.hit.geomID[j], rh.ray.tfar[j],
+                                      glm::vec3(rh.hit.Ng_x[j], rh.hit.Ng_y[j], rh.hit.Ng_z[j]), -1);
+            }
+        }
+    }
+    // The shadow rays wf.shadows[i], i in wf.embree, against a hybrid scene's meshes:
+    // each unoccluded one adds its next-event estimate.
+    template <class RayK, size_t K>
+    void mesh_occluded(PathState *paths, const Wavefront &wf, RTCIntersectContext &ctx) const {
+        const size_t ne = wf.embree.size();
+        for (size_t b = 0; b < ne; b += K) {
+            const size_t cnt = std::min(K, ne - b);
+            alignas(64) int valid[K];
+            alignas(64) RayK r;
+            for (size_t j = 0; j < K; ++j) {
+                const ShadowRay &sr = wf.shadows[wf.embree[b + std::min(j, cnt - 1)]];
+                valid[j] = j < cnt ? -1 : 0;
+                set_ray(r, j, sr.o, sr.d, sr.tmax);
+            }
+            occluded(valid, rtc_mesh, &ctx, &r);
+            for (size_t j = 0; j < cnt; ++j)
+                if (!(r.tfar[j] < 0.0f)) {
+                    const ShadowRay &sr = wf.shadows[wf.embree[b + j]];
+                    paths[sr.path].L += sr.c;
+                }
+        }
+    }
+
+    // Whether the segment of each ray of p, 0 < t < p.tfar, can meet the meshes' bounds (a
+    // hybrid scene): the slab test, where a NaN from a zero direction component counts as
+    // meeting them.
+    void meets_meshes(const Packet &p, bool meets[16]) const {
+        for (int j = 0; j < 16; ++j) {
+            const float ix = 1.0f / p.dx[j], iy = 1.0f / p.dy[j], iz = 1.0f / p.dz[j];
+            const float x0 = (mesh_lo.x - p.ox[j]) * ix, x1 = (mesh_hi.x - p.ox[j]) * ix;
+            const float y0 = (mesh_lo.y - p.oy[j]) * iy, y1 = (mesh_hi.y - p.oy[j]) * iy;
+            const float z0 = (mesh_lo.z - p.oz[j]) * iz, z1 = (mesh_hi.z - p.oz[j]) * iz;
+            const float lo = std::max(std::max(std::min(x0, x1), std::min(y0, y1)), std::max(std::min(z0, z1), 0.0f));
+            const float hi = std::min(std::min(std::max(x0, x1), std::max(y0, y1)), std::min(std::max(z0, z1), p.tfar[j]));
+            meets[j] = !(lo > hi);
+        }
+    }
+
     // The material index at p: mi itself, or the check of a checker that p falls in.
     int material_index_at(int mi, glm::vec3 p) const {
-        const Material &m = scene.materials[size_t(mi)];
-        if (!m.checker) return mi;
-        glm::vec3 q = glm::floor((p - m.check_offset) * (1.0f / m.check_size));
+        const Checker &c = checkers[size_t(mi)];
+        if (c.a < 0) return mi;
+        glm::vec3 q = glm::floor((p - c.offset) * c.inv_size);
         long parity = (long(q.x) + long(q.y) + long(q.z)) & 1L;
-        return parity ? m.check_b : m.check_a;
+        return parity ? c.b : c.a;
     }
 
     // Emitted radiance of light li towards a point, seen along direction -wi (wi points at the light).
     glm::vec3 light_emission(const AreaLight &l, float cos_l) const {
         if (cos_l <= 0) return glm::vec3(0);
-        return l.isotropic ? l.radiance / cos_l : l.radiance;
+        if (!l.isotropic) return l.radiance;
+        return l.radiance / cos_l;
     }
 
     // The solid-angle pdf with which next-event estimation from o picks the point of light li
@@ -509,19 +773,20 @@ struct Renderer::Impl {
         return t * t / (scene.lights[li].area * cos_l);
     }
 
-    size_t light_count() const { return scene.lights.size() + (scene.has_environment ? 1 : 0); }
+    size_t nlights = 0;  // area lights and the environment
+    size_t light_count() const { return nlights; }
 
 
     // Stage 1 of a path's shading step: what the path found along its last ray (hit).
     // Emission reached by the ray is added to ps.L; the light sample of the next-event
     // estimate and the BRDF sample's random numbers go into r, for the lobe calls. Returns
     // false when the path ends here (r.mat = -1).
-    bool shade_begin(PathState &ps, const Hit &hit, const RenderSettings &set, ShadeRec &r) const {
+    __attribute__((always_inline)) bool shade_begin(PathState &ps, const Hit &hit, const RenderSettings &set, ShadeRec &r) const {
         const Mode mode = set.mode;
         const int max_depth = set.max_depth;
         const glm::vec3 d = ps.d;
         const float nl = float(light_count());
-        ps.shadow = false;
+        r.shadow = false;
         r.mat = -1;
         if (!hit.hit) {
             if (scene.has_environment && ps.prev != Prev::LIGHT) {
@@ -546,9 +811,7 @@ struct Renderer::Impl {
             return false;  // lights do not reflect
         }
         if (ps.depth + 1 > max_depth) return false;
-        int mi = hit.ref.kind == GeomKind::SPHERE ? scene.spheres[size_t(hit.ref.index)].material
-                                                  : scene.meshes[size_t(hit.ref.index)].material;
-        mi = material_index_at(mi, hit.p);
+        const int mi = material_index_at(hit.ref.material, hit.p);
         const pgloss_material &m = scene.materials[size_t(mi)].ward;
         if (m.lobes == PGLOSS_LOBE_NONE) return false;
         r.mat = mi;
@@ -592,20 +855,23 @@ struct Renderer::Impl {
         bool ok = true;
         if (li < scene.lights.size()) {
             const AreaLight &l = scene.lights[li];
-            const SphRect q = solid_angle ? sphrect_setup(rects[li], r.p) : SphRect{};
             glm::vec3 y;
-            if (q.state == SphRect::OK) {  // uniform in the light's solid angle: pdf 1/S
-                const glm::dvec2 st = sphrect_sample(rects[li], q, u1, u2);
-                y = glm::vec3(rects[li].corner + st.x * rects[li].ex + st.y * rects[li].ey);
-            } else {  // uniform in area
-                y = l.corner + u1 * l.edge1 + u2 * l.edge2;
+            float pdf_angle = 0;  // > 0: sampled uniformly in the light's solid angle, pdf 1/S
+            if (solid_angle) {    // (the set-up only where asked: it is a dozen doubles)
+                const SphRect q = sphrect_setup(rects[li], r.p);
+                if (q.state == SphRect::OK) {
+                    const glm::dvec2 st = sphrect_sample(rects[li], q, u1, u2);
+                    y = glm::vec3(rects[li].corner + st.x * rects[li].ex + st.y * rects[li].ey);
+                    pdf_angle = float(1.0 / q.S);
+                }
             }
+            if (!(pdf_angle > 0)) y = l.corner + u1 * l.edge1 + u2 * l.edge2;  // uniform in area
             glm::vec3 dv = y - r.p;
             float dist2 = glm::dot(dv, dv), dist = std::sqrt(dist2);
             wi = dv * (1.0f / dist);
             float cos_l = -glm::dot(l.normal, wi);
             ok = cos_l > 0 && dist2 > 0;
-            pdf_light = !ok ? 0 : q.state == SphRect::OK ? float(1.0 / q.S) : dist2 / (l.area * cos_l);
+            pdf_light = !ok ? 0 : pdf_angle > 0 ? pdf_angle : dist2 / (l.area * cos_l);
             Le = ok ? light_emission(l, cos_l) : glm::vec3(0);
             tmax = dist * (1.0f - 1e-4f);
         } else {  // environment: cosine-weighted about n
@@ -625,16 +891,16 @@ struct Renderer::Impl {
     }
 
     // Stage 3: the next-event estimate from the lobe's f and pdf at r.wil (left in
-    // ps.shadow_* for its shadow ray), and the path continued by the BRDF sample (s_*).
+    // r.shadow_c for its shadow ray), and the path continued by the BRDF sample (s_*).
     // Returns false when the path ends (the shadow ray, if any, is still traced).
-    bool shade_end(PathState &ps, const ShadeRec &r, glm::vec3 f, float pdf_brdf, pgloss_vec3 s_wi,
+    bool shade_end(PathState &ps, ShadeRec &r, glm::vec3 f, float pdf_brdf, pgloss_vec3 s_wi,
                    float s_pdf, glm::vec3 s_weight) const {
         if (r.nee) {
             const float w = r.strat == Prev::MIS ? power_heuristic(r.pdf_light, pdf_brdf) : 1.0f;
             glm::vec3 c = ps.beta * f * r.Le * (r.wil.z * w / r.pdf_light);
             if (max3(c) > 0) {
-                ps.shadow = true;
-                ps.shadow_o = r.p, ps.shadow_d = r.wi, ps.shadow_tmax = r.tmax, ps.shadow_c = c;
+                r.shadow = true;
+                r.shadow_c = c;
             }
         }
         // Continue the path by BRDF sampling.
@@ -672,7 +938,8 @@ struct Renderer::Impl {
             for (size_t i = 0; i < na; ++i)
                 if (wf.recs[i].mat >= 0) wf.order[pos[size_t(wf.recs[i].mat)]++] = std::uint32_t(i);
         }
-        wf.soa.resize(size_t(NLANES) * std::max<size_t>(total, 1));
+        // Sized once: a vector resized to each step's count would zero what it grows by every step.
+        if (wf.soa.size() < size_t(NLANES) * total) wf.soa.resize(size_t(NLANES) * kWavefront);
         float *v[NLANES];
         for (int l = 0; l < NLANES; ++l) v[l] = wf.soa.data() + size_t(l) * total;
         for (size_t j = 0; j < total; ++j) {
@@ -725,7 +992,9 @@ struct Renderer::Impl {
             const size_t na = wf.active.size();
             wf.hits.resize(na);
             const bool small = small_scene && !set.embree_always;
-            for (size_t b = 0; small && b < na; b += 16) {
+            const bool hyb = hybrid && !set.embree_always;  // lane loops, then Embree for the meshes
+            wf.embree.clear();
+            for (size_t b = 0; (small || hyb) && b < na; b += 16) {
                 const size_t cnt = std::min<size_t>(16, na - b);
                 Packet pk;
                 for (size_t j = 0; j < 16; ++j) {
@@ -733,12 +1002,19 @@ struct Renderer::Impl {
                     pk.set(j, ps.o, ps.d, std::numeric_limits<float>::infinity());
                 }
                 small_intersect<false>(pk);
+                bool meets[16];
+                if (hyb) meets_meshes(pk, meets);
                 for (size_t j = 0; j < cnt; ++j) {
                     const PathState &ps = paths[wf.active[b + j]];
                     wf.hits[b + j] = make_small_hit(ps.o, ps.d, pk.prim[j], pk.tfar[j]);
+                    if (hyb && meets[j]) wf.embree.push_back(std::uint32_t(b + j));
                 }
             }
-            for (size_t b = 0; !small && b < na; b += 16) {
+            if (hyb) {  // the meshes, for the rays whose segment to the lane loops' hit can meet them
+                if (packet16) mesh_closest<RTCRayHit16, 16>(paths, wf, ctx);
+                else mesh_closest<RTCRayHit8, 8>(paths, wf, ctx);
+            }
+            for (size_t b = 0; !small && !hyb && b < na; b += 16) {
                 const size_t cnt = std::min<size_t>(16, na - b);
                 alignas(64) int valid[16];
                 alignas(64) RTCRayHit16 rh;
@@ -746,15 +1022,8 @@ struct Renderer::Impl {
                 for (size_t j = 0; j < 16; ++j) {
                     const PathState &ps = paths[wf.active[b + std::min(j, cnt - 1)]];
                     valid[j] = j < cnt ? -1 : 0;
-                    rh.ray.org_x[j] = ps.o.x, rh.ray.org_y[j] = ps.o.y, rh.ray.org_z[j] = ps.o.z;
-                    rh.ray.dir_x[j] = ps.d.x, rh.ray.dir_y[j] = ps.d.y, rh.ray.dir_z[j] = ps.d.z;
-                    rh.ray.tnear[j] = 0.0f;
                     sphere_idx[j] = -1;
-                    rh.ray.tfar[j] = sphere_hit(ps.o, ps.d, std::numeric_limits<float>::infinity(), sphere_idx[j]);
-                    rh.ray.time[j] = 0.0f;
-                    rh.ray.mask[j] = 0xffffffffu;
-                    rh.ray.id[j] = 0;
-                    rh.ray.flags[j] = 0;
+                    set_ray(rh.ray, j, ps.o, ps.d, sphere_hit(ps.o, ps.d, std::numeric_limits<float>::infinity(), sphere_idx[j]));
                     rh.hit.geomID[j] = RTC_INVALID_GEOMETRY_ID;
                     rh.hit.instID[0][j] = RTC_INVALID_GEOMETRY_ID;
                 }
@@ -774,48 +1043,44 @@ struct Renderer::Impl {
             wf.next.clear();
             wf.shadows.clear();
             for (size_t i = 0; i < na; ++i) {  // in the wavefront's order: packets as before
-                if (paths[wf.active[i]].shadow) wf.shadows.push_back(wf.active[i]);
+                const ShadeRec &r = wf.recs[i];
+                if (r.shadow) wf.shadows.push_back({r.p, r.wi, r.shadow_c, r.tmax, wf.active[i]});
                 if (wf.recs[i].mat >= 0) wf.next.push_back(wf.active[i]);
             }
             const size_t ns = wf.shadows.size();
-            for (size_t b = 0; small && b < ns; b += 16) {
+            wf.embree.clear();  // hybrid: the shadow rays that the lane loops let through and can meet a mesh
+            for (size_t b = 0; (small || hyb) && b < ns; b += 16) {
                 const size_t cnt = std::min<size_t>(16, ns - b);
                 Packet pk;
                 for (size_t j = 0; j < 16; ++j) {
-                    const PathState &ps = paths[wf.shadows[b + std::min(j, cnt - 1)]];
-                    pk.set(j, ps.shadow_o, ps.shadow_d, ps.shadow_tmax);
+                    const ShadowRay &sr = wf.shadows[b + std::min(j, cnt - 1)];
+                    pk.set(j, sr.o, sr.d, sr.tmax);
                 }
                 small_intersect<true>(pk);
+                bool meets[16];
+                if (hyb) meets_meshes(pk, meets);
                 for (size_t j = 0; j < cnt; ++j)
                     if (pk.prim[j] == -1) {
-                        PathState &ps = paths[wf.shadows[b + j]];
-                        ps.L += ps.shadow_c;
+                        if (hyb && meets[j]) wf.embree.push_back(std::uint32_t(b + j));
+                        else paths[wf.shadows[b + j].path].L += wf.shadows[b + j].c;
                     }
             }
-            for (size_t b = 0; !small && b < ns; b += 16) {
+            if (packet16) mesh_occluded<RTCRay16, 16>(paths, wf, ctx);
+            else mesh_occluded<RTCRay8, 8>(paths, wf, ctx);
+            for (size_t b = 0; !small && !hyb && b < ns; b += 16) {
                 const size_t cnt = std::min<size_t>(16, ns - b);
                 alignas(64) int valid[16];
                 alignas(64) RTCRay16 r;
                 for (size_t j = 0; j < 16; ++j) {
-                    const PathState &ps = paths[wf.shadows[b + std::min(j, cnt - 1)]];
+                    const ShadowRay &sr = wf.shadows[b + std::min(j, cnt - 1)];
                     int si = -1;
-                    const bool by_sphere = j < cnt && sphere_hit(ps.shadow_o, ps.shadow_d, ps.shadow_tmax, si) < ps.shadow_tmax;
+                    const bool by_sphere = j < cnt && sphere_hit(sr.o, sr.d, sr.tmax, si) < sr.tmax;
                     valid[j] = j < cnt && !by_sphere ? -1 : 0;
-                    r.org_x[j] = ps.shadow_o.x, r.org_y[j] = ps.shadow_o.y, r.org_z[j] = ps.shadow_o.z;
-                    r.dir_x[j] = ps.shadow_d.x, r.dir_y[j] = ps.shadow_d.y, r.dir_z[j] = ps.shadow_d.z;
-                    r.tnear[j] = 0.0f;
-                    r.tfar[j] = by_sphere ? -std::numeric_limits<float>::infinity() : ps.shadow_tmax;
-                    r.time[j] = 0.0f;
-                    r.mask[j] = 0xffffffffu;
-                    r.id[j] = 0;
-                    r.flags[j] = 0;
+                    set_ray(r, j, sr.o, sr.d, by_sphere ? -std::numeric_limits<float>::infinity() : sr.tmax);
                 }
                 rtcOccluded16(valid, rtc, &ctx, &r);
                 for (size_t j = 0; j < cnt; ++j)
-                    if (!(r.tfar[j] < 0.0f)) {
-                        PathState &ps = paths[wf.shadows[b + j]];
-                        ps.L += ps.shadow_c;
-                    }
+                    if (!(r.tfar[j] < 0.0f)) paths[wf.shadows[b + j].path].L += wf.shadows[b + j].c;
             }
             rays += ns;
             std::swap(wf.active, wf.next);
@@ -827,13 +1092,16 @@ Renderer::Renderer(const Scene &scene) : impl_(std::make_unique<Impl>(scene)) {}
 Renderer::~Renderer() = default;
 
 Image Renderer::render(const RenderSettings &s, const RenderOptions &opt, RenderStats *stats_out) const {
+    if (s.embree_always) impl_->need_all();  // before the clocks start: building is not rendering
     using clock = std::chrono::steady_clock;
     const int w = s.width, h = s.height;
     const int tile = 16;
     const int tiles_x = (w + tile - 1) / tile, tiles_y = (h + tile - 1) / tile;
     const int ntiles = tiles_x * tiles_y;
     int nthreads = opt.threads > 0 ? opt.threads : int(std::max(1u, std::thread::hardware_concurrency()));
-    std::vector<int> tile_spp(size_t(ntiles), 0);  // samples per pixel each tile holds (equal unless cancelled)
+    // Samples per pixel each tile holds (equal unless cancelled); a tile's next pass waits for it.
+    std::vector<std::atomic<int>> tile_spp(static_cast<size_t>(ntiles));
+    for (auto &t : tile_spp) t.store(0, std::memory_order_relaxed);
     std::vector<double> sum(size_t(w) * size_t(h) * 3, 0.0);
     std::vector<double> sum2(opt.variance ? sum.size() : 0, 0.0);
     Image img;
@@ -877,9 +1145,135 @@ Image Renderer::render(const RenderSettings &s, const RenderOptions &opt, Render
 
     const Pinhole pinhole(impl_->scene.camera, w, h);
     std::vector<Wavefront> scratch(static_cast<size_t>(nthreads));  // per worker, kept across passes and tiles
+    // Samples [s0, s1) of tile ti (a pass of it): traced, then added to its pixels' sums in
+    // sample order. The tile's earlier passes are done (their sums are in).
+    auto render_tile = [&](int id, int ti, int s0, int s1, std::uint64_t &local_rays) {
+        int x0 = (ti % tiles_x) * tile, y0 = (ti / tiles_x) * tile;
+        int x1 = std::min(w, x0 + tile), y1 = std::min(h, y0 + tile);
+        // The tile's paths of this pass, pixel by pixel, each pixel's in sample order.
+        Wavefront &wf = scratch[size_t(id)];
+        auto &paths = wf.paths;
+        paths.resize(size_t(x1 - x0) * size_t(y1 - y0) * size_t(s1 - s0));
+        size_t pi = 0;
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x) {
+                std::uint64_t pix = std::uint64_t(y) * std::uint64_t(w) + std::uint64_t(x);
+                for (int k = s0; k < s1; ++k) {
+                    PathState &ps = paths[pi++];
+                    ps = PathState{};
+                    ps.smp = PathSampler(s.sampler, s.seed, pix, std::uint64_t(k));
+                    const glm::vec2 j = ps.smp.get2();
+                    const float jx = j.x, jy = j.y;
+                    ps.o = impl_->scene.camera.position;
+                    ps.d = pinhole.dir(float(x) + jx, float(y) + jy);
+                }
+            }
+        for (size_t c0 = 0; c0 < paths.size(); c0 += kWavefront)
+            impl_->trace_wavefront(&paths[c0], std::min(kWavefront, paths.size() - c0), wf, s, local_rays);
+        pi = 0;
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x) {
+                std::uint64_t pix = std::uint64_t(y) * std::uint64_t(w) + std::uint64_t(x);
+                double *acc = &sum[3 * pix];
+                double *acc2 = sum2.empty() ? nullptr : &sum2[3 * pix];
+                for (int k = s0; k < s1; ++k) {
+                    glm::vec3 c = paths[pi++].L;
+                    if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z))) {
+                        // Never dropped quietly: counted, and the render fails after the pass.
+                        if (nonfinite.fetch_add(1) == 0) {
+                            std::ostringstream o;
+                            o << "pixel (" << x << ", " << y << ") sample " << k << " = (" << c.x << ", "
+                              << c.y << ", " << c.z << ")";
+                            std::lock_guard<std::mutex> lock(error_mutex);
+                            first_nonfinite = o.str();
+                        }
+                        failed = true;
+                        continue;
+                    }
+                    acc[0] += c.x, acc[1] += c.y, acc[2] += c.z;
+                    if (acc2) acc2[0] += double(c.x) * c.x, acc2[1] += double(c.y) * c.y, acc2[2] += double(c.z) * c.z;
+                }
+            }
+        rays += local_rays;
+        local_rays = 0;
+        done_samples += std::uint64_t(x1 - x0) * std::uint64_t(y1 - y0) * std::uint64_t(s1 - s0);
+        tile_spp[size_t(ti)].store(s1, std::memory_order_release);  // the sums above are in
+        if (id == 0 && tty) print_progress(false);
+    };
+    // Runs loop(id) on nthreads threads (this one is 0), each with denormals off; the first
+    // exception of any is kept in `error` and stops the others.
+    auto run_workers = [&](const std::function<void(int, std::uint64_t &)> &loop) {
+        auto worker = [&](int id) noexcept {
+            DenormalsOff denormals_off;  // in every worker, so every sample sees the same mode
+            try {
+                std::uint64_t local_rays = 0;
+                loop(id, local_rays);
+            } catch (...) {
+                std::lock_guard<std::mutex> lock(error_mutex);
+                if (!error) error = std::current_exception();
+                failed = true;
+            }
+        };
+        std::vector<std::thread> pool;
+        JoinAll join{pool};
+        for (int i = 1; i < nthreads; ++i) {
+            try {
+                pool.emplace_back(worker, i);
+            } catch (const std::system_error &e) {  // out of threads or memory: go on with fewer
+                std::fprintf(stderr, "pgloss-tracer: could not start thread %d of %d (%s); rendering with %d\n",
+                             i + 1, nthreads, e.what(), i);
+                nthreads = i;
+                break;
+            }
+        }
+        worker(0);
+    };
+    auto check_failures = [&] {
+        if (error) std::rethrow_exception(error);
+        if (nonfinite > 0)
+            throw std::runtime_error(std::to_string(nonfinite.load()) + " samples were not finite (first: " +
+                                     first_nonfinite +
+                                     "); the scene's numbers overflow float somewhere, nothing was written");
+    };
+    // The passes: 1, 2, 4, … samples per pixel, at most opt.max_pass_spp (a time budget
+    // shortens them to what fits).
+    auto next_pass_spp = [&](int pass_spp, int spp_done) {
+        return std::max(1, std::min({pass_spp, s.spp - spp_done, opt.max_pass_spp}));
+    };
+    if (s.time_budget_s <= 0 && !opt.on_pass) {
+        // A fixed sample count and no image between passes: one pool of workers takes (pass,
+        // tile) in pass order with no barrier between passes (a worker that would wait at one
+        // for the slowest tile, or a thread that is descheduled, holds nothing up); a tile's
+        // pass waits only for that tile's previous pass, which is long done unless the image
+        // has fewer tiles than there are threads. The passes and tiles are those of the
+        // progressive loop below, so the image is the same.
+        std::vector<std::pair<int, int>> passes;
+        for (int done = 0, n = 1; done < s.spp; n = std::min(2 * n, std::max(1, opt.max_pass_spp))) {
+            const int k = next_pass_spp(n, done);
+            passes.emplace_back(done, done + k);
+            done += k;
+        }
+        const std::uint64_t items = std::uint64_t(passes.size()) * std::uint64_t(ntiles);
+        std::atomic<std::uint64_t> next_item{0};
+        run_workers([&](int id, std::uint64_t &local_rays) {
+            for (;;) {
+                if (cancelled()) return;  // whole tiles only: each pixel's mean stays over its own samples
+                const std::uint64_t k = next_item.fetch_add(1);
+                if (k >= items) return;
+                const auto [s0, s1] = passes[size_t(k / std::uint64_t(ntiles))];
+                const int ti = int(k % std::uint64_t(ntiles));
+                while (tile_spp[size_t(ti)].load(std::memory_order_acquire) < s0) {
+                    if (cancelled()) return;
+                    std::this_thread::yield();
+                }
+                render_tile(id, ti, s0, s1, local_rays);
+            }
+        });
+        check_failures();
+    }
     int spp_done = 0;
     int pass_spp = 1;
-    while (spp_done < s.spp && !cancelled()) {
+    while ((s.time_budget_s > 0 || opt.on_pass) && spp_done < s.spp && !cancelled()) {
         double t = elapsed();
         if (s.time_budget_s > 0 && spp_done > 0) {
             if (t >= s.time_budget_s) break;
@@ -888,95 +1282,18 @@ Image Renderer::render(const RenderSettings &s, const RenderOptions &opt, Render
             if (fit < 1) break;
             pass_spp = std::min(pass_spp, fit);
         }
-        pass_spp = std::max(1, std::min({pass_spp, s.spp - spp_done, opt.max_pass_spp}));
+        pass_spp = next_pass_spp(pass_spp, spp_done);
         const int s0 = spp_done, s1 = spp_done + pass_spp;
         std::atomic<int> next_tile{0};
-        auto worker = [&](int id) noexcept {
-          DenormalsOff denormals_off;  // in every worker, so every sample sees the same mode
-          try {
-            std::uint64_t local_rays = 0;
+        run_workers([&](int id, std::uint64_t &local_rays) {
             for (;;) {
-                if (cancelled()) break;  // whole tiles only: each pixel's mean stays over its own samples
+                if (cancelled()) return;  // whole tiles only: each pixel's mean stays over its own samples
                 int ti = next_tile.fetch_add(1);
-                if (ti >= ntiles) break;
-                int x0 = (ti % tiles_x) * tile, y0 = (ti / tiles_x) * tile;
-                int x1 = std::min(w, x0 + tile), y1 = std::min(h, y0 + tile);
-                // The tile's paths of this pass, pixel by pixel, each pixel's in sample order.
-                Wavefront &wf = scratch[size_t(id)];
-                auto &paths = wf.paths;
-                paths.resize(size_t(x1 - x0) * size_t(y1 - y0) * size_t(s1 - s0));
-                size_t pi = 0;
-                for (int y = y0; y < y1; ++y)
-                    for (int x = x0; x < x1; ++x) {
-                        std::uint64_t pix = std::uint64_t(y) * std::uint64_t(w) + std::uint64_t(x);
-                        for (int k = s0; k < s1; ++k) {
-                            PathState &ps = paths[pi++];
-                            ps = PathState{};
-                            ps.smp = PathSampler(s.sampler, s.seed, pix, std::uint64_t(k));
-                            const glm::vec2 j = ps.smp.get2();
-                            const float jx = j.x, jy = j.y;
-                            ps.o = impl_->scene.camera.position;
-                            ps.d = pinhole.dir(float(x) + jx, float(y) + jy);
-                        }
-                    }
-                for (size_t c0 = 0; c0 < paths.size(); c0 += kWavefront)
-                    impl_->trace_wavefront(&paths[c0], std::min(kWavefront, paths.size() - c0), wf, s, local_rays);
-                pi = 0;
-                for (int y = y0; y < y1; ++y)
-                    for (int x = x0; x < x1; ++x) {
-                        std::uint64_t pix = std::uint64_t(y) * std::uint64_t(w) + std::uint64_t(x);
-                        double *acc = &sum[3 * pix];
-                        double *acc2 = sum2.empty() ? nullptr : &sum2[3 * pix];
-                        for (int k = s0; k < s1; ++k) {
-                            glm::vec3 c = paths[pi++].L;
-                            if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z))) {
-                                // Never dropped quietly: counted, and the render fails after the pass.
-                                if (nonfinite.fetch_add(1) == 0) {
-                                    std::ostringstream o;
-                                    o << "pixel (" << x << ", " << y << ") sample " << k << " = (" << c.x << ", "
-                                      << c.y << ", " << c.z << ")";
-                                    std::lock_guard<std::mutex> lock(error_mutex);
-                                    first_nonfinite = o.str();
-                                }
-                                failed = true;
-                                continue;
-                            }
-                            acc[0] += c.x, acc[1] += c.y, acc[2] += c.z;
-                            if (acc2) acc2[0] += double(c.x) * c.x, acc2[1] += double(c.y) * c.y, acc2[2] += double(c.z) * c.z;
-                        }
-                    }
-                rays += local_rays;
-                local_rays = 0;
-                done_samples += std::uint64_t(x1 - x0) * std::uint64_t(y1 - y0) * std::uint64_t(s1 - s0);
-                tile_spp[size_t(ti)] = s1;  // each tile is one worker's in a pass
-                if (id == 0 && tty) print_progress(false);
+                if (ti >= ntiles) return;
+                render_tile(id, ti, s0, s1, local_rays);
             }
-          } catch (...) {
-            std::lock_guard<std::mutex> lock(error_mutex);
-            if (!error) error = std::current_exception();
-            failed = true;
-          }
-        };
-        {
-            std::vector<std::thread> pool;
-            JoinAll join{pool};
-            for (int i = 1; i < nthreads; ++i) {
-                try {
-                    pool.emplace_back(worker, i);
-                } catch (const std::system_error &e) {  // out of threads or memory: go on with fewer
-                    std::fprintf(stderr, "pgloss-tracer: could not start thread %d of %d (%s); rendering with %d\n",
-                                 i + 1, nthreads, e.what(), i);
-                    nthreads = i;
-                    break;
-                }
-            }
-            worker(0);
-        }
-        if (error) std::rethrow_exception(error);
-        if (nonfinite > 0)
-            throw std::runtime_error(std::to_string(nonfinite.load()) + " samples were not finite (first: " +
-                                     first_nonfinite +
-                                     "); the scene's numbers overflow float somewhere, nothing was written");
+        });
+        check_failures();
         if (cancelled()) break;
         spp_done = s1;
         pass_spp *= 2;
@@ -992,7 +1309,7 @@ Image Renderer::render(const RenderSettings &s, const RenderOptions &opt, Render
     // Samples per pixel: the tile's own count (all equal unless the render was cancelled mid-pass).
     auto pixel_spp = [&](size_t i) {
         size_t pix = i / 3, x = pix % size_t(w), y = pix / size_t(w);
-        return tile_spp[(y / tile) * size_t(tiles_x) + x / tile];
+        return tile_spp[(y / tile) * size_t(tiles_x) + x / tile].load(std::memory_order_relaxed);
     };
     for (size_t i = 0; i < sum.size(); ++i) {
         int n = pixel_spp(i);
@@ -1009,13 +1326,14 @@ Image Renderer::render(const RenderSettings &s, const RenderOptions &opt, Render
             v.rgb[i] = float(std::max(0.0, (sum2[i] / n - m * m)) / (n - 1));
         }
     }
-    st.spp = *std::min_element(tile_spp.begin(), tile_spp.end());
+    st.spp = s.spp;
+    for (const auto &t : tile_spp) st.spp = std::min(st.spp, t.load(std::memory_order_relaxed));
     st.interrupted = opt.cancel && opt.cancel->load();
     st.samples = 0;
     for (int ti = 0; ti < ntiles; ++ti) {
         int x0 = (ti % tiles_x) * tile, y0 = (ti / tiles_x) * tile;
         st.samples += std::uint64_t(std::min(w, x0 + tile) - x0) * std::uint64_t(std::min(h, y0 + tile) - y0) *
-                      std::uint64_t(tile_spp[size_t(ti)]);
+                      std::uint64_t(tile_spp[size_t(ti)].load(std::memory_order_relaxed));
     }
     st.rays = rays.load();
     st.seconds = elapsed();
