@@ -118,7 +118,7 @@ class Renderers:
 
 
 # ------------------------------------------------------------------------------------- targets
-# `pgloss bridge TARGET …` prints the parameters under each target's own names (tools/cli_bridge.c):
+# `pgloss bridge TARGET …` prints the parameters under each target's own names (tools/cmd_bridge.c):
 # MaterialX inputs, glTF material fields, Principled inputs, Mitsuba plugin parameters.
 def _materialx(node: str) -> Callable[[dict, Path], dict]:
     def make(p: dict, work: Path) -> dict:

@@ -4,8 +4,8 @@
 
 ``python -m pgloss`` and the wheel's ``pgloss`` command hand every command that is not the
 package's own (:mod:`pgloss.__main__`) to it: ``to-physical``, ``to-perceptual``,
-``to-perceptual-rgb``, ``check``, ``match``, ``distance``, ``envelope``, ``eval``, ``demo``,
-``--version``. There is one implementation of them, so one grammar, one set of messages and one
+``to-perceptual-rgb``, ``check``, ``match``, ``distance``, ``envelope``, ``eval``,
+``glossmeter``, ``from-gloss-units``, ``finish``, ``bridge``, ``demo``, ``--version``. There is one implementation of them, so one grammar, one set of messages and one
 set of exit codes: 0 the result is ok or a warning, 1 the core's verdict is an error, 2 wrong
 arguments, 3 the output could not be written.
 """
