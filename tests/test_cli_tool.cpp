@@ -163,6 +163,93 @@ TEST(CliTool, EveryCommandJudgesItsPaint) {
     expect_verdict({"envelope", "101"}, "PGLOSS_ERR_LIGHTNESS", 1);
 }
 
+const char *const GLOSSMETER =
+    "glossmeter rho_d rho_s alpha [norm] [--alpha-y A] [--azimuth DEG] [--tol T] [--rgb R G B] | --fig4 [--markdown] "
+    "| --bench";
+const char *const FROM_GLOSS_UNITS =
+    "from-gloss-units --L L --g60 G [--a A] [--b B] [--g20 G | --haze H | --doi D | --d D] [--norm N]";
+const char *const FINISH = "finish NAME [--L L] [--a A] [--b B] [--norm N] | --list";
+const char *const BRIDGE = "bridge TARGET L a b c d | --from TARGET FILE.json";
+
+TEST(CliTool, GlossmeterCommandsShareTheGrammar) {
+    // Numbers, options and normalisations of the glossmeter commands: one grammar, one message.
+    expect_usage_error({"glossmeter", "0.5", "x", "0.1"}, "rho_s: 'x' is not a number", GLOSSMETER);
+    expect_usage_error({"glossmeter", "0.5", "0", "0.1", "--tol", "inf"}, "--tol: 'inf' is not a finite number",
+                       GLOSSMETER);
+    expect_usage_error({"glossmeter", "0.5", "0", "0.1", "--rgb", "0.1", "0.2"}, "--rgb needs 3 numbers", GLOSSMETER);
+    expect_usage_error({"glossmeter", "0.5", "0", "0.1", "Ward"}, "norm: 'Ward' is not one of ward, ward-dur, bounded",
+                       GLOSSMETER);
+    expect_usage_error({"glossmeter", "0.5", "0"}, "expected 3 or 4 arguments besides the options, got 2", GLOSSMETER);
+    expect_usage_error({"glossmeter", "0.5", "0", "0.1", "--tolerance", "1e-6"}, "unknown option '--tolerance'",
+                       GLOSSMETER);
+    expect_usage_error({"glossmeter", "--fig4", "--html"}, "--fig4 takes only --markdown", GLOSSMETER);
+    expect_usage_error({"from-gloss-units", "--L", "50", "--g60"}, "--g60 needs a number", FROM_GLOSS_UNITS);
+    expect_usage_error({"from-gloss-units", "--L", "50", "--g60", "0x14"}, "--g60: '0x14' is not a decimal number",
+                       FROM_GLOSS_UNITS);
+    expect_usage_error({"from-gloss-units", "--g60", "20"}, "needs --L and --g60", FROM_GLOSS_UNITS);
+    expect_usage_error({"from-gloss-units", "--L", "50", "--g60", "20", "--g20", "9", "--haze", "5"},
+                       "takes at most one of --g20, --haze, --doi, --d", FROM_GLOSS_UNITS);
+    expect_usage_error({"from-gloss-units", "--L", "50", "--L", "60", "--g60", "20"}, "--L given twice",
+                       FROM_GLOSS_UNITS);
+    expect_usage_error({"from-gloss-units", "--L", "50", "--g60", "20", "--norm", "phong"},
+                       "norm: 'phong' is not one of ward, ward-dur, bounded", FROM_GLOSS_UNITS);
+    expect_usage_error({"finish", "glosy"},
+                       "NAME: 'glosy' is not a finish: one of flat, velvet, eggshell, satin, semi-gloss, gloss, "
+                       "high-gloss, or its level G1-G7 (pgloss finish --list)",
+                       FINISH);
+    expect_usage_error({"finish", "satin", "--L", "ninety"}, "--L: 'ninety' is not a number", FINISH);
+    expect_usage_error({"finish", "satin", "--L"}, "--L needs a number", FINISH);
+    expect_usage_error({"finish", "satin", "90"}, "unexpected argument '90'", FINISH);
+    // The core's verdicts as the status line (negative ρs: eq. 2 has no such paint).
+    expect_verdict({"glossmeter", "0.5", "-0.1", "0.1"}, "PGLOSS_ERR_NEGATIVE", 1);
+    expect_verdict({"glossmeter", "0.5", "0", "0.1", "bounded", "--azimuth", "-30"}, "ok", 0);
+    expect_verdict({"from-gloss-units", "--L", "50", "--g60", "20", "--g20", "90"}, "PGLOSS_ERR_NO_FIT", 1);
+    expect_verdict({"finish", "G4", "--L", "90"}, "ok", 0);
+}
+
+TEST(CliTool, BridgeSharesTheGrammar) {
+    expect_usage_error({"bridge", "vray", "50", "0", "0", "0.057", "0.96"},
+                       "TARGET: 'vray' is not one of openpbr, standard_surface, gltf, gltf_core, principled, "
+                       "roughplastic_ggx, roughplastic_beckmann",
+                       BRIDGE);
+    expect_usage_error({"bridge", "openpbr", "50", "0", "0", "0.057", "nan"}, "d: 'nan' is not a finite number", BRIDGE);
+    expect_usage_error({"bridge", "openpbr", "50", "0", "0", "0.057"}, "expected 6 arguments, got 5", BRIDGE);
+    expect_usage_error({"bridge", "--from", "gltf"}, "--from takes TARGET FILE.json, got 1 argument", BRIDGE);
+    expect_usage_error({"bridge", "--from", "blender", "m.json"},
+                       "TARGET: 'blender' is not one of openpbr, standard_surface, gltf, gltf_core, principled, "
+                       "roughplastic_ggx, roughplastic_beckmann",
+                       BRIDGE);
+    expect_usage_error({"bridge", "--from", "gltf", "/nonexistent/m.json"},
+                       "FILE.json: '/nonexistent/m.json': No such file or directory", BRIDGE);
+    // The verdict is the JSON's "status" (the output stays JSON): glTF without extensions has
+    // F0 = 0.04, too little specular for c = 0.2 at L* = 20 (docs/bridge.md).
+    const Result r = run_tool({"bridge", "gltf_core", "20", "0", "0", "0.2", "0.95"});
+    EXPECT_EQ(r.rc, 1);
+    EXPECT_EQ(r.err, "");
+    EXPECT_NE(r.out.find("\"status\": \"PGLOSS_ERR_BRIDGE_SPECULAR\""), std::string::npos) << r.out;
+}
+
+TEST(CliTool, BridgeReadsAMaterialWithTheGrammar) {
+    const std::string path = testing::TempDir() + "pgloss_cli_bridge.json";
+    const auto write = [&](const char *text) {
+        FILE *g = std::fopen(path.c_str(), "w");
+        std::fputs(text, g);
+        std::fclose(g);
+    };
+    write("{\"parameters\": {\"baseColorFactor\": [0.18, 0.18, Infinity, 1], \"roughnessFactor\": 0.17}}");
+    expect_usage_error({"bridge", "--from", "gltf", path}, "FILE.json: '" + path +
+                       "': \"baseColorFactor\"[2]: 'Infinity' is not a finite number", BRIDGE);
+    write("{\"parameters\": {\"baseColorFactor\": [0.18, 0.18, 0.18, 1]}}");
+    expect_usage_error({"bridge", "--from", "gltf", path}, "FILE.json: '" + path +
+                       "': needs \"baseColorFactor\" and \"roughnessFactor\" for gltf", BRIDGE);
+    write("{\"parameters\": {\"baseColorFactor\": [0.1851, 0.1851, 0.1851, 1], \"roughnessFactor\": 0.1684,"
+          " \"ior\": 1.5, \"specularFactor\": 0.642}}");
+    const Result r = run_tool({"bridge", "--from", "gltf", path});
+    std::remove(path.c_str());
+    EXPECT_EQ(r.rc, 0) << r.err;
+    EXPECT_NE(r.out.find("\"status\": \"ok\""), std::string::npos) << r.out;
+}
+
 TEST(CliTool, DemoSpellsGrey) {
     const Result r = run_tool({"demo"});
     EXPECT_EQ(r.rc, 0);

@@ -103,6 +103,24 @@ CASES: List[List[str]] = [
     ["eval", "0.193", "0.066", "0.07", "1e300", "0", "30", "180"],
     ["eval", "0.2", "0.05", "x", "0", "0", "0", "0"],
     ["eval", *EVAL, "ward", "extra"],
+    ["glossmeter", "0.5", "0", "0.1"],                       # a perfect diffuser
+    ["glossmeter", "0.193", "0.066", "0.04", "bounded", "--azimuth", "-30", "--rgb", "0.3", "0.1", "0.05"],
+    ["glossmeter", "0.5", "-0.1", "0.1"],                      # NEGATIVE
+    ["glossmeter", "0.5", "0", "0.1", "--tol", "inf"],         # not a finite number: 2
+    ["glossmeter", "0.5", "0", "0.1", "--rgb", "0.1", "0.2"],  # a missing value: 2
+    ["glossmeter", "--fig4", "--markdown"],
+    ["from-gloss-units", "--L", "50", "--g60", "17", "--g20", "12.2"],
+    ["from-gloss-units", "--L", "50", "--g60", "20"],          # the family, d assumed
+    ["from-gloss-units", "--L", "50", "--g60", "20", "--g20", "90"],  # NO_FIT
+    ["from-gloss-units", "--L", "50", "--g60"],                # a missing value: 2
+    ["from-gloss-units", "--L", "x", "--g60", "20"],           # not a number: 2
+    ["finish", "satin", "--L", "90"],
+    ["finish", "--list"],
+    ["finish", "glosy"],                                       # unknown finish: 2
+    ["bridge", "openpbr", "50", "0", "0", "0.057", "0.96"],
+    ["bridge", "gltf_core", "20", "0", "0", "0.2", "0.95"],  # BRIDGE_SPECULAR: parameters, exit 1
+    ["bridge", "vray", "50", "0", "0", "0.057", "0.96"],       # unknown target: 2
+    ["bridge", "openpbr", "50", "0", "0", "0.057", "1e999"],   # out of range: 2
     ["demo"],
     ["demo", "extra"],
     ["demo", "--help"],
@@ -166,6 +184,10 @@ EXPECTED = [
      _usage_error("eval", "theta_o: 'inf' is not a finite number",
                   "rho_d rho_s alpha theta_o phi_o theta_i phi_i [norm]")),
     (["demo", "extra"], (2, b"", b"pgloss demo: expected no arguments, got 1\nusage: pgloss demo\n")),
+    (["finish", "satin", "--L"], _usage_error("finish", "--L needs a number",
+                                              "NAME [--L L] [--a A] [--b B] [--norm N] | --list")),
+    (["bridge", "openpbr", "50", "0", "0", "x", "0.96"],
+     _usage_error("bridge", "c: 'x' is not a number", "TARGET L a b c d | --from TARGET FILE.json")),
     (["fit"], (2, b"", b"pgloss: unknown command 'fit' (pgloss --help lists the commands)\n")),
 ]
 
