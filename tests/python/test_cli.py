@@ -235,7 +235,7 @@ def test_help_lists_the_tools_and_the_packages_commands() -> None:
 
 
 def test_package_commands_are_python_and_the_rest_is_the_tool() -> None:
-    assert [c.name for c in package_main.COMMANDS] == ["figures", "mds", "experiment"]
+    assert [c.name for c in package_main.COMMANDS] == ["figures", "mds", "magnitude", "experiment", "image-meter"]
     assert cli.tool().is_file() and os.access(cli.tool(), os.X_OK)
     # Called in-process, a tool command runs in a child and returns its exit code.
     assert package_main.main(["envelope", "50"]) == 0
