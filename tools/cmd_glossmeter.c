@@ -82,7 +82,7 @@ static void print_readings(FILE *out, const pgloss_glossmeter_readings *r)
 static int fig4(pgloss_cli *cli, int markdown)
 {
     static const double rd[3] = {0.03, 0.193, 0.767}, rs[3] = {0.033, 0.066, 0.099}, al[3] = {0.04, 0.07, 0.10};
-    static const char *const names[3] = {"black", "gray", "white"};
+    static const char *const names[3] = {"black", "grey", "white"};
     FILE *out = cli->out;
     if (markdown) {
         fputs("| paint | rho_d | rho_s | alpha | c | d | G20 | G60 | G85 | haze 20 | haze index | DOI 30 | contrast |\n"
