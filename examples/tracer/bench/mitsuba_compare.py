@@ -504,9 +504,10 @@ def log(*args) -> None:
     print(*args, file=sys.stderr, flush=True)
 
 
-def reference(runner, key: str, sc: TracerScene, ref_spp: int) -> tuple[np.ndarray, np.ndarray]:
-    """The renderer's own high-spp image, in 16 chunks: its mean and the variance of that mean."""
-    chunk = max(1, ref_spp // 16)
+def reference(runner, key: str, sc: TracerScene, ref_spp: int, chunks: int = 16) -> tuple[np.ndarray, np.ndarray]:
+    """The renderer's own high-spp image, in chunks: its mean and the variance of that mean
+    (from the chunks' spread; 0 for one chunk)."""
+    chunk = max(1, ref_spp // chunks)
     n = ref_spp // chunk
     acc = var = 0.0
     for k in range(n):
@@ -516,7 +517,8 @@ def reference(runner, key: str, sc: TracerScene, ref_spp: int) -> tuple[np.ndarr
     return mean, np.maximum(var / n - mean**2, 0) / max(n - 1, 1)
 
 
-def compare(runners: dict, key: str, sc: TracerScene, spps: list[int], ref_spp: int, reps: int) -> tuple[list, dict]:
+def compare(runners: dict, key: str, sc: TracerScene, spps: list[int], ref_spp: int, reps: int,
+            chunks: int = 16) -> tuple[list, dict]:
     """Paired, alternating rounds of every renderer at each spp (tracer, Mitsuba, Mitsuba,
     tracer, …, so that the machine's load hits both alike) against each one's own reference.
     Returns one row per spp and renderer, and the references."""
@@ -526,7 +528,7 @@ def compare(runners: dict, key: str, sc: TracerScene, spps: list[int], ref_spp: 
     refs = {}
     for name, rn in runners.items():
         if name != SOBOL:
-            refs[name] = reference(rn, key, sc, ref_spp)
+            refs[name] = reference(rn, key, sc, ref_spp, chunks)
             log(f"  {key}: {name} reference done")
     runs = {name: [Runs() for _ in spps] for name in runners}
     order = list(runners)
@@ -715,7 +717,8 @@ def main(argv: list[str] | None = None) -> int:
         sc = read_scene(path, a.pgloss)
         key = f"{scene_path.stem}-n{n}"
         log(f"== {key}: {tris} mesh triangles")
-        rows, _ = compare({"pgloss-tracer": trc, "Mitsuba 3": mits}, key, sc, [a.scale_spp], a.scale_ref_spp, a.reps)
+        # References in one render each: no region check here, and a tracer run reads the OBJ anew.
+        rows, _ = compare({"pgloss-tracer": trc, "Mitsuba 3": mits}, key, sc, [a.scale_spp], a.scale_ref_spp, a.reps, 1)
         scale_rows.append((n, tris, trc.build.get(key), mits.build[key], rows))
         del mits.scenes[key]  # its memory before the next size's
 

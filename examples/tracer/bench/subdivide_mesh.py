@@ -38,9 +38,11 @@ def read_obj(path: Path) -> tuple[np.ndarray, np.ndarray]:
 
 
 def subdivide(v: np.ndarray, f: np.ndarray, n: int) -> tuple[np.ndarray, np.ndarray]:
-    """Each triangle (a, b, c) into n^2: the points a + i/n (b - a) + j/n (c - a), i, j >= 0,
-    i + j <= n, joined as (i, j) (i+1, j) (i, j+1) and (i+1, j) (i+1, j+1) (i, j+1), which keep
-    the triangle's orientation."""
+    """Each triangle (a, b, c) into n^2: the points P(i, j) = a + i/n (b - a) + j/n (c - a),
+    i, j >= 0, i + j <= n, joined as triangles that keep (a, b, c)'s orientation. The two of a
+    grid cell follow each other as a pair (p, q, r), (p, r, s) sharing the diagonal p r, as a
+    quad mesh's exporter writes its quads: (P(i+1, j), P(i+1, j+1), P(i, j+1)) and
+    (P(i+1, j), P(i, j+1), P(i, j)); the cells along the edge b c have the second alone."""
     if n == 1:
         return v, f
     nt = len(f)
@@ -75,13 +77,16 @@ def subdivide(v: np.ndarray, f: np.ndarray, n: int) -> tuple[np.ndarray, np.ndar
             interior.append(a + (i / n) * (b - a) + (j / n) * (c - a))
     iv = np.stack(interior, axis=1).reshape(-1, 3) if interior else np.zeros((0, 3))
     verts = np.concatenate([v, ev.reshape(-1, 3), iv])
-    tris = []
+    cells = []  # per cell, (nt, 3) or (nt, 6): its triangles, a triangle's in consecutive rows
     for i in range(n):
         for j in range(n - i):
-            tris.append(np.stack([grid[i, j], grid[i + 1, j], grid[i, j + 1]], axis=1))
+            up = [grid[i + 1, j], grid[i, j + 1], grid[i, j]]
             if i + j + 2 <= n:
-                tris.append(np.stack([grid[i + 1, j], grid[i + 1, j + 1], grid[i, j + 1]], axis=1))
-    return verts, np.concatenate(tris)
+                cells.append(np.stack([grid[i + 1, j], grid[i + 1, j + 1], grid[i, j + 1], *up], axis=1))
+            else:
+                cells.append(np.stack(up, axis=1))
+    # Each original triangle's n^2 triangles together (the file's order of triangles kept).
+    return verts, np.concatenate(cells, axis=1).reshape(-1, 3)
 
 
 def write_obj(path: Path, v: np.ndarray, f: np.ndarray, note: str) -> None:
