@@ -50,6 +50,7 @@ Example::
 """
 
 from . import _core
+from . import bridge  # the gloss bridge (pgloss/bridge.h)
 from . import glossmeter  # the virtual glossmeter (pgloss/glossmeter.h)
 from ._brdf import SampleRecord, eval, eval_pdf, material_init, pdf, sample, specular_probability
 from ._core import Material
