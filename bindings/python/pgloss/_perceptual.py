@@ -42,10 +42,9 @@ def _grey_physical_check(rho_d: np.ndarray, rho_s: np.ndarray, alpha: np.ndarray
 
 def _grey_perceptual_check(L: np.ndarray, c: np.ndarray, d: np.ndarray) -> List[np.ndarray]:
     """The core's verdict on grey paints (L*, 0, 0, c, d): pgloss_check_perceptual (ENVELOPE)."""
-    lab = np.zeros((3, L.size))
-    lab[0] = L
+    zero = np.broadcast_to(0.0, L.shape)
     st = np.empty(L.size, np.int8)
-    _core.check_perceptual(lab, c, d, int(ColorSpace.LINEAR_REC709), st)
+    _core.check_perceptual(L, zero, zero, c, d, int(ColorSpace.LINEAR_REC709), st)
     return [st]
 
 
