@@ -693,6 +693,7 @@ TEST(PerceptualBatch, EmptyAndWholeCallErrors) {
     o = -7;
     EXPECT_EQ(pgloss_physical_from_perceptual_batch(1, &q, PGLOSS_NORM_WARD, static_cast<pgloss_color_space>(4), &p, nullptr),
               PGLOSS_ERR_ARGUMENT);
+    EXPECT_EQ(o, -7) << "nothing written";
     EXPECT_EQ(pgloss_physical_from_perceptual_batch(1, nullptr, PGLOSS_NORM_WARD, rec709, &p, nullptr), PGLOSS_ERR_NULL);
     EXPECT_EQ(pgloss_physical_from_perceptual_batch(1, &q, PGLOSS_NORM_WARD, rec709, &p, nullptr), PGLOSS_OK);
     // an output with stride 0 for more than one element; one input broadcast to two is fine
