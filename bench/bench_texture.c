@@ -222,15 +222,15 @@ static void run_sample_materials_d(void *ctx) { sample_texture(ctx, 1, 1); }
 
 /* ---- perceptual ---------------------------------------------------------------------------- */
 
+static pgloss_strided col(const double *p) { return pgloss_strided_of(p, F64); }
+static pgloss_strided_out col_out(double *p) { return pgloss_strided_out_of(p, F64); }
+
 static pgloss_perceptual_array perceptual_of(const data *D)
 {
-    const pgloss_perceptual_array q = {pgloss_strided3_soa(D->L, D->a, D->b, F64), pgloss_strided_of(D->c, F64),
-                                       pgloss_strided_of(D->d, F64)};
+    const pgloss_perceptual_array q = {col(D->L), col(D->a), col(D->b), col(D->c), col(D->d)};
     return q;
 }
 
-static pgloss_strided col(const double *p) { return pgloss_strided_of(p, F64); }
-static pgloss_strided_out col_out(double *p) { return pgloss_strided_out_of(p, F64); }
 
 static void run_pfp(void *ctx)
 {
@@ -300,7 +300,7 @@ static void run_perceptual_from_physical(void *ctx)
 {
     data *D = ctx;
     const pgloss_physical_array m = mats_of(NULL, D->md);
-    const pgloss_perceptual_array_out q = {pgloss_strided3_out_soa(D->out[0], D->out[1], D->out[2], F64),
+    const pgloss_perceptual_array_out q = {col_out(D->out[0]), col_out(D->out[1]), col_out(D->out[2]),
                                            col_out(D->out[3]), col_out(D->out[4])};
     pgloss_perceptual_from_physical_batch(D->n, &m, PGLOSS_COLOR_SPACE_LINEAR_REC709, &q, D->status);
 }

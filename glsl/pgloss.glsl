@@ -799,7 +799,9 @@ int pgloss_physical_from_gloss(float L, float c, float d,
     return pgloss_impl_alpha_status(alpha);
 }
 
-/* Eq. 5: D = sqrt(Δc² + (1.78 Δd)²). Errors: NONFINITE. */
+/* Eq. 5: D = sqrt(Δc² + (1.78 Δd)²), written for any finite points; the status is the verdict
+ * on the two paints (perceptual.h): NEGATIVE (c < 0), ALPHA (d >= 1), paint 1 first, then the
+ * warning for α = 1 − d > 0.2. Errors: NONFINITE, NEGATIVE, ALPHA. */
 int pgloss_gloss_distance(float c1, float d1, float c2, float d2, out float D)
 {
     D = 0.0;
@@ -810,7 +812,11 @@ int pgloss_gloss_distance(float c1, float d1, float c2, float d2, out float D)
     if (!pgloss_impl_finite(v))
         return PGLOSS_ERR_NONFINITE;
     D = v;
-    return PGLOSS_OK;
+    if (c1 < 0.0) return PGLOSS_ERR_NEGATIVE;
+    if (d1 >= 1.0) return PGLOSS_ERR_ALPHA;
+    if (c2 < 0.0) return PGLOSS_ERR_NEGATIVE;
+    if (d2 >= 1.0) return PGLOSS_ERR_ALPHA;
+    return pgloss_impl_alpha_status(1.0 - min(d1, d2));
 }
 
 /* Envelope of gloss space (Fig. 10): the largest c at lightness L with ρd + ρs <= 1.

@@ -431,7 +431,9 @@ int pgloss_physical_from_gloss(float L, float c, float d,
     return pgloss__alpha_status(a);
 }
 
-// Eq. 5, hypot without overflow of the squares.
+// Eq. 5, hypot without overflow of the squares; D for any finite points, the status the
+// verdict on the two paints (perceptual.h): NEGATIVE (c < 0), ALPHA (d >= 1), paint 1 first,
+// then the warning for α = 1 − d > 0.2.
 int pgloss_gloss_distance(float c1, float d1, float c2, float d2, output float D)
 {
     D = 0.0;
@@ -444,7 +446,11 @@ int pgloss_gloss_distance(float c1, float d1, float c2, float d2, output float D
     }
     if (!isfinite(v)) return PGLOSS_ERR_NONFINITE;
     D = v;
-    return PGLOSS_OK;
+    if (c1 < 0.0) return PGLOSS_ERR_NEGATIVE;
+    if (d1 >= 1.0) return PGLOSS_ERR_ALPHA;
+    if (c2 < 0.0) return PGLOSS_ERR_NEGATIVE;
+    if (d2 >= 1.0) return PGLOSS_ERR_ALPHA;
+    return pgloss__alpha_status(1.0 - min(d1, d2));
 }
 
 // Fig. 10: cbrt(1 - ρd/2) - cbrt(ρd/2), ρd = f⁻¹(L), in quotient form.

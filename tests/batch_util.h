@@ -44,10 +44,10 @@ pgloss_physical_array physical_cols(const T *r, const T *g, const T *b, const T 
 // The perceptual batches' parameter sets (pgloss/perceptual_batch.h), as columns.
 inline pgloss_perceptual_array perceptual_cols(const double *L, const double *a, const double *b, const double *c,
                                                const double *d) {
-    return pgloss_perceptual_array{soa(L, a, b), col(c), col(d)};
+    return pgloss_perceptual_array{col(L), col(a), col(b), col(c), col(d)};
 }
 inline pgloss_perceptual_array_out perceptual_cols_out(double *L, double *a, double *b, double *c, double *d) {
-    return pgloss_perceptual_array_out{soa_out(L, a, b), col_out(c), col_out(d)};
+    return pgloss_perceptual_array_out{col_out(L), col_out(a), col_out(b), col_out(c), col_out(d)};
 }
 inline pgloss_physical_array_out physical_cols_out(double *r, double *g, double *b, double *s, double *ax, double *ay) {
     return pgloss_physical_array_out{soa_out(r, g, b), col_out(s), col_out(ax),

@@ -679,11 +679,21 @@ TEST(PerceptualBatch, EmptyAndWholeCallErrors) {
     const pgloss_perceptual_array q = perceptual_cols(&L, &a, &a, &c, &d);
     const pgloss_physical_array_out p = physical_cols_out(&o, &o, &o, &o, &o, nullptr);
     const auto rec709 = PGLOSS_COLOR_SPACE_LINEAR_REC709;
-    EXPECT_EQ(pgloss_physical_from_perceptual_batch(1, &q, static_cast<pgloss_normalization>(5), rec709, &p, nullptr),
+    // an unknown normalisation is each element's status after its input checks, as in the
+    // scalar function: NORMALIZATION and 0 outputs here, LIGHTNESS for L* = 150
+    signed char st = 99;
+    EXPECT_EQ(pgloss_physical_from_perceptual_batch(1, &q, static_cast<pgloss_normalization>(5), rec709, &p, &st),
               PGLOSS_ERR_NORMALIZATION);
-    EXPECT_EQ(o, -7) << "nothing written";
+    EXPECT_EQ(st, PGLOSS_ERR_NORMALIZATION);
+    EXPECT_EQ(o, 0.0);
+    double L2 = 150;
+    const pgloss_perceptual_array q2 = perceptual_cols(&L2, &a, &a, &c, &d);
+    EXPECT_EQ(pgloss_physical_from_perceptual_batch(1, &q2, static_cast<pgloss_normalization>(5), rec709, &p, &st),
+              PGLOSS_ERR_LIGHTNESS);
+    o = -7;
     EXPECT_EQ(pgloss_physical_from_perceptual_batch(1, &q, PGLOSS_NORM_WARD, static_cast<pgloss_color_space>(4), &p, nullptr),
               PGLOSS_ERR_ARGUMENT);
+    EXPECT_EQ(o, -7) << "nothing written";
     EXPECT_EQ(pgloss_physical_from_perceptual_batch(1, nullptr, PGLOSS_NORM_WARD, rec709, &p, nullptr), PGLOSS_ERR_NULL);
     EXPECT_EQ(pgloss_physical_from_perceptual_batch(1, &q, PGLOSS_NORM_WARD, rec709, &p, nullptr), PGLOSS_OK);
     // an output with stride 0 for more than one element; one input broadcast to two is fine

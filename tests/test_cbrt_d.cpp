@@ -291,7 +291,7 @@ TEST(PerceptualLoops, PhysicalFromPerceptualEqualsScalarOnEveryIsa) {
                     c[j] = pick(rng, -0.01, 0.2), d[j] = pick(rng, 0.7, 1.01);
                 }
                 run(I.physical, n, {L.data(), a.data(), b.data(), c.data(), d.data()},
-                    {r.data(), g.data(), bl.data(), s.data(), ax.data(), ay.data()}, pgloss__from_xyz_matrix(sp), 0,
+                    {r.data(), g.data(), bl.data(), s.data(), ax.data(), ay.data()}, pgloss__from_xyz_matrix(sp), 1,
                     st.data());
                 for (size_t j = 0; j < n; ++j) {
                     const pgloss_perceptual v{L[j], a[j], b[j], c[j], d[j]};

@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: Apache-2.0
 /* The BRDF batches (pgloss/batch.h): argument checks, then chunk by chunk the strided arrays
  * as contiguous columns (strided.h), the loops of the call's tier and scalar type on the
- * dispatched ISA (dispatch.c), the outputs written back, and the per-element statuses, found
- * in a pass of their own only when asked for or when the loops met an invalid element. */
+ * dispatched ISA (dispatch.c), the outputs written back, and the chunk's statuses: OK for
+ * every element where the loops met no invalid one, else each element's reason. */
 #include "batch_internal.h"
 #include "internal.h"
 #include "lobe_d.h"
@@ -86,19 +86,31 @@ static pgloss_status elem_status(const inputs *a, size_t j)
     return PGLOSS_OK;
 }
 
-/* Fills status (if wanted) and returns the first non-OK status. */
-static pgloss_status statuses(const inputs *a, size_t n, signed char *status)
+/* The statuses of elements [base, base + m), a chunk in which the loops met an invalid
+ * element: written to status (if wanted); returns `first` or, while it is OK, the chunk's
+ * first non-OK status. A chunk without an invalid element costs a memset (chunk_done). */
+static pgloss_status chunk_statuses(const inputs *a, size_t base, size_t m, signed char *status,
+                                    pgloss_status first)
 {
-    pgloss_status first = PGLOSS_OK;
-    for (size_t j = 0; j < n; ++j) {
+    for (size_t j = base; j < base + m; ++j) {
+        if (!status && first != PGLOSS_OK)
+            break;
         const pgloss_status st = elem_status(a, j);
         if (status)
             status[j] = (signed char)st;
-        else if (st != PGLOSS_OK)
-            return st;
         if (first == PGLOSS_OK)
             first = st;
     }
+    return first;
+}
+
+static pgloss_status chunk_done(const inputs *a, size_t base, size_t m, size_t bad,
+                                signed char *status, pgloss_status first)
+{
+    if (bad)
+        return chunk_statuses(a, base, m, status, first);
+    if (status)
+        memset(status + base, PGLOSS_OK, m);
     return first;
 }
 
@@ -155,8 +167,9 @@ static pgloss__materials_d materials_d(const chunk *c, int norm)
     return r;
 }
 
-/* Element j's pgloss_material of a float chunk (black where invalid: pgloss_material_init). */
-static void material_at(const chunk *c, size_t j, int norm, pgloss_material *out)
+/* Element j's pgloss_material of a float chunk (black where invalid: pgloss_material_init,
+ * whose status it returns). */
+static pgloss_status material_at(const chunk *c, size_t j, int norm, pgloss_material *out)
 {
     pgloss_physical p;
     for (int k = 0; k < 3; ++k)
@@ -165,7 +178,7 @@ static void material_at(const chunk *c, size_t j, int norm, pgloss_material *out
     p.alpha_x = ((const float *)c->mat[4])[j];
     p.alpha_y = ((const float *)c->mat[5])[j];
     p.normalization = (pgloss_normalization)norm;
-    (void)pgloss_material_init(out, &p);
+    return pgloss_material_init(out, &p);
 }
 
 /* A call's set-up, once: the lobes the loops are specialised on and the normalisation, and
@@ -206,7 +219,7 @@ static size_t eval_reference(const pgloss_material *m, const chunk *c, int norm,
     for (size_t j = 0; j < count; ++j) {
         pgloss_material mj;
         if (!m)
-            material_at(c, j, norm, &mj);
+            bad += material_at(c, j, norm, &mj) != PGLOSS_OK;
         const float *const *o = (const float *const *)c->o, *const *i = (const float *const *)c->x;
         const pgloss_vec3 vo = {o[0][j], o[1][j], o[2][j]}, vi = {i[0][j], i[1][j], i[2][j]};
         pgloss_rgb v;
@@ -221,8 +234,7 @@ static size_t eval_reference(const pgloss_material *m, const chunk *c, int norm,
         if (want_p)
             ((float *)c->y[3])[j] = p;
     }
-    /* an invalid material is black (0 outputs): the status pass finds it */
-    return m ? bad : count;
+    return bad; /* nonzero where an element is invalid (chunk_done finds which) */
 }
 
 pgloss_status pgloss_eval_pdf_batch(const pgloss_batch_options *options,
@@ -249,10 +261,12 @@ pgloss_status pgloss_eval_pdf_batch(const pgloss_batch_options *options,
     const size_t size = f64 ? 8 : 4;
     setup s;
     set_up(m, ms, lobes, f64, &s);
-    size_t bad = 0;
+    const inputs a = {size, ms, wo, wi, 0};
+    pgloss_status first = PGLOSS_OK;
     chunk c;
     for (size_t base = 0; base < n; base += B) {
         const size_t cnt = n - base < B ? n - base : B;
+        size_t bad;
         gather3(wo, size, base, cnt, &c.in[0], c.o);
         gather3(wi, size, base, cnt, &c.in[3], c.x);
         if (ms)
@@ -266,45 +280,44 @@ pgloss_status pgloss_eval_pdf_batch(const pgloss_batch_options *options,
             const pgloss__vec3_d vo = {c.o[0], c.o[1], c.o[2]}, vi = {c.x[0], c.x[1], c.x[2]};
             const pgloss__rgb_out_d vf = {c.y[0], c.y[1], c.y[2]};
             const pgloss__materials_d md = materials_d(&c, s.c.norm);
-            bad += L->eval_pdf_d(m ? &s.kd : NULL, m ? NULL : &md, s.c.active, s.c.norm, cnt, vo,
-                                 vi, vf, c.y[3]);
+            bad = L->eval_pdf_d(m ? &s.kd : NULL, m ? NULL : &md, s.c.active, s.c.norm, cnt, vo,
+                                vi, vf, c.y[3]);
         } else if (o.precision == PGLOSS_PRECISION_REFERENCE) {
-            bad += eval_reference(m, &c, s.c.norm, lobes, cnt, want_f, want_p);
+            bad = eval_reference(m, &c, s.c.norm, lobes, cnt, want_f, want_p);
         } else {
             const pgloss__vec3_f vo = {c.o[0], c.o[1], c.o[2]}, vi = {c.x[0], c.x[1], c.x[2]};
             const pgloss__rgb_out_f vf = {c.y[0], c.y[1], c.y[2]};
             const pgloss__materials_f mf = materials_f(&c, s.c.norm);
             s.c.ms = m ? NULL : &mf;
-            bad += L->eval_pdf[o.precision == PGLOSS_PRECISION_FAST](&s.c, cnt, vo, vi, vf, c.y[3]);
+            bad = L->eval_pdf[o.precision == PGLOSS_PRECISION_FAST](&s.c, cnt, vo, vi, vf, c.y[3]);
         }
         if (want_f)
             scatter3(f, size, base, cnt, c.y);
         if (want_p)
             pgloss__scatter(pdf.ptr, pdf.stride, size, base, cnt, c.y[3]);
+        first = chunk_done(&a, base, cnt, bad, status, first);
     }
-    if (!bad && !status)
-        return PGLOSS_OK;
-    const inputs a = {size, ms, wo, wi, 0};
-    return statuses(&a, n, status);
+    return first;
 }
 
 /* ---- sampling -------------------------------------------------------------------------------- */
 
 /* The REFERENCE tier on float32 columns: pgloss_sample element by element (an invalid
- * material is black: no lobe, wi = (0, 0, 1), 0 outputs). */
-static void sample_reference(const pgloss_material *m, const chunk *c, int norm, unsigned lobes,
+ * material is black: no lobe, wi = (0, 0, 1), 0 outputs); nonzero where one is invalid. */
+static size_t sample_reference(const pgloss_material *m, const chunk *c, int norm, unsigned lobes,
                              size_t count, unsigned char *lobe)
 {
     const float *const *o = (const float *const *)c->o, *const *u = (const float *const *)c->x;
     float *const *y = (float *const *)c->y;
+    size_t bad = 0;
     for (size_t j = 0; j < count; ++j) {
         pgloss_material mj;
         if (!m)
-            material_at(c, j, norm, &mj);
+            bad += material_at(c, j, norm, &mj) != PGLOSS_OK;
         const pgloss_vec3 vo = {o[0][j], o[1][j], o[2][j]};
         const float uj[3] = {u[0][j], u[1][j], u[2][j]};
         pgloss_sample_record r;
-        (void)pgloss_sample(m ? m : &mj, vo, uj, lobes, &r);
+        bad += pgloss_sample(m ? m : &mj, vo, uj, lobes, &r) != PGLOSS_OK;
         y[0][j] = r.wi.x;
         y[1][j] = r.wi.y;
         y[2][j] = r.wi.z;
@@ -315,6 +328,7 @@ static void sample_reference(const pgloss_material *m, const chunk *c, int norm,
         if (lobe)
             lobe[j] = (unsigned char)r.lobe;
     }
+    return bad;
 }
 
 pgloss_status pgloss_sample_batch(const pgloss_batch_options *options, const pgloss_material *m,
@@ -341,10 +355,12 @@ pgloss_status pgloss_sample_batch(const pgloss_batch_options *options, const pgl
     const size_t size = f64 ? 8 : 4;
     setup s;
     set_up(m, ms, lobes, f64, &s);
-    size_t bad = 0;
+    const inputs a = {size, ms, wo, u, 1};
+    pgloss_status first = PGLOSS_OK;
     chunk c;
     for (size_t base = 0; base < n; base += B) {
         const size_t cnt = n - base < B ? n - base : B;
+        size_t bad;
         unsigned char *lb = lobe ? lobe + base : NULL;
         gather3(wo, size, base, cnt, &c.in[0], c.o);
         gather3(u, size, base, cnt, &c.in[3], c.x);
@@ -358,27 +374,23 @@ pgloss_status pgloss_sample_batch(const pgloss_batch_options *options, const pgl
             const pgloss__vec3_out_d vw = {c.y[0], c.y[1], c.y[2]};
             const pgloss__rgb_out_d vg = {c.y[4], c.y[5], c.y[6]};
             const pgloss__materials_d md = materials_d(&c, s.c.norm);
-            L->sample_d(m ? &s.kd : NULL, m ? NULL : &md, s.c.active, s.c.norm, cnt, vo, c.x[0],
-                        c.x[1], c.x[2], vw, c.y[3], vg, lb);
-            bad = 1; /* the status pass finds the invalid elements */
+            bad = L->sample_d(m ? &s.kd : NULL, m ? NULL : &md, s.c.active, s.c.norm, cnt, vo,
+                              c.x[0], c.x[1], c.x[2], vw, c.y[3], vg, lb);
         } else if (o.precision == PGLOSS_PRECISION_REFERENCE) {
-            sample_reference(m, &c, s.c.norm, lobes, cnt, lb);
-            bad = 1;
+            bad = sample_reference(m, &c, s.c.norm, lobes, cnt, lb);
         } else {
             const pgloss__vec3_f vo = {c.o[0], c.o[1], c.o[2]};
             const pgloss__vec3_out_f vw = {c.y[0], c.y[1], c.y[2]};
             const pgloss__rgb_out_f vg = {c.y[4], c.y[5], c.y[6]};
             const pgloss__materials_f mf = materials_f(&c, s.c.norm);
             s.c.ms = m ? NULL : &mf;
-            bad += L->sample[o.precision == PGLOSS_PRECISION_FAST](&s.c, cnt, vo, c.x[0], c.x[1],
-                                                                    c.x[2], vw, c.y[3], vg, lb);
+            bad = L->sample[o.precision == PGLOSS_PRECISION_FAST](&s.c, cnt, vo, c.x[0], c.x[1],
+                                                                   c.x[2], vw, c.y[3], vg, lb);
         }
         scatter3(wi, size, base, cnt, c.y);
         pgloss__scatter(pdf.ptr, pdf.stride, size, base, cnt, c.y[3]);
         scatter3(weight, size, base, cnt, c.y + 4);
+        first = chunk_done(&a, base, cnt, bad, status, first);
     }
-    if (!bad && !status)
-        return PGLOSS_OK;
-    const inputs a = {size, ms, wo, u, 1};
-    return statuses(&a, n, status);
+    return first;
 }

@@ -347,6 +347,7 @@ PGLOSS__D_FN double clamp_u_d(double u)
 typedef struct chunk_consts_d {
     double fd0[CHUNK_S], fd1[CHUNK_S], fd2[CHUNK_S], spec[CHUNK_S], iax[CHUNK_S], iay[CHUNK_S];
     double ps[CHUNK_S], pd[CHUNK_S], pdf_scale[CHUNK_S], ax[CHUNK_S], ay[CHUNK_S], has[CHUNK_S];
+    double valid[CHUNK_S]; /* the material passes pgloss_material_init's checks */
 } chunk_consts_d;
 
 /* Element j's constants from the chunk's arrays (per_element) or the call's. */
@@ -430,6 +431,7 @@ PGLOSS__D_FN void derive_chunk_d(const mat_ptrs *mp, const unsigned active, cons
          * none for an invalid material, which is black) */
         const double h = kj.pd > 0.0 ? mat_ok : 0.0;
         cc->has[j] = kj.ps > 0.0 ? mat_ok : h;
+        cc->valid[j] = mat_ok;
     }
 }
 
@@ -443,7 +445,7 @@ PGLOSS__D_FN void derive_chunk_d(const mat_ptrs *mp, const unsigned active, cons
  * NaN, wo zero or not finite, material invalid) is drawn as (0, 0, 1) with lobe NONE and
  * zeros, as is one without an active lobe; a valid one below the horizon or with wo·h <= 0
  * keeps its direction and lobe, with pdf and weight 0. */
-PGLOSS__D_FN void sample_d_loop(const pgloss__consts_d *k, const pgloss__materials_d *pa,
+PGLOSS__D_FN size_t sample_d_loop(const pgloss__consts_d *k, const pgloss__materials_d *pa,
                                 const int per_element, const unsigned active, const int norm,
                                 size_t n, pgloss__vec3_d wo, const double *u0s,
                                 const double *u1s, const double *u2s, pgloss__vec3_out_d wi,
@@ -458,6 +460,7 @@ PGLOSS__D_FN void sample_d_loop(const pgloss__consts_d *k, const pgloss__materia
     double wx[CHUNK_S], wy[CHUNK_S], wz[CHUNK_S], lb[CHUNK_S];
     double nx[CHUNK_S], ny[CHUNK_S], nz[CHUNK_S], vi[CHUNK_S];
     double fr[CHUNK_S], fg[CHUNK_S], fb[CHUNK_S], pr[CHUNK_S];
+    size_t bad = 0;
     for (size_t base = 0; base < n; base += CHUNK_S) {
         const size_t m = n - base < CHUNK_S ? n - base : CHUNK_S;
         /* random numbers: 1.0 where none is NaN (as nested selects: GCC 12 vectorises those
@@ -474,6 +477,8 @@ PGLOSS__D_FN void sample_d_loop(const pgloss__consts_d *k, const pgloss__materia
         unit_chunk_d(m, wo.x + base, wo.y + base, wo.z + base, ox, oy, oz, vo);
         if (per_element)
             derive_chunk_d(&mp, active, norm, m, base, &cc);
+        for (size_t j = 0; j < m; ++j) /* the invalid elements, counted for the front end */
+            bad += !(ok[j] > 0.0 && vo[j] > 0.0 && (!per_element || cc.valid[j] > 0.0));
         /* both lobes' directions, one selected by u0 < Ps (Ps is 1 for the specular lobe
          * alone, 0 for the diffuse one alone) */
         for (size_t j = 0; j < m; ++j) {
@@ -521,19 +526,17 @@ PGLOSS__D_FN void sample_d_loop(const pgloss__consts_d *k, const pgloss__materia
             for (size_t j = 0; j < m; ++j)
                 lobe[base + j] = (unsigned char)lb[j];
     }
+    return bad;
 }
 
-void SAMPLE_D_FN(const pgloss__consts_d *k, const pgloss__materials_d *pa, unsigned active,
+size_t SAMPLE_D_FN(const pgloss__consts_d *k, const pgloss__materials_d *pa, unsigned active,
                  int norm, size_t n, pgloss__vec3_d wo, const double *u0s, const double *u1s,
                  const double *u2s, pgloss__vec3_out_d wi, double *pdf, pgloss__rgb_out_d weight,
                  unsigned char *lobe)
 {
 #define LOOP_PE(A, N) sample_d_loop(NULL, pa, 1, A, N, n, wo, u0s, u1s, u2s, wi, pdf, weight, lobe)
 #define LOOP_U(A, N) sample_d_loop(k, NULL, 0, A, N, n, wo, u0s, u1s, u2s, wi, pdf, weight, lobe)
-    if (pa)
-        PGLOSS__BY_LOBES(LOOP_PE, active, norm);
-    else
-        PGLOSS__BY_LOBES(LOOP_U, active, norm);
+    return pa ? PGLOSS__BY_LOBES(LOOP_PE, active, norm) : PGLOSS__BY_LOBES(LOOP_U, active, norm);
 #undef LOOP_PE
 #undef LOOP_U
 }

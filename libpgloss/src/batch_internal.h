@@ -54,9 +54,8 @@ typedef struct pgloss__call_f {
 struct pgloss__consts_d;
 
 /* The loops, over n contiguous elements; f.r == NULL / pdf == NULL: output not wanted. They
- * return the number of invalid elements met (for the float eval_pdf with one material:
- * invalid directions, wo and wi counted separately). The double loops take one of k (NULL)
- * and pa (NULL). */
+ * return the number of invalid elements met (0 exactly when every element is valid). The
+ * double loops take one of k (NULL) and pa (NULL). */
 typedef size_t (*pgloss__eval_pdf_fn)(const pgloss__call_f *c, size_t n, pgloss__vec3_f wo,
                                       pgloss__vec3_f wi, pgloss__rgb_out_f f, float *pdf);
 typedef size_t (*pgloss__sample_fn)(const pgloss__call_f *c, size_t n, pgloss__vec3_f wo,
@@ -67,7 +66,7 @@ typedef size_t (*pgloss__eval_pdf_d_fn)(const struct pgloss__consts_d *,
                                         const pgloss__materials_d *, unsigned, int, size_t,
                                         pgloss__vec3_d, pgloss__vec3_d, pgloss__rgb_out_d,
                                         double *);
-typedef void (*pgloss__sample_d_fn)(const struct pgloss__consts_d *, const pgloss__materials_d *,
+typedef size_t (*pgloss__sample_d_fn)(const struct pgloss__consts_d *, const pgloss__materials_d *,
                                     unsigned, int, size_t, pgloss__vec3_d, const double *,
                                     const double *, const double *, pgloss__vec3_out_d,
                                     double *, pgloss__rgb_out_d, unsigned char *);

@@ -72,7 +72,7 @@ const char *pgloss_isa_name(pgloss_isa isa)
                                           const pgloss__materials_d *, unsigned, int, size_t,    \
                                           pgloss__vec3_d, pgloss__vec3_d, pgloss__rgb_out_d,     \
                                           double *);                                             \
-    void pgloss__sample_batch_d_##isa(const struct pgloss__consts_d *,                           \
+    size_t pgloss__sample_batch_d_##isa(const struct pgloss__consts_d *,                           \
                                       const pgloss__materials_d *, unsigned, int, size_t,        \
                                       pgloss__vec3_d, const double *, const double *,            \
                                       const double *, pgloss__vec3_out_d, double *,              \

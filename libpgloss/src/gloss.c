@@ -76,7 +76,16 @@ pgloss_status pgloss_gloss_distance(double c1, double d1, double c2, double d2, 
     if (!isfinite(v))
         return PGLOSS_ERR_NONFINITE;
     *D = v;
-    return PGLOSS_OK;
+    /* the verdict on the two paints, physical_from_gloss's on c and d */
+    const double c[2] = {c1, c2}, d[2] = {d1, d2};
+    for (int k = 0; k < 2; ++k) {
+        if (c[k] < 0.0)
+            return PGLOSS_ERR_NEGATIVE;
+        if (d[k] >= 1.0)
+            return PGLOSS_ERR_ALPHA;
+    }
+    const double alpha_max = 1.0 - (d1 < d2 ? d1 : d2); /* eq. 8 */
+    return alpha_max > PGLOSS_ALPHA_TRUSTED_MAX ? PGLOSS_WARN_ALPHA_UNTRUSTED : PGLOSS_OK;
 }
 
 pgloss_status pgloss_envelope_contrast(double L, double *c_max)

@@ -177,8 +177,9 @@ static void physical_in(const pgloss_physical_array *p, pgloss_strided *in)
 
 static void perceptual_in(const pgloss_perceptual_array *q, pgloss_strided *in)
 {
-    for (int k = 0; k < 3; ++k)
-        in[k] = in_of(q->lab, k);
+    in[0] = q->L;
+    in[1] = q->a;
+    in[2] = q->b;
     in[3] = q->c;
     in[4] = q->d;
 }
@@ -224,16 +225,16 @@ pgloss_status pgloss_physical_from_perceptual_batch(size_t n, const pgloss_perce
         return PGLOSS_ERR_NULL;
     const int space_ok = pgloss__valid_color_space(space);
     pcall c = {loops()->physical_from_perceptual,
-               {space_ok ? pgloss__from_xyz_matrix(space) : NULL, 0.0}, 5, 6, {{0}}, {{0}}};
+               {space_ok ? pgloss__from_xyz_matrix(space) : NULL,
+                pgloss__valid_normalization(normalization)},
+               5, 6, {{0}}, {{0}}};
     perceptual_in(q, c.in);
     for (int k = 0; k < 3; ++k)
         c.out[k] = out_of(p->rho_d, k);
     c.out[3] = p->rho_s;
     c.out[4] = p->alpha_x;
     c.out[5] = p->alpha_y;
-    pgloss_status st = check(n, &c, -1, 5, space_ok);
-    if (st == PGLOSS_OK && !pgloss__valid_normalization(normalization))
-        st = PGLOSS_ERR_NORMALIZATION;
+    const pgloss_status st = check(n, &c, -1, 5, space_ok);
     return st != PGLOSS_OK ? st : run(n, &c, status);
 }
 
@@ -250,8 +251,9 @@ pgloss_status pgloss_perceptual_from_physical_batch(size_t n, const pgloss_physi
     pcall c = {loops()->perceptual_from_physical,
                {space_ok ? pgloss__to_xyz_matrix(space) : NULL, 0.0}, 6, 5, {{0}}, {{0}}};
     physical_in(p, c.in);
-    for (int k = 0; k < 3; ++k)
-        c.out[k] = out_of(q->lab, k);
+    c.out[0] = q->L;
+    c.out[1] = q->a;
+    c.out[2] = q->b;
     c.out[3] = q->c;
     c.out[4] = q->d;
     const pgloss_status st = check(n, &c, 5, -1, space_ok);

@@ -121,13 +121,19 @@ void LOOP_FN(physical_from_perceptual)(size_t m, const double *const *in, double
 {
     IN(0); IN(1); IN(2); IN(3); IN(4); OUT(0); OUT(1); OUT(2); OUT(3); OUT(4); OUT(5);
     MATRIX_LOCAL(Mk, a->M);
-    double sd[PGLOSS__PCHUNK];
+    double sd[PGLOSS__PCHUNK], pre[PGLOSS__PCHUNK];
     for (size_t i = 0; i < m; ++i) {
-        double pre;
         sd[i] = pgloss__physical_from_perceptual_k(x0[i], x1[i], x2[i], x3[i], x4[i], Mk, &y0[i],
-                                                   &y1[i], &y2[i], &y3[i], &y4[i], &pre);
+                                                   &y1[i], &y2[i], &y3[i], &y4[i], &pre[i]);
         y5[i] = y4[i]; /* isotropic: αy = αx */
     }
+    /* an unknown normalisation: the scalar function's NORMALIZATION, after its input checks */
+    if (!(a->norm_ok > 0.0))
+        for (size_t i = 0; i < m; ++i)
+            if (!(pre[i] < 0.0)) {
+                sd[i] = (double)PGLOSS_ERR_NORMALIZATION;
+                y0[i] = y1[i] = y2[i] = y3[i] = y4[i] = y5[i] = 0.0;
+            }
     statuses_out(m, sd, st);
 }
 

@@ -12,8 +12,8 @@
 #define PGLOSS__PCHUNK 256
 
 /* What a loop takes besides its columns: the working space's XYZ → RGB matrix (row-major;
- * RGB → XYZ for perceptual_from_physical and lab_from_rgb), and for check_physical 1 for a
- * known normalisation, else 0. */
+ * RGB → XYZ for perceptual_from_physical and lab_from_rgb), and for check_physical and
+ * physical_from_perceptual 1 for a known normalisation, else 0. */
 typedef struct pgloss__pargs {
     const double *M;
     double norm_ok;

@@ -124,10 +124,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, size_t size) {
         FZ_CHECK(r == st && st == pgloss_gloss_from_physical(rd, rs, alpha, &gl, &gc, &gd));
         FZ_CHECK(same(o1, gl) && same(o2, gc) && same(o3, gd));
     }
-    if (norm <= PGLOSS_NORM_BOUNDED) {
-        // q's fields as one row (L, a, b, c, d are consecutive doubles)
-        const pgloss_perceptual_array qa{pgloss_strided3_rows(&q.L, sizeof(double)), pgloss_strided_of(&q.c, 0),
-                                         pgloss_strided_of(&q.d, 0)};
+    {
+        // an unknown normalisation (norm 3) too: the scalar function's status, after its input checks
+        const auto in = [](const double *x) { return pgloss_strided_of(x, 0); };
+        const pgloss_perceptual_array qa{in(&q.L), in(&q.a), in(&q.b), in(&q.c), in(&q.d)};
         double rgb[3], s0, ax, ay;
         signed char st = 99;
         const pgloss_physical_array_out po{pgloss_strided3_out_rows(rgb, sizeof(double)), pgloss_strided_out_of(&s0, 0),

@@ -87,7 +87,7 @@ DOUBLE_FUNCS: "OrderedDict[str, Tuple[str, Callable, Callable]]" = OrderedDict([
     ("physical_from_gloss", ("gloss.json", lambda i: lambda: pgloss.physical_from_gloss(
         num(i["L"]), num(i["c"]), num(i["d"]), check=False), _scalar_outputs(["rho_d", "rho_s", "alpha"]))),
     ("gloss_distance", ("gloss.json", lambda i: lambda: pgloss.gloss_distance(
-        num(i["c1"]), num(i["d1"]), num(i["c2"]), num(i["d2"]), check=False), _scalar_outputs(["D"]))),
+        num(i["c1"]), num(i["d1"]), num(i["c2"]), num(i["d2"])), _scalar_outputs(["D"]))),
     ("envelope_contrast", ("gloss.json", lambda i: lambda: pgloss.envelope_contrast(num(i["L"])),
                            _scalar_outputs(["c_max"]))),
     ("match_gloss", ("gloss.json", lambda i: lambda: pgloss.match_gloss(num(i["rho_d"]), num(i["rho_s"]), num(i["L_target"])),

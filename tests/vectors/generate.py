@@ -679,14 +679,25 @@ def ref_physical_from_gloss(B: Backend, H: Hooks, i: Dict[str, Any]) -> Tuple[st
 
 
 def ref_gloss_distance(B: Backend, H: Hooks, i: Dict[str, Any]) -> Tuple[str, Dict[str, Any]]:
+    """Eq. 5 on any finite points; the status is the verdict on the two paints, as
+    physical_from_gloss gives it on c and d (perceptual.h): NEGATIVE (c < 0), ALPHA (d >= 1),
+    paint 1 before paint 2, then the warning for d < 0.8. D is written with NEGATIVE and ALPHA."""
     c1, d1, c2, d2 = i["c1"], i["d1"], i["c2"], i["d2"]
     if not isfin(c1, d1, c2, d2):
         return E_NONFINITE, {"D": 0.0}
+    st = OK
+    for c, d in ((c1, d1), (c2, d2)):
+        if st == OK and c < 0:
+            st = E_NEGATIVE
+        if st == OK and d >= 1:
+            st = E_ALPHA
+    if st == OK and (d1 < 0.8 or d2 < 0.8):
+        st = WARN_ALPHA
     dc = _in(B, H, "c1", c1) - _in(B, H, "c2", c2)
     dd = B.num(D_WEIGHT_STR) * (_in(B, H, "d1", d1) - _in(B, H, "d2", d2))
     if B.kind == "fl":
-        return OK, {"D": math.hypot(dc, dd)}
-    return OK, {"D": B.sqrt(dc * dc + dd * dd)}
+        return st, {"D": math.hypot(dc, dd)}
+    return st, {"D": B.sqrt(dc * dc + dd * dd)}
 
 
 def ref_envelope_contrast(B: Backend, H: Hooks, i: Dict[str, Any]) -> Tuple[str, Dict[str, Any]]:
@@ -1333,11 +1344,18 @@ def gen_gloss() -> Dict[str, Any]:
                          (0.047, 0.93, ["fig11"]), (0.167, 0.93, ["fig11"]), (0.057, 0.96, ["fig12"])]:
         cl.add(F["gd"], ref_gloss_distance, {"c1": 0.087, "d1": 0.93, "c2": c2, "d2": d2},
                ["regular", "paper"] + tags, expect_status=OK)
-    for c1, d1, c2, d2, tags in [(0.0, 0.0, 0.0, 0.0, ["zero"]), (0.1, 0.9, 0.1, 0.9 + 1e-15, ["tiny"]),
-                                 (-1.0, 2.0, 3.0, -4.0, ["outside_space"]),
-                                 (1e200, 0.0, -1e200, 0.0, ["extreme"]), (0.0, 1e200, 0.0, -1e200, ["extreme"])]:
+    for c1, d1, c2, d2, tags, st in [(0.0, 0.9, 0.0, 0.9, ["zero"], OK), (0.1, 0.9, 0.1, 0.9 + 1e-15, ["tiny"], OK),
+                                     (0.0, 0.0, 0.0, 0.0, ["zero", "untrusted"], WARN_ALPHA),
+                                     (0.05, 0.95, 0.05, 0.5, ["untrusted"], WARN_ALPHA),
+                                     (-1.0, 2.0, 3.0, -4.0, ["outside_space"], E_NEGATIVE),
+                                     (0.05, 1.5, 0.05, 0.95, ["outside_space"], E_ALPHA),
+                                     (0.05, 0.95, -0.01, 0.95, ["outside_space"], E_NEGATIVE),
+                                     (0.05, 0.95, 0.05, 1.0, ["outside_space"], E_ALPHA),
+                                     (0.05, 1.0, -0.01, 0.95, ["outside_space"], E_ALPHA),
+                                     (1e200, 0.9, -1e200, 0.9, ["extreme"], E_NEGATIVE),
+                                     (0.0, 1e200, 0.0, -1e200, ["extreme"], E_ALPHA)]:
         cl.add(F["gd"], ref_gloss_distance, {"c1": c1, "d1": d1, "c2": c2, "d2": d2}, ["regular"] + tags,
-               expect_status=OK)
+               expect_status=st)
     for _ in range(25):
         cl.add(F["gd"], ref_gloss_distance, {"c1": 0.2 * rng.random(), "d1": 0.8 + 0.2 * rng.random(),
                                              "c2": 0.2 * rng.random(), "d2": 0.8 + 0.2 * rng.random()},

@@ -570,11 +570,10 @@ class Perceptual(_PaintShape):
         """Distinctness-of-image gloss (eq. 3)."""
         return self._v[4]
 
-    def _core_arrays(self) -> Tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """The paints as the core's batches read them (``pgloss_perceptual_array``): L*, a*, b*
-        as one (3, n) array (a copy: the core reads them with one stride), c and d as (n,) views."""
-        lab = np.stack([_flat(x, self.shape) for x in self._v[0:3]])
-        return lab, _flat(self._v[3], self.shape), _flat(self._v[4], self.shape)
+    def _core_arrays(self) -> Tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """The paints as the core's batches read them (``pgloss_perceptual_array``): L*, a*, b*,
+        c and d as (n,) views, each of its own strides (no copy)."""
+        return tuple(_flat(x, self.shape) for x in self._v[0:5])  # type: ignore[return-value]
 
     def check(self, space: Union[ColorSpace, int] = ColorSpace.LINEAR_REC709) -> Any:
         """Is this inside the model? First reason it is not (``pgloss_check_perceptual``:
@@ -829,7 +828,7 @@ def perceptual_from_physical(physical: Union[Physical, ArrayLike],
     shape, n = physical.shape, physical.size
     block = np.zeros((5, n))  # L*, a*, b*, c, d; 0 if unwritten (an error of the whole call)
     st = np.empty(n, np.int8)
-    _core.perceptual_from_physical(p, sp, block[0:3], block[3], block[4], st)
+    _core.perceptual_from_physical(p, sp, *block, st)
     if check:
         checked = np.empty(n, np.int8)
         _core.check_physical(p, checked)

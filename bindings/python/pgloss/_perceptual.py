@@ -12,14 +12,16 @@ import numpy as np
 
 from . import _core
 from ._inputs import ArrayLike, _broadcast, _channels, _color_space, _float, _out_dtype, _shape_out
-from ._status import ColorSpace, Normalization, _check, _errors, _finish, _verdict
+from ._status import ColorSpace, Normalization, Status, _check, _errors, _finish, _verdict
 
 
 def _vectorised(function: str, names: Sequence[str], values: Sequence[Any], n_out: int, errors: str = "raise",
-                check: Optional[Callable[..., List[np.ndarray]]] = None):
+                check: Optional[Callable[..., List[np.ndarray]]] = None,
+                ignore: Sequence[int] = ()):
     """Runs _core.<function> element-wise; returns the outputs (arrays or floats), and with
     errors="status" the statuses too. ``check(*flat_inputs)``: the statuses of the core's
-    checks of the same elements, merged after the function's own (_verdict)."""
+    checks of the same elements, merged after the function's own (_verdict). ``ignore``:
+    statuses of the function's own taken as OK (its outputs are written with them)."""
     want_status = _errors(function, errors)
     flat, shape, dtype = _broadcast(function, names, values)
     n = flat[0].size
@@ -28,6 +30,8 @@ def _vectorised(function: str, names: Sequence[str], values: Sequence[Any], n_ou
     res, st = np.zeros((n_out, n)), np.empty(n, np.int8)
     getattr(_core, function)(*flat, *res, st)
     outs = tuple(_shape_out(function, r, shape, dtype) for r in res)
+    if ignore:
+        st = np.where(np.isin(st, ignore), np.int8(0), st)
     if check is not None:
         st = _verdict(st, *check(*flat))
     return _finish(function, want_status, outs[0] if n_out == 1 else outs, st, shape, stacklevel=5)
@@ -42,25 +46,10 @@ def _grey_physical_check(rho_d: np.ndarray, rho_s: np.ndarray, alpha: np.ndarray
 
 def _grey_perceptual_check(L: np.ndarray, c: np.ndarray, d: np.ndarray) -> List[np.ndarray]:
     """The core's verdict on grey paints (L*, 0, 0, c, d): pgloss_check_perceptual (ENVELOPE)."""
-    lab = np.zeros((3, L.size))
-    lab[0] = L
+    zero = np.broadcast_to(0.0, L.shape)
     st = np.empty(L.size, np.int8)
-    _core.check_perceptual(lab, c, d, int(ColorSpace.LINEAR_REC709), st)
+    _core.check_perceptual(L, zero, zero, c, d, int(ColorSpace.LINEAR_REC709), st)
     return [st]
-
-
-def _gloss_pairs_check(c1: np.ndarray, d1: np.ndarray, c2: np.ndarray, d2: np.ndarray) -> List[np.ndarray]:
-    """The core's verdict on gloss pairs (c, d), which is physical_from_gloss's on c and d:
-    NEGATIVE (c < 0), ALPHA (d ≥ 1), the warning for d < 0.8. Its lightness check is passed
-    with L* = 0 (ρd = 0), a lightness the pair's verdict does not depend on."""
-    n = c1.size
-    L, out = np.zeros(n), np.empty((3, n))
-    sts = []
-    for c, d in ((c1, d1), (c2, d2)):
-        st = np.empty(n, np.int8)
-        _core.physical_from_gloss(L, c, d, *out, st)
-        sts.append(st)
-    return sts
 
 
 def lightness_from_luminance(Y: ArrayLike, *, errors: str = "raise") -> Any:
@@ -128,16 +117,16 @@ def gloss_distance(c1: ArrayLike, d1: ArrayLike, c2: ArrayLike, d2: ArrayLike, *
     """Gloss difference D = √((c1 − c2)² + (1.78 (d1 − d2))²) (paper eq. 5) between the paints
     (c1, d1) and (c2, d2).
 
-    Raises NONFINITE and, with ``check=True`` (the default: the core's verdict on each gloss
-    pair, as :func:`physical_from_gloss` gives it), NEGATIVE (c < 0) and ALPHA (d ≥ 1: no lobe);
-    warns for d < 0.8. ``check=False``: eq. 5 on any plane point (``pgloss_gloss_distance``),
-    e.g. between the unclipped points of :func:`isogloss_contour`.
+    Raises NONFINITE and, with ``check=True`` (the default: ``pgloss_gloss_distance``'s verdict
+    on the two paints, the one :func:`physical_from_gloss` gives on c and d), NEGATIVE (c < 0)
+    and ALPHA (d ≥ 1: no lobe), paint 1 first; warns for d < 0.8. ``check=False``: eq. 5 on any
+    plane point, NONFINITE only, e.g. between the unclipped points of :func:`isogloss_contour`.
 
     >>> round(gloss_distance(0.087, 0.93, 0.127, 0.93), 12)
     0.04
     """
     return _vectorised("gloss_distance", ("c1", "d1", "c2", "d2"), (c1, d1, c2, d2), 1, errors,
-                       _gloss_pairs_check if check else None)
+                       ignore=() if check else (Status.ERR_NEGATIVE, Status.ERR_ALPHA, Status.WARN_ALPHA_UNTRUSTED))
 
 
 def envelope_contrast(L: ArrayLike, *, errors: str = "raise") -> Any:

@@ -154,6 +154,22 @@ struct Physicals {
     }
 };
 
+// Five-parameter descriptions per element (pgloss_perceptual_array): L, a, b, c, d, each (n,)
+// float64 of its own strides.
+struct Perceptuals {
+    std::array<In1, 5> f;
+    pgloss_perceptual_array at(size_t base) const {
+        return pgloss_perceptual_array{f[0].at(base), f[1].at(base), f[2].at(base), f[3].at(base), f[4].at(base)};
+    }
+};
+
+Perceptuals perceptuals(const std::array<py::array, 5> &a, size_t n) {
+    const char *names[5] = {"L", "a", "b", "c", "d"};
+    Perceptuals q;
+    for (size_t k = 0; k < 5; ++k) q.f[k] = in1(a[k], n, py::dtype::of<double>(), names[k]);
+    return q;
+}
+
 Physicals physicals(const py::tuple &t, size_t n, const py::dtype &dt) {
     if (t.size() != 5) throw std::invalid_argument("pgloss._core: materials = (rho_d, rho_s, alpha_x, alpha_y, normalization)");
     return Physicals{in3(t[0].cast<py::array>(), n, dt, "rho_d"), in1(t[1].cast<py::array>(), n, dt, "rho_s"),
@@ -562,7 +578,7 @@ PYBIND11_MODULE(_core, mod) {
     mod.def("lab_from_rgb", colour_conversion(pgloss_lab_from_rgb_batch), py::arg("rgb"), py::arg("space"),
             py::arg("lab"), py::arg("status"));
     // Paints: physical = (rho_d (3, n), rho_s, alpha_x, alpha_y, normalization) as for eval_pdf;
-    // perceptual = (lab (3, n), c, d).
+    // perceptual = L, a, b, c, d, each (n,).
     mod.def("check_physical", [](py::tuple p, A st) {
         const size_t n = length(st);
         const Physicals ps = physicals(p, n, f64());
@@ -571,39 +587,39 @@ PYBIND11_MODULE(_core, mod) {
             return (int)pgloss_check_physical_batch(m, &a, s);
         });
     }, py::arg("physical"), py::arg("status"));
-    mod.def("check_perceptual", [](A lab, A c, A d, int space, A st) {
-        const size_t n = length(st);
-        const In3 x = in3(lab, n, f64(), "lab");
-        const In1 xc = in1(c, n, f64(), "c"), xd = in1(d, n, f64(), "d");
-        bmap(st, [&](size_t b, size_t m, signed char *s) {
-            const pgloss_perceptual_array q{x.at(b), xc.at(b), xd.at(b)};
-            return (int)pgloss_check_perceptual_batch(m, &q, space_of(space), s);
+    mod.def("check_perceptual", [](A L, A a, A b, A c, A d, int space, A st) {
+        const Perceptuals q = perceptuals({L, a, b, c, d}, length(st));
+        bmap(st, [&](size_t k, size_t m, signed char *s) {
+            const pgloss_perceptual_array qa = q.at(k);
+            return (int)pgloss_check_perceptual_batch(m, &qa, space_of(space), s);
         });
-    }, py::arg("lab"), py::arg("c"), py::arg("d"), py::arg("space"), py::arg("status"));
+    }, py::arg("L"), py::arg("a"), py::arg("b"), py::arg("c"), py::arg("d"), py::arg("space"), py::arg("status"));
     // Outputs rho_d (3, n), rho_s, alpha (= alpha_x = alpha_y: eq. 8 is isotropic; alpha_y is not written).
-    mod.def("physical_from_perceptual", [](A lab, A c, A d, int norm, int space, A rd, A rs, A al, A st) {
+    mod.def("physical_from_perceptual", [](A L, A a, A b, A c, A d, int norm, int space, A rd, A rs, A al, A st) {
         const size_t n = length(st);
-        const In3 x = in3(lab, n, f64(), "lab");
-        const In1 xc = in1(c, n, f64(), "c"), xd = in1(d, n, f64(), "d");
+        const Perceptuals q = perceptuals({L, a, b, c, d}, n);
         const Out3 y = out3(rd, n, f64(), "rho_d");
         const Out1 ys = out1(rs, n, f64(), "rho_s"), ya = out1(al, n, f64(), "alpha");
-        bmap(st, [&](size_t b, size_t m, signed char *s) {
-            const pgloss_perceptual_array q{x.at(b), xc.at(b), xd.at(b)};
-            const pgloss_physical_array_out p{y.at(b), ys.at(b), ya.at(b), pgloss_strided_out{nullptr, 0}};
-            return (int)pgloss_physical_from_perceptual_batch(m, &q, enum_of<pgloss_normalization>(norm), space_of(space),
+        bmap(st, [&](size_t k, size_t m, signed char *s) {
+            const pgloss_perceptual_array qa = q.at(k);
+            const pgloss_physical_array_out p{y.at(k), ys.at(k), ya.at(k), pgloss_strided_out{nullptr, 0}};
+            return (int)pgloss_physical_from_perceptual_batch(m, &qa, enum_of<pgloss_normalization>(norm), space_of(space),
                                                               &p, s);
         });
-    }, py::arg("lab"), py::arg("c"), py::arg("d"), py::arg("normalization"), py::arg("space"), py::arg("rho_d"),
-       py::arg("rho_s"), py::arg("alpha"), py::arg("status"));
-    mod.def("perceptual_from_physical", [](py::tuple p, int space, A lab, A c, A d, A st) {
+    }, py::arg("L"), py::arg("a"), py::arg("b"), py::arg("c"), py::arg("d"), py::arg("normalization"), py::arg("space"),
+       py::arg("rho_d"), py::arg("rho_s"), py::arg("alpha"), py::arg("status"));
+    mod.def("perceptual_from_physical", [](py::tuple p, int space, A L, A a, A b, A c, A d, A st) {
         const size_t n = length(st);
         const Physicals ps = physicals(p, n, f64());
-        const Out3 y = out3(lab, n, f64(), "lab");
-        const Out1 yc = out1(c, n, f64(), "c"), yd = out1(d, n, f64(), "d");
-        bmap(st, [&](size_t b, size_t m, signed char *s) {
-            const pgloss_physical_array a = ps.at(b);
-            const pgloss_perceptual_array_out q{y.at(b), yc.at(b), yd.at(b)};
-            return (int)pgloss_perceptual_from_physical_batch(m, &a, space_of(space), &q, s);
+        std::array<Out1, 5> y;
+        const char *names[5] = {"L", "a", "b", "c", "d"};
+        const A outs[5] = {L, a, b, c, d};
+        for (size_t k = 0; k < 5; ++k) y[k] = out1(outs[k], n, f64(), names[k]);
+        bmap(st, [&](size_t k, size_t m, signed char *s) {
+            const pgloss_physical_array pa = ps.at(k);
+            const pgloss_perceptual_array_out q{y[0].at(k), y[1].at(k), y[2].at(k), y[3].at(k), y[4].at(k)};
+            return (int)pgloss_perceptual_from_physical_batch(m, &pa, space_of(space), &q, s);
         });
-    }, py::arg("physical"), py::arg("space"), py::arg("lab"), py::arg("c"), py::arg("d"), py::arg("status"));
+    }, py::arg("physical"), py::arg("space"), py::arg("L"), py::arg("a"), py::arg("b"), py::arg("c"), py::arg("d"),
+       py::arg("status"));
 }

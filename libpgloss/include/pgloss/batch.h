@@ -14,11 +14,14 @@
  *
  * Semantics are those of the scalar functions of pgloss/brdf.h, element by element
  * (normalisation of inputs, one-sided BRDF, rejected samples, lobe masks), with element j's
- * per-element material built as pgloss_material_init builds it (the same checks, NONFINITE
- * — NaN, Inf, |v| > FLT_MAX —, NEGATIVE, ALPHA in that order, the same α floor and
- * derived constants; energy is not checked). An element whose material or inputs are invalid
- * gets that status and 0 outputs (a sample's wi = (0, 0, 1), lobe NONE); the others are
- * computed normally.
+ * per-element material checked as pgloss_material_init checks it (NONFINITE — NaN, Inf,
+ * |v| > FLT_MAX —, NEGATIVE, ALPHA in that order; energy is not checked) and derived as it
+ * derives its constants (the α floor, 1/α, eq. 2's constant, the lobe selection) in the
+ * call's scalar type: float32 parameters give pgloss_material_init's material bit for bit,
+ * float64 ones are used as they are, not rounded to float (so that a float64 call is the
+ * double reference on double parameters; one pgloss_material in a float64 call is widened
+ * exactly). An element whose material or inputs are invalid gets that status and 0 outputs
+ * (a sample's wi = (0, 0, 1), lobe NONE); the others are computed normally.
  *
  * Returned status: PGLOSS_OK if every element is valid, else the status of the first invalid
  * element (the lowest index). Errors of the whole call (nothing written, status included):
@@ -121,8 +124,8 @@ typedef struct pgloss_physical_array {
 /* How the BRDF batches compute float32 arrays (errors: docs/kernels.md and BENCHMARKS.md):
  *   FLOAT      the float lobe of pgloss/inline.h: IEEE division and square root, an exp within
  *              2 ulp (the default);
- *   FAST       the same lobe with reciprocal and rsqrt estimates refined once and a degree-5
- *              exp2 (AVX2 and AVX-512, one material per call); FLOAT elsewhere;
+ *   FAST       the same lobe with reciprocal and rsqrt estimates refined by Newton steps, a
+ *              degree-5 exp2 and multiply-adds fused where the ISA has FMA;
  *   REFERENCE  the scalar functions (double arithmetic) element by element.
  * float64 arrays run the double lobe in every tier. */
 typedef enum pgloss_precision {

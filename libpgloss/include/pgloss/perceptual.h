@@ -78,7 +78,12 @@ PGLOSS_API pgloss_status pgloss_gloss_from_physical(double rho_d, double rho_s, 
 PGLOSS_API pgloss_status pgloss_physical_from_gloss(double L, double c, double d,
                                          double *rho_d, double *rho_s, double *alpha);
 
-/* Eq. 5. Errors: NULL, NONFINITE. */
+/* Eq. 5 between the paints (c1, d1) and (c2, d2). The status is the verdict on the two paints,
+ * the one pgloss_physical_from_gloss gives on c and d: NEGATIVE (c < 0), ALPHA (d >= 1: α =
+ * 1 − d <= 0, no lobe), paint 1 before paint 2, then the warning ALPHA_UNTRUSTED (d < 0.8).
+ * D is written for any finite points, with NEGATIVE and ALPHA too (a distance in the plane,
+ * e.g. between the unclipped points of pgloss_isogloss_contour). Errors: NULL, NONFINITE
+ * (an input, or D beyond DBL_MAX: D = 0), NEGATIVE, ALPHA. */
 PGLOSS_API pgloss_status pgloss_gloss_distance(double c1, double d1, double c2, double d2, double *D);
 
 /* Envelope of gloss space (Fig. 10): the largest c at lightness L under energy conservation

@@ -21,9 +21,9 @@
  * first warning (PGLOSS_WARN_ALPHA_UNTRUSTED) if any, else PGLOSS_OK. So a return >= 0 means
  * every output is usable. Errors of the whole call (nothing written, status included), with
  * n > 0: a required pointer that is NULL (PGLOSS_ERR_NULL); an unknown colour space, or an
- * output with stride 0 and n > 1 (PGLOSS_ERR_ARGUMENT); physical_from_perceptual's unknown
- * normalization (PGLOSS_ERR_NORMALIZATION). check_physical takes the normalization per
- * element, in the scalar function's order. n == 0 is OK.
+ * output with stride 0 and n > 1 (PGLOSS_ERR_ARGUMENT). An unknown normalization
+ * (check_physical, physical_from_perceptual) is each element's status, in the scalar
+ * function's order (after the checks of its inputs that come first there). n == 0 is OK.
  *
  * An output may be the very same array as an input (in place, element by element); other
  * overlaps are not allowed.
@@ -39,15 +39,13 @@
 extern "C" {
 #endif
 
-/* n five-parameter descriptions (pgloss_perceptual, Fig. 13): (L*, a*, b*) sharing a stride,
- * c and d; read / written. */
+/* n five-parameter descriptions (pgloss_perceptual, Fig. 13), each field an array of its own
+ * (its own stride: a field of one value for every element has stride 0); read / written. */
 typedef struct pgloss_perceptual_array {
-    pgloss_strided3 lab;
-    pgloss_strided c, d;
+    pgloss_strided L, a, b, c, d;
 } pgloss_perceptual_array;
 typedef struct pgloss_perceptual_array_out {
-    pgloss_strided3_out lab;
-    pgloss_strided_out c, d;
+    pgloss_strided_out L, a, b, c, d;
 } pgloss_perceptual_array_out;
 /* n physical parameter sets, written (pgloss_physical_array is the input form); alpha_y.ptr
  * NULL: not written. */
