@@ -9,7 +9,7 @@
  *
  *   pgloss_bridge_tables OUT.inc          write the tables
  *   pgloss_bridge_tables --check OUT.inc  exit 1 if OUT.inc differs from what would be written
- *   pgloss_bridge_tables --report         print the residuals and the interpolation errors
+ *   pgloss_bridge_tables --report         print the interpolation errors, the residuals, the control
  *
  * The scene is examples/tracer/scenes/stimulus.scene (numbers below, checked against the file
  * when it is given with --scene). Deterministic: no random numbers, fixed loop order, so the
@@ -20,6 +20,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+
+#include "bridge_meter.h"
+#include "pgloss/pgloss.h"
 
 static void stamp(const char *what)
 {
@@ -437,18 +440,24 @@ static double lobe_DG(int m, double mi, double mo, double t2, double a)
 }
 
 /* Ring r of the albedo quadrature over the half vector (96 rings, log-spaced in θh from a 1e-4
- * cap to π/2, 48 cells over a half circle): its centre cosine and sine, cell area, tan²θh. */
+ * cap to π/2, 48 cells over a half circle): its centre cosine and sine, cell area, tan²θh;
+ * and the cells' cos φ. Computed once (hring_init). */
 #define HR 96
 #define HA 48
-static void hring(int r, double *ch, double *sh, double *area, double *t2)
+static struct { double ch, sh, area, t2; } HRING[HR];
+static double HCOS[HA];
+static void hring_init(void)
 {
     const double q = pow(0.5 * PI / 1e-4, 1.0 / (HR - 1));
-    double ta = r == 0 ? 0 : 1e-4 * pow(q, r - 1), tb = r == HR - 1 ? 0.5 * PI : 1e-4 * pow(q, r);
-    double ca = cos(ta), cb = cos(tb);
-    *ch = 0.5 * (ca + cb);
-    *sh = sqrt(1 - *ch * *ch);
-    *area = (ca - cb) * PI / HA;
-    *t2 = (1 - *ch * *ch) / (*ch * *ch);
+    for (int r = 0; r < HR; ++r) {
+        double ta = r == 0 ? 0 : 1e-4 * pow(q, r - 1), tb = r == HR - 1 ? 0.5 * PI : 1e-4 * pow(q, r);
+        double ca = cos(ta), cb = cos(tb), ch = 0.5 * (ca + cb);
+        HRING[r].ch = ch;
+        HRING[r].sh = sqrt(1 - ch * ch);
+        HRING[r].area = (ca - cb) * PI / HA;
+        HRING[r].t2 = (1 - ch * ch) / (ch * ch);
+    }
+    for (int k = 0; k < HA; ++k) HCOS[k] = cos(PI * (k + 0.5) / HA);
 }
 
 /* Integral over the half vector h of g(h) for a view at cosine mu in the local frame:
@@ -459,11 +468,9 @@ static double albedo(int m, double mu, double a, int kind, double eta)
 {
     double so = sqrt(1 - mu * mu), sum = 0;
     for (int r = 0; r < HR; ++r) {
-        double ch, sh, area, t2;
-        hring(r, &ch, &sh, &area, &t2);
+        const double ch = HRING[r].ch, sh = HRING[r].sh, area = HRING[r].area, t2 = HRING[r].t2;
         for (int k = 0; k < HA; ++k) {
-            double ph = PI * (k + 0.5) / HA;
-            double oh = so * sh * cos(ph) + mu * ch;
+            double oh = so * sh * HCOS[k] + mu * ch;
             if (oh <= 0) continue;
             double mi = 2 * oh * ch - mu;
             if (mi <= 0) continue;
@@ -478,19 +485,22 @@ static double albedo(int m, double mu, double a, int kind, double eta)
 
 /* Mitsuba's rough-interface transmittance t(μ) (eval_transmittance) and reflectance
  * (eval_reflectance), by the same integral over microfacet normals m: the visible normals
- * D(m) G1(wi, m) (wi·m)/μ, times (1 − F) G1(refracted) or F G1(reflected). */
+ * D(m) G1(wi, m) (wi·m)/μ dω_m (no cos θm: they integrate to 1), times (1 − F) G1(refracted)
+ * or F G1(reflected). Divided by the rings' own sum of the visible normals, which cancels
+ * their midpoint rule's bias (−0.34 % at every α) and meets Mitsuba's Gauss-Legendre values
+ * to 1e-4 (docs/bridge.md). */
 static double rough_interface(int m, double mu, double a, double eta, int transmit)
 {
-    double so = sqrt(1 - mu * mu), sum = 0;
+    const double g1i = m == M_RP_BECKMANN ? beck_G1(mu, a) : 1 / (1 + ggx_lambda(mu, a));
+    double so = sqrt(1 - mu * mu), sum = 0, norm = 0;
     for (int r = 0; r < HR; ++r) {
-        double ch, sh, area, t2;
-        hring(r, &ch, &sh, &area, &t2);
+        const double ch = HRING[r].ch, sh = HRING[r].sh, area = HRING[r].area, t2 = HRING[r].t2;
+        const double D = m == M_RP_BECKMANN ? beck_D(t2, a) : ggx_D(t2, a);
         for (int k = 0; k < HA; ++k) {
-            double ph = PI * (k + 0.5) / HA;
-            double c = so * sh * cos(ph) + mu * ch; /* wi·m */
+            double c = so * sh * HCOS[k] + mu * ch; /* wi·m */
             if (c <= 0) continue;
-            double D = m == M_RP_BECKMANN ? beck_D(t2, a) : ggx_D(t2, a);
-            double g1i = m == M_RP_BECKMANN ? beck_G1(mu, a) : 1 / (1 + ggx_lambda(mu, a));
+            const double vis = 2 * D * g1i * c / mu * area; /* the visible normals' measure */
+            norm += vis;
             double F = fresnel(c, eta), vz, val;
             if (transmit) {
                 double ct2 = 1 - (1 - c * c) / (eta * eta);
@@ -505,10 +515,10 @@ static double rough_interface(int m, double mu, double a, double eta, int transm
             }
             /* |v| = 1 for both the reflected and the refracted direction: |vz| is its cosine. */
             double g1o = m == M_RP_BECKMANN ? beck_G1(fabs(vz), a) : 1 / (1 + ggx_lambda(fabs(vz), a));
-            sum += 2 * D * g1i * c / mu * val * g1o * ch * area;
+            sum += vis * val * g1o;
         }
     }
-    return sum;
+    return sum / norm;
 }
 
 /* ---- Images over the sphere's pixels ---- */
@@ -593,94 +603,57 @@ static void image_spec(double *img, int m, double a, double eta, const double *v
 }
 
 /* ---- The gloss meter of the bridge: Ward (ρd, ρs, α) by luminance least squares ---- */
-#define NW 56
-#define W_AMIN 0.004
-#define W_AMAX 0.8
-static double *WIMG; /* NW × NPIX */
+/* The meter itself (pgloss__meter_*) is libpgloss/src/bridge_meter.h, shared with the library. */
+#define NW PGLOSS__METER_NW
+#define NP PGLOSS__METER_NP
+static double w_alpha(int k)
+{
+    return PGLOSS__METER_AMIN * pow(PGLOSS__METER_AMAX / PGLOSS__METER_AMIN, (double)k / (NW - 1));
+}
+static double *WIMG; /* NW × NPIX: the Ward node images */
 static double *DIMG; /* NPIX: Lambert */
-static double w_alpha(int k) { return W_AMIN * pow(W_AMAX / W_AMIN, (double)k / (NW - 1)); }
+static double GRAM[NW * 7], DW[NW];
+static pgloss__meter_basis BASIS;
 
-typedef struct { double rho_d, rho_s, alpha, residual; } reading;
+static double inner(const double *x, const double *y)
+{
+    double s = 0;
+    for (int p = 0; p < NPIX; ++p) s += x[p] * y[p];
+    return s;
+}
 
-/* The meter works on inner products: for the Ward image at any α (Catmull-Rom in log α over the
- * node images) ⟨X, W(α)⟩, ⟨D, W(α)⟩ and ⟨W(α), W(α)⟩ are sums over four nodes of the nodes'
- * products, precomputed once (GRAM: node × node within 3, DW: ⟨D, W_k⟩, DD: ⟨D, D⟩). */
-static double GRAM[NW][7], DW[NW], DD;
 static void meter_init(void)
 {
-    DD = 0;
-    for (int p = 0; p < NPIX; ++p) DD += DIMG[p] * DIMG[p];
     for (int k = 0; k < NW; ++k) {
-        DW[k] = 0;
-        for (int p = 0; p < NPIX; ++p) DW[k] += DIMG[p] * WIMG[(size_t)k * NPIX + p];
-        for (int o = -3; o <= 3; ++o) {
-            int l = k + o;
-            double s = 0;
-            if (l >= 0 && l < NW)
-                for (int p = 0; p < NPIX; ++p) s += WIMG[(size_t)k * NPIX + p] * WIMG[(size_t)l * NPIX + p];
-            GRAM[k][o + 3] = s;
-        }
+        DW[k] = inner(DIMG, &WIMG[(size_t)k * NPIX]);
+        for (int o = -3; o <= 3; ++o)
+            GRAM[k * 7 + o + 3] = k + o >= 0 && k + o < NW ? inner(&WIMG[(size_t)k * NPIX], &WIMG[(size_t)(k + o) * NPIX]) : 0;
     }
+    BASIS.gram = GRAM;
+    BASIS.dw = DW;
+    BASIS.dd = inner(DIMG, DIMG);
 }
 
-static void cr_nodes(double la, int idx[4], double w[4])
+/* The products of a target's diffuse and specular images (bridge_meter.h's layout). */
+static void products(const double *Dt, const double *St, double *P)
 {
-    double f = (la - log(W_AMIN)) / (log(W_AMAX / W_AMIN) / (NW - 1));
-    int i = (int)floor(f);
-    if (i < 0) i = 0;
-    if (i > NW - 2) i = NW - 2;
-    double t = f - i, t2 = t * t, t3 = t2 * t;
-    w[0] = -0.5 * t3 + t2 - 0.5 * t; w[1] = 1.5 * t3 - 2.5 * t2 + 1;
-    w[2] = -1.5 * t3 + 2 * t2 + 0.5 * t; w[3] = 0.5 * t3 - 0.5 * t2;
-    idx[0] = i > 0 ? i - 1 : 0; idx[1] = i; idx[2] = i + 1; idx[3] = i + 2 < NW ? i + 2 : NW - 1;
+    for (int k = 0; k < NW; ++k) {
+        P[k] = inner(Dt, &WIMG[(size_t)k * NPIX]);
+        P[NW + k] = inner(St, &WIMG[(size_t)k * NPIX]);
+    }
+    P[2 * NW] = inner(Dt, DIMG);
+    P[2 * NW + 1] = inner(St, DIMG);
+    P[2 * NW + 2] = inner(Dt, Dt);
+    P[2 * NW + 3] = inner(Dt, St);
+    P[2 * NW + 4] = inner(St, St);
 }
 
-/* Least squares of X on (D, W(α)) from the products; returns the residual, writes ρd, ρs. */
-static double ls_at(double la, const double *XW, double XD, double XX, double *rd, double *rs)
+/* The reading of an image X (NPIX). */
+static void meter(const double *X, double out[4])
 {
-    int idx[4];
-    double w[4], xw = 0, dw = 0, ww = 0;
-    cr_nodes(la, idx, w);
-    for (int a = 0; a < 4; ++a) {
-        xw += w[a] * XW[idx[a]];
-        dw += w[a] * DW[idx[a]];
-        for (int b = 0; b < 4; ++b) ww += w[a] * w[b] * GRAM[idx[a]][idx[b] - idx[a] + 3];
-    }
-    double det = DD * ww - dw * dw;
-    *rd = (XD * ww - xw * dw) / det;
-    *rs = (xw * DD - XD * dw) / det;
-    return XX - (*rd) * XD - (*rs) * xw;
-}
-
-static reading meter(const double *X)
-{
-    double XW[NW], XD = 0, XX = 0, best = 1e300, rd, rs;
-    for (int p = 0; p < NPIX; ++p) { XD += X[p] * DIMG[p]; XX += X[p] * X[p]; }
-    for (int k = 0; k < NW; ++k) {
-        double s = 0;
-        const double *W = &WIMG[(size_t)k * NPIX];
-        for (int p = 0; p < NPIX; ++p) s += X[p] * W[p];
-        XW[k] = s;
-    }
-    int kb = 0;
-    for (int k = 0; k < NW; ++k) {
-        double r = ls_at(log(w_alpha(k)), XW, XD, XX, &rd, &rs);
-        if (r < best) { best = r; kb = k; }
-    }
-    double h = log(W_AMAX / W_AMIN) / (NW - 1);
-    double lo = fmax(log(w_alpha(kb)) - h, log(W_AMIN)), hi = fmin(log(w_alpha(kb)) + h, log(W_AMAX));
-    const double g = 0.6180339887498949;
-    double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
-    double f1 = ls_at(x1, XW, XD, XX, &rd, &rs), f2 = ls_at(x2, XW, XD, XX, &rd, &rs);
-    for (int it = 0; it < 60; ++it) {
-        if (f1 < f2) { hi = x2; x2 = x1; f2 = f1; x1 = hi - g * (hi - lo); f1 = ls_at(x1, XW, XD, XX, &rd, &rs); }
-        else { lo = x1; x1 = x2; f1 = f2; x2 = lo + g * (hi - lo); f2 = ls_at(x2, XW, XD, XX, &rd, &rs); }
-    }
-    reading o;
-    double res = ls_at(0.5 * (lo + hi), XW, XD, XX, &o.rho_d, &o.rho_s);
-    o.alpha = exp(0.5 * (lo + hi));
-    o.residual = sqrt(fmax(res, 0) / XX);
-    return o;
+    double xw[NW];
+    for (int k = 0; k < NW; ++k) xw[k] = inner(X, &WIMG[(size_t)k * NPIX]);
+    pgloss__meter_read(&BASIS, xw, inner(X, DIMG), inner(X, X), out);
 }
 
 /* ---- One target model at one (F0, α) node: its diffuse image per unit β and its specular image ---- */
@@ -694,6 +667,41 @@ static double trap_mu(const double *t) /* 2 ∫ t(μ) μ dμ over the NMO nodes 
     return 2 * s;
 }
 static double mu_node(int i) { return i == 0 ? 1e-3 : (double)i / (NMO - 1); }
+
+/* Mitsuba's table of t(μ): MI_RES nodes on [0, 1], linear between them (lerp_gather). */
+#define MI_RES 64
+static double mi_lerp(const double *t, double mu)
+{
+    const double f = mu * (MI_RES - 1);
+    int i = (int)f;
+    if (i > MI_RES - 2) i = MI_RES - 2;
+    return t[i] + (f - i) * (t[i + 1] - t[i]);
+}
+
+/* Mitsuba's internal reflectance R_int = 2 · mean_k R(μ_k) μ_k over the 64 nodes of its t table
+ * (roughplastic.cpp). That mean is not a quadrature rule (it weighs μ = 0 and 1 fully and
+ * divides by 64): it sits 1–10 % of 1 − R_int below 2∫Rμ dμ (docs/bridge.md), and below
+ * α ≈ 0.01 it steps with F0 as the critical angle crosses its nodes. Mitsuba's renders follow
+ * it, so the model does. */
+static double mitsuba_rint(int m, double f0, double a)
+{
+    const double eta = eta_of_f0(f0);
+    double s = 0;
+    for (int k = 0; k < MI_RES; ++k) {
+        const double mu = fmax(1e-6, (double)k / (MI_RES - 1));
+        s += rough_interface(m, mu, a, 1 / eta, 0) * mu;
+    }
+    return 2 * s / MI_RES;
+}
+
+/* The factor of the diffuse image that target_images leaves out: 1/(η² (1 − R_int)) for
+ * roughplastic, 1 for the layered models. */
+static double diffuse_scale(int m, double f0, double a)
+{
+    if (m == M_PRINCIPLED || m == M_MATERIALX) return 1;
+    const double eta = eta_of_f0(f0);
+    return 1 / (eta * eta * (1 - mitsuba_rint(m, f0, a)));
+}
 
 static void target_images(int m, double f0, double a, double *Dt, double *St)
 {
@@ -736,86 +744,186 @@ static void target_images(int m, double f0, double a, double *Dt, double *St)
         image_lambert(Dt, df, NULL);
         image_spec(St, m, a, eta, vf);
     } else {
-        /* Mitsuba roughplastic (nonlinear = false): R t(μi) t(μo) / (π η² (1 − R_int)). */
-        double R[NMO], tb[NMU];
-        for (int i = 0; i < NMO; ++i) {
-            E[i] = rough_interface(m, mu_node(i), a, eta, 1);
-            R[i] = rough_interface(m, mu_node(i), a, 1 / eta, 0);
-        }
-        double Rint = trap_mu(R);
-        for (int i = 0; i < NMO; ++i) vf[i] = E[i] / (eta * eta * (1 - Rint));
-        for (int b = 0; b < NMU; ++b) tb[b] = interp_mu(E, (double)b / (NMU - 1));
+        /* Mitsuba roughplastic (nonlinear = false): R t(μi) t(μo) / (π η² (1 − R_int)), with
+         * Mitsuba's own table of t (src/bsdfs/roughplastic.cpp, MI_ROUGH_TRANSMITTANCE_RES):
+         * t at μ_k = max(1e-6, k/63), k < 64, looked up linearly (lerp_gather). The factor
+         * 1/(η² (1 − R_int)) is left out here: it is diffuse_scale, tabulated apart. */
+        double tm[MI_RES], tb[NMU];
+        for (int k = 0; k < MI_RES; ++k) tm[k] = rough_interface(m, fmax(1e-6, (double)k / (MI_RES - 1)), a, eta, 1);
+        for (int i = 0; i < NMO; ++i) vf[i] = mi_lerp(tm, mu_node(i));
+        for (int b = 0; b < NMU; ++b) tb[b] = mi_lerp(tm, (double)b / (NMU - 1));
         image_lambert(Dt, vf, tb);
         image_spec(St, m, a, eta, NULL);
     }
 }
 
 /* ---- The table grid ---- */
-#define NBETA 9
-#define NF0 9
-#define NAT 20
+/* √F0 and log α evenly spaced; each axis has one node beyond each end of the range it
+ * covers, so that the Catmull-Rom cells inside the range all have their four true nodes
+ * (docs/bridge.md measures the choices with --report). */
+#ifndef NF0
+#define NF0 13
+#endif
+#ifndef NAT
+#define NAT 22
+#endif
 static const double F0_MIN = 0.01, F0_MAX = 0.25, AT_MIN = 0.004, AT_MAX = 0.35;
-#define NCHECK 16
-
-static double *OUT;   /* M_COUNT × NBETA × NF0 × NAT × 4 */
-static double *CHECK; /* M_COUNT × NCHECK × 7 */
-
-static void fill_model(int m, int report)
+#define NCHECK 24
+static double f0_at(double u)
 {
-    double *Dt = malloc(sizeof(double) * (size_t)NPIX), *St = malloc(sizeof(double) * (size_t)NPIX),
-           *X = malloc(sizeof(double) * (size_t)NPIX);
-    for (int j = 0; j < NAT; ++j)
+    const double s = sqrt(F0_MIN) + (sqrt(F0_MAX) - sqrt(F0_MIN)) * (u - 1) / (NF0 - 3);
+    return s * s;
+}
+static double at_at(double u) { return AT_MIN * pow(AT_MAX / AT_MIN, (u - 1) / (NAT - 3)); }
+
+/* Mitsuba's R_int steps with F0 at small α (mitsuba_rint): it has its own table, F0 linear on
+ * NFR nodes (one beyond each end again), α on the products' nodes. */
+#ifndef NFR
+#define NFR 51
+#endif
+#define M_RP0 M_RP_GGX /* the first roughplastic model; R_int tables for M_RP0 .. M_COUNT − 1 */
+static double fr_at(double u) { return F0_MIN + (F0_MAX - F0_MIN) * (u - 1) / (NFR - 3); }
+static float *RINT; /* (M_COUNT − M_RP0) × NAT × NFR */
+
+static float *TAB;    /* M_COUNT × NF0 × NAT × NP: the products */
+static pgloss__bridge_tables TABLES; /* TAB and RINT as the library reads them */
+static double *CHECK; /* M_COUNT × NCHECK × 7: (β, F0, α) and the reading there */
+
+static void fill_model(int m, double *Dt, double *St)
+{
+    for (int j = 0; j < NAT; ++j) /* α outer: target_images keeps the lobe of the last α */
         for (int i = 0; i < NF0; ++i) {
-            double f0 = F0_MIN + (F0_MAX - F0_MIN) * i / (NF0 - 1), a = AT_MIN * pow(AT_MAX / AT_MIN, (double)j / (NAT - 1));
-            target_images(m, f0, a, Dt, St);
-            for (int b = 0; b < NBETA; ++b) {
-                double beta = (double)b / (NBETA - 1);
-                for (int p = 0; p < NPIX; ++p) X[p] = beta * Dt[p] + St[p];
-                reading r = meter(X);
-                double *o = &OUT[((((size_t)m * NBETA + b) * NF0 + i) * NAT + j) * 4];
-                o[0] = r.rho_d; o[1] = r.rho_s; o[2] = r.alpha; o[3] = r.residual;
-            }
+            double P[NP];
+            target_images(m, f0_at(i), at_at(j), Dt, St);
+            products(Dt, St, P);
+            for (int q = 0; q < NP; ++q) TAB[(((size_t)m * NF0 + i) * NAT + j) * NP + q] = (float)P[q];
         }
-    /* Off-grid checks (a fixed low-discrepancy set inside the grid) for the interpolation test. */
+    if (m >= M_RP0)
+        for (int j = 0; j < NAT; ++j)
+            for (int i = 0; i < NFR; ++i) RINT[((size_t)(m - M_RP0) * NAT + j) * NFR + i] = (float)mitsuba_rint(m, fr_at(i), at_at(j));
+}
+
+/* A fixed low-discrepancy point k of the table's box (F0 linear, α log), salt picking the set. */
+static void ld_point(int k, int salt, double *beta, double *f0, double *a)
+{
+    *beta = frac(0.5 + (k + salt) * 0.8191725133961645);
+    *f0 = F0_MIN + (F0_MAX - F0_MIN) * frac(0.5 + (k + salt) * 0.6710436067037893);
+    *a = AT_MIN * pow(AT_MAX / AT_MIN, frac(0.5 + (k + salt) * 0.5497004779019703));
+}
+
+/* Off-grid readings, rendered, for the library's interpolation test (test_bridge). */
+static void fill_checks(int m, double *Dt, double *St)
+{
     for (int k = 0; k < NCHECK; ++k) {
-        double u = frac(0.5 + k * 0.8191725133961645), v = frac(0.5 + k * 0.6710436067037893),
-               w = frac(0.5 + k * 0.5497004779019703);
-        double beta = u, f0 = F0_MIN + (F0_MAX - F0_MIN) * v, a = 0.01 * pow(0.3 / 0.01, w);
+        double beta, f0, a, P[NP], r[4];
+        ld_point(k, 0, &beta, &f0, &a);
         target_images(m, f0, a, Dt, St);
-        for (int p = 0; p < NPIX; ++p) X[p] = beta * Dt[p] + St[p];
-        reading r = meter(X);
+        products(Dt, St, P);
+        pgloss__meter_read_target(&BASIS, P, beta * diffuse_scale(m, f0, a), r);
         double *c = &CHECK[((size_t)m * NCHECK + k) * 7];
-        c[0] = beta; c[1] = f0; c[2] = a; c[3] = r.rho_d; c[4] = r.rho_s; c[5] = r.alpha; c[6] = r.residual;
-        if (report)
-            printf("%-22s beta %.3f F0 %.4f alpha %.4f -> rho_d %.5f rho_s %.5f alpha %.5f residual %.4f\n",
-                   MODEL_NAME[m], beta, f0, a, r.rho_d, r.rho_s, r.alpha, r.residual);
+        c[0] = beta; c[1] = f0; c[2] = a; c[3] = r[0]; c[4] = r[1]; c[5] = r[2]; c[6] = r[3];
     }
-    free(Dt); free(St); free(X);
+}
+
+/* L*, c, d of a reading. */
+static void lcd(const double r[4], double o[3])
+{
+    pgloss_lightness_from_luminance(fmax(r[0], 0), &o[0]);
+    pgloss_contrast_gloss(fmax(r[0], 0), fmax(r[1], 0), &o[1]);
+    o[2] = 1 - r[2];
+}
+
+static int cmp_double(const void *x, const void *y)
+{
+    const double a = *(const double *)x, b = *(const double *)y;
+    return (a > b) - (a < b);
+}
+
+/* --report: the tables' interpolation error against rendered readings at NREP off-grid
+ * (F0, α) points per model, each at β = 0, 1/8, …, 1, in three bands of α; and the residuals. */
+#define NREP 60
+#define NBREP 9
+static void report_model(int m, double *Dt, double *St)
+{
+    static const double band[4] = {0.004, 0.01, 0.1, 0.35};
+    double err[3][3][NREP * NBREP], res[NREP];
+    int n[3] = {0, 0, 0};
+    for (int k = 0; k < NREP; ++k) {
+        double beta0, f0, a, P[NP];
+        ld_point(k, 1000, &beta0, &f0, &a);
+        target_images(m, f0, a, Dt, St);
+        products(Dt, St, P);
+        const double se = diffuse_scale(m, f0, a);
+        int bd = a < band[1] ? 0 : a < band[2] ? 1 : 2;
+        for (int b = 0; b < NBREP; ++b) {
+            double beta = (double)b / (NBREP - 1), r[4], q[4], x[3], y[3];
+            pgloss__meter_read_target(&BASIS, P, beta * se, r);
+            pgloss__bridge_table_read(&TABLES, m, beta, f0, a, q);
+            lcd(r, x);
+            lcd(q, y);
+            for (int e = 0; e < 3; ++e) err[bd][e][n[bd]] = fabs(x[e] - y[e]);
+            ++n[bd];
+        }
+        double r[4];
+        pgloss__meter_read_target(&BASIS, P, beta0 * se, r);
+        res[k] = r[3];
+    }
+    for (int bd = 0; bd < 3; ++bd) {
+        if (!n[bd]) continue;
+        double w[3], p95[3];
+        for (int e = 0; e < 3; ++e) {
+            qsort(err[bd][e], (size_t)n[bd], sizeof(double), cmp_double);
+            w[e] = err[bd][e][n[bd] - 1];
+            p95[e] = err[bd][e][(int)(0.95 * (n[bd] - 1))];
+        }
+        printf("| %-21s | %5.3f-%5.3f | %4d | %.3f / %.3f | %.5f / %.5f | %.5f / %.5f |\n", MODEL_NAME[m], band[bd],
+               band[bd + 1], n[bd], p95[0], w[0], p95[1], w[1], p95[2], w[2]);
+    }
+    qsort(res, NREP, sizeof(double), cmp_double);
+    printf("| %-21s | residual | min %.3f | median %.3f | max %.3f |\n", MODEL_NAME[m], res[0], res[NREP / 2],
+           res[NREP - 1]);
 }
 
 static void print_array(FILE *f, const double *v, size_t n)
 {
-    for (size_t i = 0; i < n; ++i) fprintf(f, "%.9e,%s", v[i], (i % 4 == 3) ? "\n" : " ");
+    for (size_t i = 0; i < n; ++i) fprintf(f, "%.17g,%s", v[i], (i % 4 == 3) ? "\n" : " ");
     if (n % 4) fputc('\n', f);
+}
+
+/* The products and R_int are floats (printed to round-trip exactly): rounding them to 7 digits
+ * moves no reading of --report's test points by more than 1e-5 in c or d (docs/bridge.md). */
+static void print_floats(FILE *f, const float *v, size_t n)
+{
+    for (size_t i = 0; i < n; ++i) fprintf(f, "%.8e,%s", (double)v[i], (i % 6 == 5) ? "\n" : " ");
+    if (n % 6) fputc('\n', f);
 }
 
 static void write_tables(FILE *f)
 {
     fprintf(f, "/* SPDX-FileCopyrightText: 2026 The pgloss authors\n * SPDX-License-Identifier: Apache-2.0\n"
                " * GENERATED by tools/bridge_tables.c (pgloss_bridge_tables): do not edit. docs/bridge.md\n"
-               " * says what the numbers are. Per target model: the bridge's gloss-meter reading\n"
-               " * (rho_d, rho_s, alpha, relative RMS residual) of the stimulus sphere rendered with base\n"
-               " * luminance beta, F0 and GGX/Beckmann alpha, on the grid below; then off-grid checks\n"
+               " * says what the numbers are: the meter's Ward basis of the stimulus sphere (Gram band,\n"
+               " * <D, W_k>, <D, D>); per target model, per (F0, alpha) node, the products of its diffuse\n"
+               " * and specular images (libpgloss/src/bridge_meter.h's layout); then off-grid checks\n"
                " * (beta, F0, alpha, rho_d, rho_s, alpha, residual) for the interpolation test. */\n");
-    fprintf(f, "#define PGLOSS__BRIDGE_MODELS %d\n#define PGLOSS__BRIDGE_NBETA %d\n#define PGLOSS__BRIDGE_NF0 %d\n"
-               "#define PGLOSS__BRIDGE_NAT %d\n#define PGLOSS__BRIDGE_NCHECK %d\n",
-            M_COUNT, NBETA, NF0, NAT, NCHECK);
+    fprintf(f, "#if PGLOSS__METER_NW != %d\n#error \"bridge_tables.inc: made for another Ward basis\"\n#endif\n", NW);
+    fprintf(f, "#define PGLOSS__BRIDGE_MODELS %d\n#define PGLOSS__BRIDGE_NF0 %d\n#define PGLOSS__BRIDGE_NAT %d\n"
+               "#define PGLOSS__BRIDGE_NCHECK %d\n",
+            M_COUNT, NF0, NAT, NCHECK);
     fprintf(f, "#define PGLOSS__BRIDGE_F0_MIN %.17g\n#define PGLOSS__BRIDGE_F0_MAX %.17g\n"
                "#define PGLOSS__BRIDGE_AT_MIN %.17g\n#define PGLOSS__BRIDGE_AT_MAX %.17g\n"
                "#define PGLOSS__BRIDGE_SPHERE_PIXELS %d\n",
             F0_MIN, F0_MAX, AT_MIN, AT_MAX, NPIX);
-    fprintf(f, "static const double pgloss__bridge_reading[%d * %d * %d * %d * 4] = {\n", M_COUNT, NBETA, NF0, NAT);
-    print_array(f, OUT, (size_t)M_COUNT * NBETA * NF0 * NAT * 4);
+    fprintf(f, "static const double pgloss__bridge_gram[%d * 7] = {\n", NW);
+    print_array(f, GRAM, (size_t)NW * 7);
+    fprintf(f, "};\nstatic const double pgloss__bridge_dw[%d] = {\n", NW);
+    print_array(f, DW, NW);
+    fprintf(f, "};\n#define PGLOSS__BRIDGE_DD %.17g\n", BASIS.dd);
+    fprintf(f, "static const float pgloss__bridge_products[%d * %d * %d * %d] = {\n", M_COUNT, NF0, NAT, NP);
+    print_floats(f, TAB, (size_t)M_COUNT * NF0 * NAT * NP);
+    fprintf(f, "};\n#define PGLOSS__BRIDGE_NFR %d\n#define PGLOSS__BRIDGE_RINT_MODEL0 %d\n"
+               "static const float pgloss__bridge_rint[%d * %d * %d] = {\n", NFR, M_RP0, M_COUNT - M_RP0, NAT, NFR);
+    print_floats(f, RINT, (size_t)(M_COUNT - M_RP0) * NAT * NFR);
     fprintf(f, "};\nstatic const double pgloss__bridge_check[%d * %d * 7] = {\n", M_COUNT, NCHECK);
     print_array(f, CHECK, (size_t)M_COUNT * NCHECK * 7);
     fprintf(f, "};\n");
@@ -867,6 +975,7 @@ int main(int argc, char **argv)
         return 2;
     }
     camera_init();
+    hring_init();
     walls_init();
     solve_walls();
     stamp("walls");
@@ -877,24 +986,45 @@ int main(int argc, char **argv)
     WIMG = malloc(sizeof(double) * (size_t)NW * NPIX);
     for (int k = 0; k < NW; ++k) image_ward(&WIMG[(size_t)k * NPIX], w_alpha(k));
     meter_init();
-    OUT = calloc((size_t)M_COUNT * NBETA * NF0 * NAT * 4, sizeof(double));
+    stamp("ward basis");
+    TAB = calloc((size_t)M_COUNT * NF0 * NAT * NP, sizeof(float));
     CHECK = calloc((size_t)M_COUNT * NCHECK * 7, sizeof(double));
+    RINT = calloc((size_t)(M_COUNT - M_RP0) * NAT * NFR, sizeof(float));
+    TABLES = (pgloss__bridge_tables){TAB, RINT, NF0, NAT, NFR, M_RP0, F0_MIN, F0_MAX, AT_MIN, AT_MAX, BASIS};
+    double *Dt = malloc(sizeof(double) * (size_t)NPIX), *St = malloc(sizeof(double) * (size_t)NPIX);
+    const clock_t t0 = clock();
+    for (int m = 0; m < M_COUNT; ++m) {
+        fill_model(m, Dt, St);
+        if (path) fill_checks(m, Dt, St);
+        stamp(MODEL_NAME[m]);
+    }
+    const double t_tables = (double)(clock() - t0) / CLOCKS_PER_SEC;
     if (report) {
-        /* The control: Ward paints read back as themselves. */
-        double *X = malloc(sizeof(double) * (size_t)NPIX), *W = malloc(sizeof(double) * (size_t)NPIX);
+        /* The control: Fig. 4's Ward paints read back as themselves. */
+        double *X = malloc(sizeof(double) * (size_t)NPIX), *W = malloc(sizeof(double) * (size_t)NPIX), worst[3] = {0, 0, 0};
         const double rd[3] = {0.03, 0.193, 0.767}, rs[3] = {0.033, 0.066, 0.099}, al[3] = {0.04, 0.07, 0.1};
         for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j) {
-                image_ward(W, al[j]);
-                for (int p = 0; p < NPIX; ++p) X[p] = rd[i] * DIMG[p] + rs[j] * W[p];
-                reading r = meter(X);
-                printf("ward control rho_d %.3f rho_s %.3f alpha %.3f -> %.6f %.6f %.6f residual %.2e\n", rd[i], rs[j],
-                       al[j], r.rho_d, r.rho_s, r.alpha, r.residual);
-            }
+            for (int j = 0; j < 3; ++j)
+                for (int k = 0; k < 3; ++k) {
+                    double r[4];
+                    image_ward(W, al[k]);
+                    for (int p = 0; p < NPIX; ++p) X[p] = rd[i] * DIMG[p] + rs[j] * W[p];
+                    meter(X, r);
+                    worst[0] = fmax(worst[0], fabs(r[0] - rd[i]));
+                    worst[1] = fmax(worst[1], fabs(r[1] - rs[j]));
+                    worst[2] = fmax(worst[2], fabs(r[2] / al[k] - 1));
+                }
+        printf("Ward control (Fig. 4's 27 paints): worst |d rho_d| %.1e, |d rho_s| %.1e, |d alpha|/alpha %.1e\n",
+               worst[0], worst[1], worst[2]);
         free(X); free(W);
+        printf("grid: %d sqrt-F0 x %d log-alpha nodes x %d products x %d models, R_int %d F0 x %d alpha x %d models: "
+               "%d numbers; tables in %.1f s of CPU\n", NF0, NAT, NP, M_COUNT, NFR, NAT, M_COUNT - M_RP0,
+               M_COUNT * NF0 * NAT * NP + (M_COUNT - M_RP0) * NAT * NFR + NW * 8 + 1, t_tables);
+        printf("\n| model | alpha band | points | |dL*| p95 / max | |dc| p95 / max | |dd| p95 / max |\n"
+               "|---|---|---|---|---|---|\n");
+        for (int m = 0; m < M_COUNT; ++m) report_model(m, Dt, St);
     }
-    stamp("ward basis");
-    for (int m = 0; m < M_COUNT; ++m) { fill_model(m, report); stamp(MODEL_NAME[m]); }
+    free(Dt); free(St);
     if (!path) return 0;
     if (check) {
         char tmp[4096];

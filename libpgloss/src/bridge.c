@@ -7,7 +7,14 @@
 
 #include "pgloss/bridge.h"
 
+#include "bridge_meter.h"
 #include "bridge_tables.inc"
+
+/* The tables as the shared reader takes them (bridge_meter.h). */
+static const pgloss__bridge_tables TABLES = {
+    pgloss__bridge_products, pgloss__bridge_rint, PGLOSS__BRIDGE_NF0, PGLOSS__BRIDGE_NAT, PGLOSS__BRIDGE_NFR,
+    PGLOSS__BRIDGE_RINT_MODEL0, PGLOSS__BRIDGE_F0_MIN, PGLOSS__BRIDGE_F0_MAX, PGLOSS__BRIDGE_AT_MIN,
+    PGLOSS__BRIDGE_AT_MAX, {pgloss__bridge_gram, pgloss__bridge_dw, PGLOSS__BRIDGE_DD}};
 
 /* The BRDF model each target renders with (the models of tools/bridge_tables.c). */
 enum { MODEL_PRINCIPLED = 0, MODEL_MATERIALX = 1, MODEL_RP_GGX = 2, MODEL_RP_BECKMANN = 3 };
@@ -52,56 +59,11 @@ pgloss_status pgloss_bridge_target_from_name(const char *name, pgloss_bridge_tar
     return PGLOSS_ERR_ARGUMENT;
 }
 
-/* ---- The interpolant: Catmull-Rom in each of (β, F0, log α) ---- */
-static void cr_weights(double x, int n, int idx[4], double w[4])
-{
-    int i = (int)floor(x);
-    if (i < 0) i = 0;
-    if (i > n - 2) i = n - 2;
-    const double t = x - i, t2 = t * t, t3 = t2 * t;
-    w[0] = -0.5 * t3 + t2 - 0.5 * t;
-    w[1] = 1.5 * t3 - 2.5 * t2 + 1;
-    w[2] = -1.5 * t3 + 2 * t2 + 0.5 * t;
-    w[3] = 0.5 * t3 - 0.5 * t2;
-    /* At the ends the missing neighbour is the linear extrapolation of the last two nodes
-     * (v[-1] = 2 v[0] − v[1]), so that a reading linear along an axis is interpolated exactly
-     * up to the ends. */
-    idx[0] = i - 1; idx[1] = i; idx[2] = i + 1; idx[3] = i + 2;
-    if (idx[0] < 0) {
-        idx[0] = 0;
-        w[1] += 2 * w[0];
-        w[0] = -w[0];
-        idx[0] = 1;
-    }
-    if (idx[3] > n - 1) {
-        idx[3] = n - 2;
-        w[2] += 2 * w[3];
-        w[3] = -w[3];
-    }
-}
-
+/* The reading of a model at (β, F0, α) inside the tables: the meter applied to the image
+ * whose products are interpolated (bridge_meter.h); β enters exactly. */
 static void interpolate(int model, double beta, double f0, double alpha, double out[4])
 {
-    int ib[4], jf[4], ka[4];
-    double wb[4], wf[4], wa[4];
-    cr_weights(beta * (PGLOSS__BRIDGE_NBETA - 1), PGLOSS__BRIDGE_NBETA, ib, wb);
-    cr_weights((f0 - PGLOSS__BRIDGE_F0_MIN) / (PGLOSS__BRIDGE_F0_MAX - PGLOSS__BRIDGE_F0_MIN) * (PGLOSS__BRIDGE_NF0 - 1),
-               PGLOSS__BRIDGE_NF0, jf, wf);
-    cr_weights(log(alpha / PGLOSS__BRIDGE_AT_MIN) / log(PGLOSS__BRIDGE_AT_MAX / PGLOSS__BRIDGE_AT_MIN) *
-                   (PGLOSS__BRIDGE_NAT - 1),
-               PGLOSS__BRIDGE_NAT, ka, wa);
-    out[0] = out[1] = out[2] = out[3] = 0;
-    for (int a = 0; a < 4; ++a)
-        for (int b = 0; b < 4; ++b)
-            for (int c = 0; c < 4; ++c) {
-                const double w = wb[a] * wf[b] * wa[c];
-                const double *v = &pgloss__bridge_reading[((((size_t)model * PGLOSS__BRIDGE_NBETA + (size_t)ib[a]) *
-                                                                 PGLOSS__BRIDGE_NF0 + (size_t)jf[b]) *
-                                                                PGLOSS__BRIDGE_NAT + (size_t)ka[c]) * 4];
-                for (int k = 0; k < 4; ++k) out[k] += w * v[k];
-            }
-    /* The reading's α is stored as is; interpolating log α would be smoother, but the table's
-     * α varies slowly enough across a cell (docs/bridge.md: interpolation errors). */
+    pgloss__bridge_table_read(&TABLES, model, beta, f0, alpha, out);
 }
 
 /* The box a target's (β, F0, α) must stay in. */
@@ -172,14 +134,19 @@ static int paint_of_reading(const double r[4], double *L, double *c, double *d)
 }
 
 /* Weighted residual of u = (β, F0, log α) against the wanted paint. */
-static void residual(int model, const double u[3], const double want[3], double res[3])
+static void residual_of_reading(const double r[4], const double want[3], double res[3])
 {
-    double r[4], L, c, d;
-    interpolate(model, u[0], u[1], exp(u[2]), r);
+    double L, c, d;
     paint_of_reading(r, &L, &c, &d);
     res[0] = WEIGHT_L * (L - want[0]);
     res[1] = c - want[1];
     res[2] = WEIGHT_D * (d - want[2]);
+}
+static void residual(int model, const double u[3], const double want[3], double res[3])
+{
+    double r[4];
+    interpolate(model, u[0], u[1], exp(u[2]), r);
+    residual_of_reading(r, want, res);
 }
 
 static double norm2(const double r[3]) { return r[0] * r[0] + r[1] * r[1] + r[2] * r[2]; }
@@ -347,19 +314,27 @@ pgloss_status pgloss_bridge_from_perceptual(pgloss_bridge_target target, const p
     const double want[3] = {paint->L, paint->c, paint->d};
     const int model = TARGET_MODEL[target];
 
-    /* Start from the best node of a coarse grid over the box, then refine. */
+    /* Start from the best node of a coarse grid over the box, then refine. The image's
+     * products depend on (F0, α) alone: one interpolation serves every β. */
     double u[3] = {0, 0, 0}, best = INFINITY;
-    for (int i = 0; i < 5; ++i)
-        for (int j = 0; j < 5; ++j)
-            for (int k = 0; k < 7; ++k) {
-                double v[3] = {bx.lo[0] + (bx.hi[0] - bx.lo[0]) * i / 4.0, bx.lo[1] + (bx.hi[1] - bx.lo[1]) * j / 4.0,
-                               bx.lo[2] + (bx.hi[2] - bx.lo[2]) * k / 6.0}, r[3];
-                residual(model, v, want, r);
-                if (norm2(r) < best) {
-                    best = norm2(r);
-                    memcpy(u, v, sizeof v);
+    for (int j = 0; j < 5; ++j)
+        for (int k = 0; k < 7; ++k) {
+            const double f0 = bx.lo[1] + (bx.hi[1] - bx.lo[1]) * j / 4.0, la = bx.lo[2] + (bx.hi[2] - bx.lo[2]) * k / 6.0;
+            double prod[PGLOSS__METER_NP];
+            const double scale = pgloss__bridge_table_products(&TABLES, model, f0, exp(la), prod);
+            for (int i = 0; i < 5; ++i) {
+                const double beta = bx.lo[0] + (bx.hi[0] - bx.lo[0]) * i / 4.0;
+                double r[4], res[3];
+                pgloss__meter_read_target(&TABLES.basis, prod, beta * scale, r);
+                residual_of_reading(r, want, res);
+                if (norm2(res) < best) {
+                    best = norm2(res);
+                    u[0] = beta;
+                    u[1] = f0;
+                    u[2] = la;
                 }
             }
+        }
     const double f = solve_box(model, &bx, want, u);
 
     double base[3];

@@ -1602,3 +1602,6 @@ def perceptual_from_physical(physical: Physical,
     else:
         out = Perceptual._adopt([r.reshape(shape) for r in res[:5]])
     return _finish(fn, want_status, out, res[5], shape)
+
+
+from . import bridge  # noqa: E402  (the gloss bridge: pgloss.bridge)

@@ -771,6 +771,7 @@ PYBIND11_MODULE(_core, mod) {
     mod.attr("ALPHA_TRUSTED_MAX") = PGLOSS_ALPHA_TRUSTED_MAX;
     mod.attr("BOUNDARY_TOLERANCE") = PGLOSS_BOUNDARY_TOLERANCE;
     mod.attr("LUMA") = py::make_tuple(PGLOSS_LUMA_R, PGLOSS_LUMA_G, PGLOSS_LUMA_B);
+    { void pgloss_py_bind_bridge(py::module_ &); pgloss_py_bind_bridge(mod); }  // pgloss.bridge (bridge.cpp)
 
     // The thread count of the array calls; pgloss.set_num_threads validates it and reads
     // PGLOSS_NUM_THREADS at import (parallel.h).
