@@ -122,6 +122,19 @@
     return c;
   }
 
+  // Moves each canvas by less than a device pixel so that its corner lies on the device-pixel grid:
+  // a canvas whose CSS size is a half pixel (odd device sizes at DPR 2) or that layout centred
+  // between device pixels would otherwise be snapped one pixel larger or smaller, i.e. resampled.
+  function alignToDevicePixels(canvases, dpr) {
+    for (const c of canvases) {
+      c.style.position = "relative";
+      c.style.left = c.style.top = "0px";
+      const r = c.getBoundingClientRect();
+      c.style.left = `${(Math.round(r.left * dpr) - r.left * dpr) / dpr}px`;
+      c.style.top = `${(Math.round(r.top * dpr) - r.top * dpr) / dpr}px`;
+    }
+  }
+
   const wait = (ms) => new Promise((ok) => setTimeout(ok, ms));
   const frame = () => new Promise((ok) => requestAnimationFrame(() => ok()));
 
@@ -130,6 +143,7 @@
   // Resolves to {rating, rt_ms, device_exact}.
   async function runTrial(container, { canvases, low, high, next, progress, itiMs = 0, label = "" }) {
     container.replaceChildren();
+    delete doc.body.dataset.pglossTrial;
     if (itiMs > 0) await wait(itiMs);
     const slider = el("input", { id: "pgloss-slider", type: "range", min: "0", max: "100", step: "1", value: "50",
                                  class: "pgloss-slider pgloss-untouched", "aria-label": label });
@@ -144,9 +158,16 @@
           el("span", { id: "pgloss-label-high", class: "pgloss-end pgloss-high", html: high })]),
         readout, button, el("div", { id: "pgloss-progress", class: "pgloss-progress", text: progress || "" })]),
     ]));
+    // Aligned once the web fonts are in and again a frame later: text that changes the layout's
+    // height moves the canvases by fractions of a pixel, which the browser would resample.
+    if (doc.fonts) await doc.fonts.ready;
+    alignToDevicePixels(canvases, root.devicePixelRatio || 1);
+    await frame();
+    alignToDevicePixels(canvases, root.devicePixelRatio || 1);
     await frame();
     await frame();  // the images are on screen from the second frame on
     const t0 = performance.now();
+    doc.body.dataset.pglossTrial = progress || "";  // for scripts (the tests): this trial is up
     return new Promise((resolve) => {
       const touched = () => {
         slider.classList.remove("pgloss-untouched");
@@ -190,6 +211,7 @@
     const button = el("button", { id: "pgloss-gamma-done", class: "jspsych-btn", type: "button", text: texts.continue });
     container.replaceChildren(el("div", { class: "pgloss-check" }, [
       el("div", { html: texts.display_check }), el("div", { class: "pgloss-pair" }, [striped, patch]), slider, button]));
+    alignToDevicePixels([striped], dpr);
     const t0 = performance.now();
     await new Promise((ok) => button.addEventListener("click", ok, { once: true }));
     const v = Number(slider.value);
@@ -222,6 +244,6 @@
     };
   }
 
-  root.pglossDisplay = { el, fill, decodeImage, boxWeights, reduce, stimulusSize, deviceCanvas, runTrial, displayCheck,
+  root.pglossDisplay = { el, fill, decodeImage, boxWeights, reduce, stimulusSize, deviceCanvas, alignToDevicePixels, runTrial, displayCheck,
                          screenRecord, wait, BLACK_CODES };
 })(window);

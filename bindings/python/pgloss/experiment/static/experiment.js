@@ -81,13 +81,8 @@ async function present(stimuli, label) {
   show("trial");
   document.body.dataset.trialLabel = label;
   document.body.dataset.stimuli = stimuli.join(",");
-  delete document.body.dataset.trialReady;
-  const answer = D.runTrial($("trial"), { canvases, low, high, next: texts().next, progress: label, itiMs: config.iti_ms,
-                                          label: run.procedure === "pairs" ? "difference in gloss" : "glossiness" });
-  // The trial is on screen (after the inter-trial interval) once its slider exists.
-  const ready = () => ($("pgloss-slider") ? (document.body.dataset.trialReady = label) : requestAnimationFrame(ready));
-  ready();
-  return answer;
+  return D.runTrial($("trial"), { canvases, low, high, next: texts().next, progress: label, itiMs: config.iti_ms,
+                                   label: run.procedure === "pairs" ? "difference in gloss" : "glossiness" });
 }
 
 async function clicked(id) {
