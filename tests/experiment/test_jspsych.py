@@ -36,16 +36,13 @@ from typing import Dict, Iterator, List, Optional
 
 import numpy as np
 import pytest
-from playwright.sync_api import Browser, Page, sync_playwright
+from playwright.sync_api import Browser, Page
 
 from conftest import MAGNITUDE, OUT, PAIRS, PY, pgloss_cli
 from observers import D_WEIGHT, Model, set_slider, thumb_hidden
 from pngio import read_png
 from recovery import distances, procrustes_r2, spearman
 
-CHROMIUM = os.environ.get("PGLOSS_CHROMIUM", "/usr/bin/chromium")
-FLAGS = ["--headless=new", "--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--no-sandbox",
-         "--disable-background-networking", "--disable-component-update"]
 FULL = os.environ.get("PGLOSS_JSPSYCH_FULL") == "1"
 OPTIONS = [] if FULL else ["--visual-angle", "1", "--iti-ms", "30", "--chinrest-reps", "2", "--practice", "2",
                            "--break-every", "30"]
@@ -81,16 +78,6 @@ def site(manifest: Path, tmp_path_factory) -> Iterator[tuple]:
     yield root, f"http://127.0.0.1:{server.server_address[1]}"
     server.shutdown()
     server.server_close()
-
-
-@pytest.fixture(scope="module")
-def browser() -> Iterator[Browser]:
-    if not Path(CHROMIUM).is_file():
-        pytest.fail(f"no Chromium at {CHROMIUM} (Debian package chromium; scripts/test-experiment.sh installs it)")
-    with sync_playwright() as p:
-        b = p.chromium.launch(executable_path=CHROMIUM, args=FLAGS, headless=True)
-        yield b
-        b.close()
 
 
 STATE = """() => {
