@@ -31,6 +31,7 @@ import subprocess
 import threading
 import time
 import zipfile
+from fractions import Fraction
 from pathlib import Path
 from typing import Dict, Iterator, List, Optional
 
@@ -38,7 +39,7 @@ import numpy as np
 import pytest
 from playwright.sync_api import Browser, Page
 
-from conftest import MAGNITUDE, OUT, PAIRS, PY, pgloss_cli
+from conftest import MAGNITUDE, OUT, PAIRS, PY, ROOT, pgloss_cli
 from observers import D_WEIGHT, Model, set_slider, thumb_hidden
 from pngio import read_png
 from recovery import distances, procrustes_r2, spearman
@@ -98,6 +99,19 @@ def box_filter(image: np.ndarray, w: int, h: int, gamma: float) -> np.ndarray:
     a = np.repeat(lin, w, axis=1).reshape(H, w, W, 3).mean(axis=2)
     b = np.repeat(a, h, axis=0).reshape(h, H, w, 3).mean(axis=1)
     return np.rint(255.0 * b ** (1.0 / gamma))
+
+
+def grid_size(want: float, dpr: float, width: int, height: int) -> tuple:
+    """The stimulus size the display must choose: whole CSS pixels that are whole device pixels, so
+    at a ratio p/q (Fraction.limit_denominator) multiples of p device pixels; the width the nearest
+    such to the wanted device width, the height the nearest to the image's aspect (halves up), both
+    within the rendered image."""
+    r = Fraction(dpr).limit_denominator(16)
+    assert abs(float(r) - dpr) < 1e-5, dpr  # float32 ratios as browsers give them (1.1 = 1.10000002384)
+    p = r.numerator
+    w = p * max(1, min(width // p, math.floor(Fraction(want) / p + Fraction(1, 2))))
+    h = p * max(1, min(height // p, math.floor(Fraction(w * height, width * p) + Fraction(1, 2))))
+    return w, h
 
 
 class Observer:
@@ -180,28 +194,30 @@ class Observer:
         page = self.page
         assert thumb_hidden(page) and page.inner_text("#pgloss-readout") == "–"
         assert page.is_disabled("#pgloss-next")
-        sizes = page.eval_on_selector_all("canvas.pgloss-stimulus", "els => els.map(e => [e.width, e.height, "
-                                          "e.getBoundingClientRect().width, e.dataset.deviceExact])")
+        sizes = page.eval_on_selector_all("canvas.pgloss-stimulus", "els => els.map(e => { const r = e.getBoundingClientRect(); "
+                                          "return [e.width, e.height, r.width, r.height, r.left + scrollX, r.top + scrollY, e.dataset.deviceExact, "
+                                          "r.left, r.top]; })")
         w, h = sizes[0][:2]
         # The browser's own check (devicePixelContentBoxSize); Chromium under an emulated device scale
         # factor reports it at the host's scale (1), so there the screenshot below is the check.
-        assert self.dpr != 1 or all(s[3] == "true" for s in sizes), sizes
-        assert all(abs(s[2] * self.dpr - s[0]) < 1e-6 for s in sizes), sizes
+        assert self.dpr != 1 or all(s[6] == "true" for s in sizes), sizes
+        # Size and corner on the page in whole CSS pixels that are whole device pixels (no edge between
+        # device pixels); on screen (scrolled by whole device pixels) whole device pixels.
+        assert all(s[2] * self.dpr == s[0] and s[3] * self.dpr == s[1] for s in sizes), sizes
+        assert all(float(v).is_integer() and float(v * self.dpr).is_integer() for s in sizes for v in s[2:6]), sizes
+        assert all(float(v * self.dpr).is_integer() for s in sizes for v in s[7:9]), sizes
         self.size = (w, h)
         shot = self.page.screenshot()
         path = OUT / f"jspsych-{self.name}-{self.model.seed}.png"
         path.write_bytes(shot)
         img, _ = read_png(path)
-        boxes = page.eval_on_selector_all("canvas.pgloss-stimulus", "els => els.map(e => { const r = e.getBoundingClientRect(); "
-                                          "return [r.left, r.top]; })")
-        for sid, (left, top) in zip(stimuli, boxes):
+        for sid, (left, top) in zip(stimuli, (s[7:9] for s in sizes)):
             master, _ = read_png(self.folder / "stimuli" / f"{sid}.png")
             want = box_filter(master, w, h, self.gamma)
-            x0, y0 = round(left * self.dpr), round(top * self.dpr)
-            best = min(np.abs(img[y0 + dy:y0 + dy + h, x0 + dx:x0 + dx + w].astype(float) - want).max()
-                       for dy in (-1, 0, 1) for dx in (-1, 0, 1))
-            assert best <= 1, (f"{self.name} (DPR {self.dpr}) {sid} at {x0},{y0} in a {img.shape} screenshot: the canvas "
-                               f"differs from the box-filtered image by {best} code values")
+            x0, y0 = int(left * self.dpr), int(top * self.dpr)  # whole (asserted above)
+            diff = np.abs(img[y0:y0 + h, x0:x0 + w].astype(float) - want).max()
+            assert diff <= 1, (f"{self.name} (DPR {self.dpr}) {sid} at {x0},{y0} in a {img.shape} screenshot: the canvas "
+                               f"differs from the box-filtered image by {diff} code values")
         page.mouse.move(5, 5)
         self.checked = True
 
@@ -236,6 +252,28 @@ def jrzip(path: Path, runs: List[tuple]) -> Path:
                                       "data": {"size": data.stat().st_size}, "files": []}]}]})
         z.writestr("metadata.json", json.dumps(meta))
     return path
+
+
+def test_stimulus_size_on_the_pixel_grid(browser: Browser):
+    """display.js's stimulusSize at integer and fractional device pixel ratios (system scales and
+    browser zoom levels) against grid_size: whole CSS pixels that are whole device pixels."""
+    page = browser.new_page()
+    page.add_script_tag(path=str(ROOT / "bindings/python/pgloss/experiment/static/display.js"))
+    cases = [(dpr, px_mm, mm, 48, 36) for dpr in (1, 2, 3, 1.25, 1.5, 1.75, 2.5, 1.1, 0.9, 2 / 3)
+             for px_mm, mm in ((4.0, 300.0), (4.0, 315.0), (3.7, 287.0), (9.0, 900.0))]
+    cases += [(1.25, 3.8, 600.0, 640, 481), (1.5, 4.2, 550.0, 333, 250)]
+    for dpr, px_mm, mm, width, height in cases:
+        dpr_js = page.evaluate("x => Math.fround(x)", dpr) if dpr in (1.1, 0.9, 2 / 3) else dpr  # as Chromium gives it
+        got = page.evaluate("a => { const s = pglossDisplay.stimulusSize({angleDeg: 1, distanceMm: a[1], pxPerMm: a[2], "
+                            "dpr: a[0], imageWidth: a[3], imageHeight: a[4]}); return [s.width, s.height, "
+                            "pglossDisplay.cssLength(s.width, a[0]), pglossDisplay.cssLength(s.height, a[0])]; }",
+                            [dpr_js, mm, px_mm, width, height])
+        want = 2 * mm * math.tan(math.radians(0.5)) * px_mm * dpr_js
+        size = grid_size(want, dpr_js, width, height)
+        assert tuple(got[:2]) == size, (dpr, px_mm, mm, got, size)
+        r = Fraction(dpr_js).limit_denominator(16)
+        assert got[2:] == [size[0] // r.numerator * r.denominator, size[1] // r.numerator * r.denominator], got
+    page.close()
 
 
 def test_jspsych_study_end_to_end(manifest: Path, site, browser: Browser, tmp_path: Path):
@@ -301,8 +339,9 @@ def test_jspsych_study_end_to_end(manifest: Path, site, browser: Browser, tmp_pa
         dpr = float(s["dpr"])
         assert float(s["px_per_mm"]) == PX_PER_MM and abs(float(s["view_dist_mm"]) - DISTANCE_MM) < 0.05 * DISTANCE_MM
         angle = 3.2 if FULL else 1.0
-        want = round(2 * float(s["view_dist_mm"]) * math.tan(math.radians(angle / 2)) * PX_PER_MM * dpr)
-        assert int(s["image_device_width"]) == min(want, m["renderer"]["width"]), s
+        want = 2 * float(s["view_dist_mm"]) * math.tan(math.radians(angle / 2)) * PX_PER_MM * dpr
+        size = grid_size(want, dpr, m["renderer"]["width"], m["renderer"]["height"])
+        assert (int(s["image_device_width"]), int(s["image_device_height"])) == size, (s, size)
         assert int(s["gamma_code"]) == GAMMA_CODE and int(s["black_code"]) == BLACK_CODE
         assert abs(float(s["gamma_estimate"]) - math.log(0.5) / math.log(GAMMA_CODE / 255)) < 1e-3
         assert float(s["display_gamma_stated"]) == m["display"]["gamma"]
