@@ -51,6 +51,7 @@ def set_slider(page: Page, value: int) -> None:
     thumb = 16  # Chromium's range thumb: the track's ends are half a thumb in from the box
     x = box["x"] + thumb / 2 + (box["width"] - thumb) * value / 100.0
     page.mouse.click(x, box["y"] + box["height"] / 2)
+    page.wait_for_function("document.getElementById('pgloss-readout').textContent !== '–'")  # the touch is shown
     for _ in range(40):
         shown = int(page.inner_text("#pgloss-readout"))
         if shown == value:
