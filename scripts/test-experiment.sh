@@ -3,10 +3,13 @@
 # SPDX-License-Identifier: Apache-2.0
 # The browser experiment's tests (bindings/python/pgloss/experiment, tests/experiment): three
 # scripted observers in Debian's headless Chromium (Playwright for Python) run both procedures on
-# 9 rendered stimuli, the server is SIGKILLed and restarted mid-session, the export goes through
-# `python -m pgloss mds`; bad requests, concurrent subjects, the seed reproducing the order.
-# Sets up its own packages, the binding (.venv-py), pgloss-tracer (build-tracer-test, the
-# configuration of scripts/test-tracer.sh) and the venv .venv-web. Quick when run again.
+# 12 rendered stimuli, on the local server (SIGKILLed and restarted mid-session) and as the
+# exported jsPsych study (JSON, CSV and a JATOS results archive imported back); the export goes
+# through `python -m pgloss mds` and `magnitude`; bad requests, concurrent subjects, the seed
+# reproducing the order. Sets up its own packages, the binding (.venv-py), pgloss-tracer
+# (build-tracer-test, the configuration of scripts/test-tracer.sh), the venv .venv-web and the
+# pinned jsPsych (scripts/jspsych.sh). Quick when run again. `--full`: the jsPsych study at the
+# paper's settings (3.2°, 500 ms between trials, 5 blind-spot sweeps, 3 practice trials).
 # Nothing is skipped: with PGLOSS_REQUIRE_ALL=1 (CI, scripts/test.sh) a skipped test is a failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -22,6 +25,8 @@ step "configure (build-tracer-test)" cmake -S . -B build-tracer-test -G Ninja -D
   -DPGLOSS_BUILD_CLI=OFF -DPGLOSS_BUILD_EXAMPLES=ON -DPGLOSS_BUILD_TRACER_TESTS=ON
 step "build pgloss-tracer" cmake --build build-tracer-test --target pgloss-tracer
 bash scripts/venv-web.sh
+bash scripts/jspsych.sh
+[[ ${1:-} == --full ]] && export PGLOSS_JSPSYCH_FULL=1
 
 echo "== pytest tests/experiment (headless Chromium $(chromium --version 2>/dev/null | awk '{print $2}'))"
 export PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1

@@ -36,6 +36,10 @@ N = len(LEVELS_C) * len(LEVELS_D)
 PAIRS = N * (N - 1) // 2  # 66 pair trials per subject
 MAGNITUDE = 3 * N  # 36 magnitude trials per subject
 TOKEN = "test-token"
+#: Debian's Chromium, headless with WebGL2 (SwiftShader), for the browser tests (Playwright).
+CHROMIUM = os.environ.get("PGLOSS_CHROMIUM", "/usr/bin/chromium")
+FLAGS = ["--headless=new", "--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--no-sandbox",
+         "--disable-background-networking", "--disable-component-update"]
 
 
 def pgloss_cli(*args: str, check: bool = True, timeout: float = 300) -> subprocess.CompletedProcess:
@@ -139,3 +143,17 @@ def server_factory(tmp_path: Path) -> Iterator:
     yield make
     for s in servers:
         s.stop()
+
+
+@pytest.fixture(scope="module")
+def browser() -> Iterator[Any]:
+    """One headless Chromium per test module (Playwright, imported here so that the tests without
+    a browser do not need it)."""
+    from playwright.sync_api import sync_playwright
+
+    if not Path(CHROMIUM).is_file():
+        pytest.fail(f"no Chromium at {CHROMIUM} (Debian package chromium; scripts/test-experiment.sh installs it)")
+    with sync_playwright() as p:
+        b = p.chromium.launch(executable_path=CHROMIUM, args=FLAGS, headless=True)
+        yield b
+        b.close()

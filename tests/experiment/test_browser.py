@@ -12,135 +12,101 @@ from __future__ import annotations
 
 import csv
 import json
-import os
 import re
 import sqlite3
 import time
 from pathlib import Path
-from typing import Dict, Iterator, List, Tuple
+from typing import Dict, List, Tuple
 
 import numpy as np
 import pytest
-from playwright.sync_api import Browser, Page, sync_playwright
+from playwright.sync_api import Browser, Page
 
 from conftest import MAGNITUDE, N, OUT, PAIRS, TOKEN, pgloss_cli
+from observers import D_WEIGHT, Model, set_slider
 
-CHROMIUM = os.environ.get("PGLOSS_CHROMIUM", "/usr/bin/chromium")
-FLAGS = ["--headless=new", "--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--no-sandbox",
-         "--disable-background-networking", "--disable-component-update"]
-D_WEIGHT = 1.78  # eq. 5: ΔD = sqrt(Δc² + (1.78 Δd)²)
-
-
-@pytest.fixture(scope="module")
-def browser() -> Iterator[Browser]:
-    if not Path(CHROMIUM).is_file():
-        pytest.fail(f"no Chromium at {CHROMIUM} (Debian package chromium; scripts/test-experiment.sh installs it)")
-    with sync_playwright() as p:
-        b = p.chromium.launch(executable_path=CHROMIUM, args=FLAGS, headless=True)
-        yield b
-        b.close()
 
 
 class Observer:
-    """A scripted subject: answers from the model with its own noise, through the page's slider."""
+    """A scripted subject: answers from the model (observers.py) with its own noise, through the page's slider."""
 
     def __init__(self, name: str, stimuli: Dict[str, dict], seed: int, noise: float):
         self.name = name
-        self.seed = seed
-        self.noise = noise
-        self.index = {k: i for i, k in enumerate(stimuli)}
-        self.seen: Dict[str, int] = {}  # magnitude: how often each stimulus was rated in main trials
-        # (c, d) from the manifest's physical parameters by eqs. 3–4, independently of pgloss.
-        self.cd = {k: (float(np.cbrt(s["rho_s"] + s["rho_d"] / 2) - np.cbrt(s["rho_d"] / 2)), 1 - s["alpha"])
-                   for k, s in stimuli.items()}
+        self.model = Model(stimuli, seed, noise)
         self.answers: Dict[Tuple[str, int], int] = {}  # (procedure, trial) → rating given
         self.shown: Dict[str, List[str]] = {"pairs": [], "magnitude": []}
         self.page: Page = None  # type: ignore[assignment]
         self.checked = False
 
     def rating(self, stimuli: List[str], practice: bool = False) -> int:
-        """The model's answer plus noise. The noise is a function of the pair (or of the stimulus and
-        its repetition), not of the order, so that the ratings — and so the MDS — do not depend on
-        the random trial order: the test is deterministic."""
-        key = sorted(self.index[s] for s in stimuli)
-        if len(stimuli) == 1:
-            if practice:
-                key.append(99)
-            else:
-                key.append(self.seen.get(stimuli[0], 0))
-                self.seen[stimuli[0]] = key[-1] + 1
-        noise = np.random.default_rng([self.seed, *key]).normal(0.0, self.noise)
-        if len(stimuli) == 2:
-            (c1, d1), (c2, d2) = self.cd[stimuli[0]], self.cd[stimuli[1]]
-            value = 500.0 * np.hypot(c1 - c2, D_WEIGHT * (d1 - d2))  # the grid's largest ΔD ≈ 0.14 → 70
-        else:
-            c, d = self.cd[stimuli[0]]
-            value = 100.0 * (0.5 * (c - 0.02) / 0.12 + 0.5 * (d - 0.87) / 0.12)
-        return int(np.clip(round(value + noise), 0, 100))
+        return self.model.rating(stimuli, practice)
 
     def open(self, browser: Browser, url: str, procedure: str) -> None:
+        """Start page, consent (a first sitting only), full screen, the screen check, up to the instructions."""
         # bypass_csp: Playwright's wait_for_function evaluates strings, which the page's CSP forbids.
         self.page = browser.new_page(viewport={"width": 1000, "height": 700}, bypass_csp=True)
         self.checked = False
-        self.page.goto(f"{url}/?procedure={procedure}")
-        self.page.wait_for_function("document.body.dataset.ready === '1'")
-        self.page.fill("#subject", self.name)
-        self.page.click("#start-button")
-        self.page.wait_for_function("document.body.dataset.screen === 'instructions'")
+        page = self.page
+        page.goto(f"{url}/?procedure={procedure}")
+        page.wait_for_function("document.body.dataset.ready === '1'")
+        page.fill("#subject", self.name)
+        page.click("#start-button")
+        page.wait_for_function("['consent', 'fullscreen'].includes(document.body.dataset.screen)")
+        if self.screen() == "consent":
+            page.click("#consent-agree")
+        page.click("#fullscreen-button")
+        page.wait_for_selector("#pgloss-gamma-slider")
+        page.fill("#pgloss-gamma-slider", "186")
+        page.click("#pgloss-gamma-done")
+        page.click(".pgloss-black[data-code='4']")
+        page.wait_for_function("document.body.dataset.screen === 'instructions'")
 
     def begin(self) -> None:
         self.page.click("#instructions-button")
         self.page.wait_for_function("['trial', 'done'].includes(document.body.dataset.screen)")
+        self.wait_trial()
+
+    def wait_trial(self) -> None:
+        """Until the trial on screen takes answers (display.js sets data-pgloss-trial then), or the end."""
+        self.page.wait_for_function("document.body.dataset.screen === 'done' || "
+                                    "(document.body.dataset.pglossTrial !== undefined && !!document.getElementById('pgloss-slider'))")
 
     def screen(self) -> str:
         return self.page.evaluate("document.body.dataset.screen")
-
-    def set_slider(self, value: int) -> None:
-        """A click on the track near the value, then arrow keys until the read-out says it."""
-        page = self.page
-        box = page.locator("#slider").bounding_box()
-        page.mouse.click(box["x"] + box["width"] * value / 100.0, box["y"] + box["height"] / 2)
-        for _ in range(40):
-            text = page.inner_text("#readout")
-            if not text.isdigit():  # the click landed on the slider's current value: no input event yet
-                page.keyboard.press("ArrowRight")
-                continue
-            shown = int(text)
-            if shown == value:
-                return
-            page.keyboard.press("ArrowRight" if shown < value else "ArrowLeft")
-        raise AssertionError(f"the slider did not reach {value}")
 
     def answer(self, procedure: str, submit: bool = True, practice: bool = False) -> Tuple[str, List[str], int]:
         """Answers the trial on screen; returns (label, stimuli, rating)."""
         page = self.page
         state = page.evaluate("""() => ({screen: document.body.dataset.screen, label: document.body.dataset.trialLabel,
-            stimuli: [...document.querySelectorAll('#images img')].map(e => e.dataset.stimulus),
-            disabled: document.getElementById('next').disabled,
-            readout: document.getElementById('readout').textContent})""")
+            stimuli: [...document.querySelectorAll('canvas.pgloss-stimulus')].map(e => e.dataset.stimulus),
+            disabled: document.getElementById('pgloss-next').disabled,
+            readout: document.getElementById('pgloss-readout').textContent})""")
         assert state["screen"] == "trial"
         label, stimuli = state["label"], state["stimuli"]
         assert state["disabled"] and state["readout"] == "–", "Next must wait for a slider movement"
         if not self.checked:  # once per page: the paper's display, images at a fixed size on black
-            sizes = page.eval_on_selector_all("#images img", "els => els.map(e => [e.width, e.height, e.naturalWidth])")
-            assert sizes == [[48, 36, 48]] * (2 if procedure == "pairs" else 1)
+            sizes = page.eval_on_selector_all("canvas.pgloss-stimulus", "els => els.map(e => [e.width, e.height])")
+            assert sizes == [[48, 36]] * (2 if procedure == "pairs" else 1)
             assert page.evaluate("getComputedStyle(document.body).backgroundColor") == "rgb(0, 0, 0)"
             low = "0, small difference" if procedure == "pairs" else "0, not glossy"
-            assert page.inner_text("#label-low") == low
+            assert page.inner_text("#pgloss-label-low") == low
             visible = page.evaluate("""() => [...document.querySelectorAll('body *')].filter(e =>
                 e.offsetParent !== null && !e.children.length && e.textContent.trim()).map(e => e.id)""")
-            assert sorted(visible) == ["label-high", "label-low", "next", "progress", "readout"], visible
+            assert sorted(visible) == ["pgloss-label-high", "pgloss-label-low", "pgloss-next", "pgloss-progress",
+                                       "pgloss-readout"], visible
             self.checked = True
         rating = self.rating(stimuli, practice)
-        self.set_slider(rating)
+        set_slider(page, rating)
         if submit:
             self.next(label)
         return label, stimuli, rating
 
     def next(self, label: str) -> None:
-        self.page.click("#next")
+        self.page.click("#pgloss-next")
         self.page.wait_for_function(
             "l => document.body.dataset.screen !== 'trial' || document.body.dataset.trialLabel !== l", arg=label)
+        if self.screen() == "trial":
+            self.wait_trial()
 
     def practice(self, procedure: str) -> None:
         for k in range(3):
@@ -149,11 +115,16 @@ class Observer:
         assert self.screen() == "interlude"
         self.page.click("#interlude-button")
         self.page.wait_for_function("document.body.dataset.screen === 'trial'")
+        self.wait_trial()
 
     def main_trial(self, procedure: str, total: int) -> bool:
         """Answers one main trial; False when the procedure is finished."""
         if self.screen() == "done":
             return False
+        if self.screen() == "pause":  # the break after every 60 trials (serve --break-every)
+            self.page.click("#pause-button")
+            self.page.wait_for_function("document.body.dataset.screen === 'trial'")
+            self.wait_trial()
         label, stimuli, rating = self.answer(procedure)
         k = int(label.split(" of ")[0])
         assert label == f"{k} of {total}"
@@ -194,7 +165,7 @@ def test_full_loop(manifest: Path, server_factory, browser: Browser, tmp_path: P
     label, shown, rating = o1.answer("pairs", submit=False)
     o1.page.screenshot(path=str(OUT / "trial-pairs.png"))
     srv.kill()
-    o1.page.click("#next")  # the answer to trial `half` is now in flight to a dead server
+    o1.page.click("#pgloss-next")  # the answer to trial `half` is now in flight to a dead server
     o1.page.wait_for_selector("#connection", state="visible")
     assert o1.page.evaluate("document.body.dataset.pending") == str(half)
     o1.record("pairs", shown, rating)
@@ -209,7 +180,7 @@ def test_full_loop(manifest: Path, server_factory, browser: Browser, tmp_path: P
     # The subject's browser is closed; they come back in a new page and resume after the last one stored.
     o1.page.close()
     o1.open(browser, srv.url, "pairs")
-    assert o1.page.is_visible("#instructions-resume") and o1.page.inner_text("#resume-done") == str(half + 1)
+    assert o1.page.is_visible("#instructions-resume") and o1.page.get_attribute("#instructions-resume", "data-done") == str(half + 1)
     o1.begin()
     assert o1.page.evaluate("document.body.dataset.trialLabel") == f"{half + 2} of {PAIRS}"
     while o1.main_trial("pairs", PAIRS):

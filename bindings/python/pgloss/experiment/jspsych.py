@@ -213,6 +213,7 @@ def export_jspsych(manifest: dict, out: Path, *, procedure: str, texts: Optional
     if not title.strip() or len(title) > 255 or re.search(r"[<>&]", title):
         raise SpecError("--title: want 1–255 characters without HTML")
 
+    out.parent.mkdir(parents=True, exist_ok=True)
     tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.", dir=out.parent))
     tmp.chmod(0o755)  # mkdtemp's 0700 would keep a web server's user out
     try:

@@ -72,6 +72,11 @@ def _parse_json(text: str, where: str) -> List[dict]:
     return _json_lines(text, where)
 
 
+#: The CSV columns read as numbers (jsPsych's CSV quotes every value); the rest stay text, so that
+#: a subject id of digits is still a string.
+NUMERIC = frozenset({"seed", "pgloss_trial", "rating", "rt", "pgloss_format"})
+
+
 def _number(text: str):
     try:
         return int(text)
@@ -93,7 +98,7 @@ def _parse_csv(text: str, where: str) -> List[dict]:
             if len(cells) != len(header):
                 raise ResultsError(f"{where} row {k}: {len(cells)} fields, the header has {len(header)}; "
                                    "a truncated file?")
-            rows.append({h: _number(v) for h, v in zip(header, cells) if v != ""})
+            rows.append({h: _number(v) if h in NUMERIC else v for h, v in zip(header, cells) if v != ""})
     except csv.Error as e:
         raise ResultsError(f"{where}: not CSV ({e}); a truncated file?") from None
     except StopIteration:

@@ -179,7 +179,10 @@ class Store:
                                        f"{s['client']} says {r['rating']}")
                     else:
                         counts["already"] += 1
-                if not new and not s["screens"]:
+                # A file imported again brings its screens again: keep each one once.
+                stored = {row[0] for row in db.execute("SELECT screen FROM screens WHERE subject=? AND procedure=?", who)}
+                screens = [t for t in (json.dumps(x, sort_keys=True) for x in s["screens"]) if t not in stored]
+                if not new and not screens:
                     continue
                 cur = db.execute("INSERT INTO sittings (subject, procedure, started_at, client) VALUES (?, ?, ?, ?)",
                                  (*who, s["started_at"], s["client"][:200]))
@@ -190,9 +193,8 @@ class Store:
                                (*who, r["trial"], ",".join(r["stimuli"]), r["rating"], float(r["rt_ms"]),
                                 r["received_at"], sitting))
                 counts["responses"] += len(new)
-                for screen in s["screens"]:
-                    db.execute("INSERT INTO screens VALUES (?, ?, ?, ?, ?)",
-                               (sitting, *who, json.dumps(screen, sort_keys=True), utc_now()))
+                for screen in screens:
+                    db.execute("INSERT INTO screens VALUES (?, ?, ?, ?, ?)", (sitting, *who, screen, utc_now()))
         return counts
 
     def sitting(self, sitting: int) -> Optional[tuple]:

@@ -5,13 +5,16 @@
 // labels and read-out, an inter-trial interval) and the screen check (gamma, black level).
 //
 // Device pixels, no resampling blur. A stimulus is shown on a canvas whose backing store has
-// exactly the device pixels it covers (CSS size = device size / devicePixelRatio), so the browser
-// does not rescale it. When the wanted size is below the rendered image's, the image is reduced
-// here by an exact box filter in linear light: each device pixel gets the mean luminance of the
-// image area it covers, which is what a display with that pixel grid would show of the image
-// (code values are decoded with the stated display's gamma, L − black ∝ V^γ, averaged and
-// encoded again). An image is never enlarged: above its rendered size it is shown 1:1 and the
-// visual angle achieved is recorded (render the stimuli larger to reach the stated angle).
+// exactly the device pixels it covers, so the browser does not rescale it. Its size and corner lie
+// on the grid where whole CSS pixels are whole device pixels (pixelGrid): an edge between device
+// pixels (e.g. 33 device pixels = 16.5 CSS pixels at ratio 2) is snapped by the browser one way
+// or the other, and the image is then shifted or cut. When the wanted size is below the
+// rendered image's, the image is reduced here by an exact box filter in linear light: each device
+// pixel gets the mean luminance of the image area it covers, which is what a display with that
+// pixel grid would show of the image (code values are decoded with the stated display's gamma,
+// L − black ∝ V^γ, averaged and encoded again). An image is never enlarged: above its rendered
+// size it is shown 1:1 and the visual angle achieved is recorded (render the stimuli larger to
+// reach the stated angle).
 "use strict";
 (function (root) {
   const doc = root.document;
@@ -90,26 +93,53 @@
     return out;
   }
 
-  // The device-pixel size of a stimulus: the stated visual angle of its width at the measured
-  // viewing distance (mm) and CSS pixels per mm, never above the rendered size.
-  function stimulusSize({ angleDeg, distanceMm, pxPerMm, dpr, imageWidth, imageHeight }) {
-    const dev = dpr || 1;
-    let want = null;
-    if (angleDeg > 0 && distanceMm > 0 && pxPerMm > 0) {
-      want = Math.round(2 * distanceMm * Math.tan((angleDeg * Math.PI) / 360) * pxPerMm * dev);
+  // The device pixel ratio as p/q with the smallest q ≤ 16 (browser zoom times the system's scale:
+  // 2 = 2/1, 1.25 = 5/4, 1.5 = 3/2, 1.1 = 11/10): k·q CSS pixels are exactly k·p device pixels. A
+  // ratio with no such fraction gets the device-pixel grid (exact: false): sizes in device pixels
+  // whose CSS lengths are fractions.
+  function pixelGrid(dpr) {
+    const r = dpr > 0 ? dpr : 1;
+    for (let q = 1; q <= 16; q++) {
+      const p = Math.round(r * q);
+      if (p >= 1 && Math.abs(r * q - p) <= 1e-5 * q) return { p, q, exact: true };
     }
-    const w = Math.max(1, Math.min(imageWidth, want || imageWidth));
-    const h = Math.max(1, Math.round((w * imageHeight) / imageWidth));
+    return { p: 1, q: 1 / r, exact: false };
+  }
+
+  // A length in device pixels as CSS pixels, exact on the grid (no 11 / 1.1000000238 = 9.9999998).
+  function cssLength(devicePx, dpr) {
+    const g = pixelGrid(dpr);
+    return g.exact && devicePx % g.p === 0 ? (devicePx / g.p) * g.q : devicePx / (dpr || 1);
+  }
+
+  // The device-pixel size of a stimulus, on the grid (whole multiples of p device pixels = q CSS
+  // pixels), never above the rendered size: its width the grid's nearest to the stated visual
+  // angle at the measured viewing distance (mm) and CSS pixels per mm, or to cssWidth; without
+  // either, the largest that fits the image. The height is the grid's nearest to the image's
+  // aspect (halves up; integer arithmetic). angleDeg is the visual angle shown.
+  function stimulusSize({ angleDeg, distanceMm, pxPerMm, cssWidth, dpr, imageWidth, imageHeight }) {
+    const dev = dpr || 1;
+    let g = pixelGrid(dev);
+    if (imageWidth < g.p || imageHeight < g.p) g = { p: 1, q: 1 / dev, exact: false };  // never enlarged
+    const p = g.p;
+    let want = null;
+    if (angleDeg > 0 && distanceMm > 0 && pxPerMm > 0) want = 2 * distanceMm * Math.tan((angleDeg * Math.PI) / 360) * pxPerMm * dev;
+    else if (cssWidth > 0) want = cssWidth * dev;
+    const maxW = Math.floor(imageWidth / p), maxH = Math.floor(imageHeight / p);
+    const units = want === null ? maxW : Math.round(want / p);
+    const w = p * Math.max(1, Math.min(maxW, units));
+    const h = p * Math.max(1, Math.min(maxH, Math.floor((2 * w * imageHeight + imageWidth * p) / (2 * imageWidth * p))));
     const achieved = distanceMm > 0 && pxPerMm > 0 ? (360 / Math.PI) * Math.atan(w / dev / pxPerMm / 2 / distanceMm) : null;
-    return { width: w, height: h, wanted: want, limited: want !== null && want > imageWidth, angleDeg: achieved, dpr: dev };
+    return { width: w, height: h, wanted: want === null ? null : Math.round(want), limited: want !== null && units > maxW,
+             angleDeg: achieved, dpr: dev, grid: `${p}/${g.exact ? g.q : "device"}` };
   }
 
   // A canvas showing `pixels` (ImageData) in device pixels; data-device-exact says whether the
   // browser reports exactly that many device pixels for it (devicePixelContentBoxSize).
   function deviceCanvas(pixels, dpr, stimulus) {
     const c = el("canvas", { width: pixels.width, height: pixels.height, class: "pgloss-stimulus" });
-    c.style.width = `${pixels.width / dpr}px`;
-    c.style.height = `${pixels.height / dpr}px`;
+    c.style.width = `${cssLength(pixels.width, dpr)}px`;
+    c.style.height = `${cssLength(pixels.height, dpr)}px`;
     if (stimulus) c.dataset.stimulus = stimulus;
     c.getContext("2d").putImageData(pixels, 0, 0);
     if (root.ResizeObserver) {
@@ -122,6 +152,20 @@
     return c;
   }
 
+  // Moves each canvas (by less than a grid step) so that its corner lies on the grid of the page
+  // (the document; the browser scrolls by whole device pixels): layout centres it at fractions of
+  // a CSS pixel (e.g. (40 − 17) / 2), which would put its edges between device pixels.
+  function alignToDevicePixels(canvases, dpr) {
+    const step = pixelGrid(dpr).q;
+    for (const c of canvases) {
+      c.style.position = "relative";
+      c.style.left = c.style.top = "0px";
+      const r = c.getBoundingClientRect(), x = r.left + root.scrollX, y = r.top + root.scrollY;
+      c.style.left = `${Math.round(x / step) * step - x}px`;
+      c.style.top = `${Math.round(y / step) * step - y}px`;
+    }
+  }
+
   const wait = (ms) => new Promise((ok) => setTimeout(ok, ms));
   const frame = () => new Promise((ok) => requestAnimationFrame(() => ok()));
 
@@ -130,23 +174,34 @@
   // Resolves to {rating, rt_ms, device_exact}.
   async function runTrial(container, { canvases, low, high, next, progress, itiMs = 0, label = "" }) {
     container.replaceChildren();
+    delete doc.body.dataset.pglossTrial;
     if (itiMs > 0) await wait(itiMs);
     const slider = el("input", { id: "pgloss-slider", type: "range", min: "0", max: "100", step: "1", value: "50",
                                  class: "pgloss-slider pgloss-untouched", "aria-label": label });
     const readout = el("output", { id: "pgloss-readout", class: "pgloss-readout", text: "–" });
     const button = el("button", { id: "pgloss-next", class: "pgloss-next jspsych-btn", type: "button", text: next });
     button.disabled = true;
-    container.append(el("div", { class: "pgloss-trial" }, [
+    const block = el("div", { class: "pgloss-trial" }, [
       el("div", { id: "pgloss-images", class: "pgloss-images" }, canvases),
       el("div", { class: "pgloss-response" }, [
         el("div", { class: "pgloss-scale" }, [
           el("span", { id: "pgloss-label-low", class: "pgloss-end pgloss-low", html: low }), slider,
           el("span", { id: "pgloss-label-high", class: "pgloss-end pgloss-high", html: high })]),
         readout, button, el("div", { id: "pgloss-progress", class: "pgloss-progress", text: progress || "" })]),
-    ]));
+    ]);
+    container.append(block);
+    // Aligned whenever the layout changes, before it is painted (ResizeObserver): the page centres
+    // the trial, so text or a window that changes size moves the canvases by fractions of a pixel.
+    const align = () => alignToDevicePixels(canvases, root.devicePixelRatio || 1);
+    const watch = root.ResizeObserver ? new ResizeObserver(align) : null;
+    if (watch) for (const e of [block, container, doc.documentElement]) watch.observe(e);
+    align();
+    if (doc.fonts) await doc.fonts.ready;
+    align();
     await frame();
     await frame();  // the images are on screen from the second frame on
     const t0 = performance.now();
+    doc.body.dataset.pglossTrial = progress || "";  // for scripts (the tests): this trial is up
     return new Promise((resolve) => {
       const touched = () => {
         slider.classList.remove("pgloss-untouched");
@@ -157,6 +212,7 @@
       slider.addEventListener("input", touched);
       slider.addEventListener("keydown", () => setTimeout(touched, 0));
       button.addEventListener("click", () => {
+        if (watch) watch.disconnect();
         button.disabled = true;
         slider.disabled = true;
         resolve({ rating: Number(slider.value), rt_ms: Math.round(performance.now() - t0),
@@ -171,7 +227,7 @@
   // (code values 1–16 on 0) that the subject can see. Resolves to the record of both.
   const BLACK_CODES = [1, 2, 3, 4, 6, 8, 12, 16];
   async function displayCheck(container, texts, dpr) {
-    const sizeCss = 160, dev = Math.round(sizeCss * dpr);
+    const g = pixelGrid(dpr), dev = g.exact ? Math.round(160 / g.q) * g.p : Math.round(160 * dpr);
     const stripes = new ImageData(dev, dev);
     for (let y = 0; y < dev; y++) for (let x = 0; x < dev; x++) {
       const o = 4 * (y * dev + x), v = y % 2 ? 255 : 0;
@@ -181,7 +237,7 @@
     const striped = deviceCanvas(stripes, dpr);
     striped.id = "pgloss-gamma-stripes";
     const patch = el("div", { id: "pgloss-gamma-patch", class: "pgloss-patch" });
-    patch.style.width = patch.style.height = `${dev / dpr}px`;
+    patch.style.width = patch.style.height = `${cssLength(dev, dpr)}px`;
     const slider = el("input", { id: "pgloss-gamma-slider", type: "range", min: "0", max: "255", step: "1", value: "128",
                                  class: "pgloss-slider" });
     const paint = () => { patch.style.background = `rgb(${slider.value},${slider.value},${slider.value})`; };
@@ -190,6 +246,7 @@
     const button = el("button", { id: "pgloss-gamma-done", class: "jspsych-btn", type: "button", text: texts.continue });
     container.replaceChildren(el("div", { class: "pgloss-check" }, [
       el("div", { html: texts.display_check }), el("div", { class: "pgloss-pair" }, [striped, patch]), slider, button]));
+    alignToDevicePixels([striped], dpr);
     const t0 = performance.now();
     await new Promise((ok) => button.addEventListener("click", ok, { once: true }));
     const v = Number(slider.value);
@@ -222,6 +279,6 @@
     };
   }
 
-  root.pglossDisplay = { el, fill, decodeImage, boxWeights, reduce, stimulusSize, deviceCanvas, runTrial, displayCheck,
+  root.pglossDisplay = { el, fill, decodeImage, boxWeights, reduce, pixelGrid, cssLength, stimulusSize, deviceCanvas, alignToDevicePixels, runTrial, displayCheck,
                          screenRecord, wait, BLACK_CODES };
 })(window);

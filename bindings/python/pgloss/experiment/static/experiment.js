@@ -50,11 +50,9 @@ async function persist(path, body) {
 // Every stimulus, decoded once; like persist(), waits out a server that is down.
 async function loadImages() {
   const dpr = window.devicePixelRatio || 1;
-  // The on-screen size asked for (serve --display-size, CSS pixels) in device pixels, never above
-  // the rendered size (display.js: no enlarging, so no resampling blur).
-  const want = Math.round(config.width * dpr), width = Math.min(config.image_width, want);
-  const size = { width, height: Math.max(1, Math.round((width * config.image_height) / config.image_width)),
-                 limited: want > config.image_width };
+  // The on-screen width asked for (serve --display-size, CSS pixels) on display.js's pixel grid,
+  // never above the rendered size (no enlarging, so no resampling blur).
+  const size = D.stimulusSize({ cssWidth: config.width, dpr, imageWidth: config.image_width, imageHeight: config.image_height });
   for (const id of config.stimuli) {
     for (;;) {
       try {
@@ -81,13 +79,8 @@ async function present(stimuli, label) {
   show("trial");
   document.body.dataset.trialLabel = label;
   document.body.dataset.stimuli = stimuli.join(",");
-  delete document.body.dataset.trialReady;
-  const answer = D.runTrial($("trial"), { canvases, low, high, next: texts().next, progress: label, itiMs: config.iti_ms,
-                                          label: run.procedure === "pairs" ? "difference in gloss" : "glossiness" });
-  // The trial is on screen (after the inter-trial interval) once its slider exists.
-  const ready = () => ($("pgloss-slider") ? (document.body.dataset.trialReady = label) : requestAnimationFrame(ready));
-  ready();
-  return answer;
+  return D.runTrial($("trial"), { canvases, low, high, next: texts().next, progress: label, itiMs: config.iti_ms,
+                                   label: run.procedure === "pairs" ? "difference in gloss" : "glossiness" });
 }
 
 async function clicked(id) {
