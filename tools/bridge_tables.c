@@ -894,7 +894,7 @@ static void print_array(FILE *f, const double *v, size_t n)
  * moves no reading of --report's test points by more than 1e-5 in c or d (docs/bridge.md). */
 static void print_floats(FILE *f, const float *v, size_t n)
 {
-    for (size_t i = 0; i < n; ++i) fprintf(f, "%.8e,%s", (double)v[i], (i % 6 == 5) ? "\n" : " ");
+    for (size_t i = 0; i < n; ++i) fprintf(f, "%.9g,%s", (double)v[i], (i % 6 == 5) ? "\n" : " ");
     if (n % 6) fputc('\n', f);
 }
 
