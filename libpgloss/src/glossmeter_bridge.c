@@ -16,7 +16,9 @@
 /* μ nodes of the per-direction factors: Mitsuba's own table size and spacing for roughplastic's
  * t(μ) (MI_ROUGH_TRANSMITTANCE_RES = 64, μ_k = max(1e-6, k/63)); the layered models' albedos
  * use the same nodes with μ_0 = 1e-3, as the table generator does. */
+#ifndef GMB_NMU
 #define GMB_NMU 64
+#endif
 /* Below this α the specular lobe is read as an ideal mirror: it then falls inside every
  * receptor it aims at to within exp(−(margin/2α)²) of its flux (docs/glossmeter.md). */
 #define GMB_ALPHA_MIRROR 1e-4
