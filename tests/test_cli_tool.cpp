@@ -229,13 +229,17 @@ TEST(CliTool, BridgeSharesTheGrammar) {
     EXPECT_NE(r.out.find("\"status\": \"PGLOSS_ERR_BRIDGE_SPECULAR\""), std::string::npos) << r.out;
 }
 
+// Writes text to path (the JSON files the bridge commands read).
+void write_file(const std::string &path, const char *text) {
+    FILE *g = std::fopen(path.c_str(), "w");
+    ASSERT_NE(g, nullptr) << path;
+    std::fputs(text, g);
+    std::fclose(g);
+}
+
 TEST(CliTool, BridgeReadsAMaterialWithTheGrammar) {
     const std::string path = testing::TempDir() + "pgloss_cli_bridge.json";
-    const auto write = [&](const char *text) {
-        FILE *g = std::fopen(path.c_str(), "w");
-        std::fputs(text, g);
-        std::fclose(g);
-    };
+    const auto write = [&](const char *text) { write_file(path, text); };
     write("{\"parameters\": {\"baseColorFactor\": [0.18, 0.18, Infinity, 1], \"roughnessFactor\": 0.17}}");
     expect_usage_error({"bridge", "--from", "gltf", path}, "FILE.json: '" + path +
                        "': \"baseColorFactor\"[2]: 'Infinity' is not a finite number", BRIDGE);
@@ -254,11 +258,7 @@ TEST(CliTool, GlossmeterReadsABridgeMaterial) {
     // What `pgloss bridge` prints is what `pgloss glossmeter --target` reads; the verdict of a
     // material out of the model (a base channel above 1) is a status, the file's faults usage.
     const std::string path = testing::TempDir() + "pgloss_cli_glossmeter_target.json";
-    const auto write = [&](const char *text) {
-        FILE *g = std::fopen(path.c_str(), "w");
-        std::fputs(text, g);
-        std::fclose(g);
-    };
+    const auto write = [&](const char *text) { write_file(path, text); };
     write("{\"parameters\": {\"base_color\": [0.18, 0.18, 0.18], \"specular_roughness\": 0.24,"
           " \"specular_ior\": 1.5, \"specular_weight\": 1.13, \"base_weight\": 1}}");
     expect_verdict({"glossmeter", "--target", "openpbr", path, "--tol", "1e-4"}, "ok", 0);
