@@ -164,8 +164,8 @@ TEST(CliTool, EveryCommandJudgesItsPaint) {
 }
 
 const char *const GLOSSMETER =
-    "glossmeter rho_d rho_s alpha [norm] [--alpha-y A] [--azimuth DEG] [--tol T] [--rgb R G B] | --fig4 [--markdown] "
-    "| --bench";
+    "glossmeter rho_d rho_s alpha [norm] [--alpha-y A] [--azimuth DEG] [--tol T] [--rgb R G B] | --target TARGET "
+    "FILE.json [--azimuth DEG] [--tol T] | --fig4 [--markdown] | --bench";
 const char *const FROM_GLOSS_UNITS =
     "from-gloss-units --L L --g60 G [--a A] [--b B] [--g20 G | --haze H | --doi D | --d D] [--norm N]";
 const char *const FINISH = "finish NAME [--L L] [--a A] [--b B] [--norm N] | --list";
@@ -229,13 +229,17 @@ TEST(CliTool, BridgeSharesTheGrammar) {
     EXPECT_NE(r.out.find("\"status\": \"PGLOSS_ERR_BRIDGE_SPECULAR\""), std::string::npos) << r.out;
 }
 
+// Writes text to path (the JSON files the bridge commands read).
+void write_file(const std::string &path, const char *text) {
+    FILE *g = std::fopen(path.c_str(), "w");
+    ASSERT_NE(g, nullptr) << path;
+    std::fputs(text, g);
+    std::fclose(g);
+}
+
 TEST(CliTool, BridgeReadsAMaterialWithTheGrammar) {
     const std::string path = testing::TempDir() + "pgloss_cli_bridge.json";
-    const auto write = [&](const char *text) {
-        FILE *g = std::fopen(path.c_str(), "w");
-        std::fputs(text, g);
-        std::fclose(g);
-    };
+    const auto write = [&](const char *text) { write_file(path, text); };
     write("{\"parameters\": {\"baseColorFactor\": [0.18, 0.18, Infinity, 1], \"roughnessFactor\": 0.17}}");
     expect_usage_error({"bridge", "--from", "gltf", path}, "FILE.json: '" + path +
                        "': \"baseColorFactor\"[2]: 'Infinity' is not a finite number", BRIDGE);
@@ -248,6 +252,25 @@ TEST(CliTool, BridgeReadsAMaterialWithTheGrammar) {
     std::remove(path.c_str());
     EXPECT_EQ(r.rc, 0) << r.err;
     EXPECT_NE(r.out.find("\"status\": \"ok\""), std::string::npos) << r.out;
+}
+
+TEST(CliTool, GlossmeterReadsABridgeMaterial) {
+    // What `pgloss bridge` prints is what `pgloss glossmeter --target` reads; the verdict of a
+    // material out of the model (a base channel above 1) is a status, the file's faults usage.
+    const std::string path = testing::TempDir() + "pgloss_cli_glossmeter_target.json";
+    const auto write = [&](const char *text) { write_file(path, text); };
+    write("{\"parameters\": {\"base_color\": [0.18, 0.18, 0.18], \"specular_roughness\": 0.24,"
+          " \"specular_ior\": 1.5, \"specular_weight\": 1.13, \"base_weight\": 1}}");
+    expect_verdict({"glossmeter", "--target", "openpbr", path, "--tol", "1e-4"}, "ok", 0);
+    expect_usage_error({"glossmeter", "--target", "blender", path},
+                       "TARGET: 'blender' is not one of openpbr, standard_surface, gltf, gltf_core, principled, "
+                       "roughplastic_ggx, roughplastic_beckmann", GLOSSMETER);
+    expect_usage_error({"glossmeter", "--target", "openpbr"}, "--target takes TARGET FILE.json", GLOSSMETER);
+    expect_usage_error({"glossmeter", "--target", "openpbr", path, "--alpha-y", "0.1"}, "unknown option '--alpha-y'",
+                       GLOSSMETER);
+    write("{\"parameters\": {\"base_color\": [1.2, 0.18, 0.18], \"specular_roughness\": 0.24}}");
+    expect_verdict({"glossmeter", "--target", "openpbr", path}, "PGLOSS_ERR_BRIDGE_BASE", 1);
+    std::remove(path.c_str());
 }
 
 TEST(CliTool, DemoSpellsGrey) {

@@ -361,4 +361,125 @@ TEST(Glossmeter, BadInputGetsAReason)
     EXPECT_EQ(pgloss_glossmeter_read_physical(PGLOSS_CONTRAST_60, &black, 0, 0, &r), PGLOSS_ERR_ARGUMENT);
 }
 
+// ---- the gloss bridge's microfacet targets (pgloss_glossmeter_readings_bridge) ----------------
+
+pgloss_bridge_params bridge_params(double base, double roughness, double ior, double specular)
+{
+    pgloss_bridge_params p{};
+    p.base_color[0] = p.base_color[1] = p.base_color[2] = base;
+    p.roughness = roughness;
+    p.ior = ior;
+    p.specular = specular;
+    return p;
+}
+
+// The targets' conventions for a black dielectric of relative index n (docs/bridge.md): roughness
+// is sqrt(α) except Mitsuba's alpha; Principled's Specular IOR Level 0.5 leaves F0 at the IOR's;
+// Mitsuba's int_ior is relative to its ext_ior "air" = 1.000277.
+struct BridgeCase { pgloss_bridge_target t; bool ggx_roughness; double ior_scale, specular; };
+const BridgeCase kBridgeCases[] = {
+    {PGLOSS_BRIDGE_OPENPBR, true, 1.0, 1.0},          {PGLOSS_BRIDGE_STANDARD_SURFACE, true, 1.0, 1.0},
+    {PGLOSS_BRIDGE_GLTF, true, 1.0, 1.0},             {PGLOSS_BRIDGE_PRINCIPLED, true, 1.0, 0.5},
+    {PGLOSS_BRIDGE_ROUGHPLASTIC_GGX, false, 1.000277, 1.0},
+    {PGLOSS_BRIDGE_ROUGHPLASTIC_BECKMANN, false, 1.000277, 1.0}};
+
+// In the smooth limit a black dielectric reads the Fresnel ratio of ISO 2813's definition,
+// 100 R_F(n, θ)/R_F(1.567, θ), at 20°, 60° and 85°: both through the quadrature of a sharp lobe
+// (α = 2e-4) and as the ideal mirror below α = 1e-4. 2e-3 relative covers the lobe's Fresnel
+// and shadowing at that α (~1e-4) and the aperture's averaging of the two Fresnel curves.
+TEST(GlossmeterBridge, SmoothLimitIsTheFresnelRatio)
+{
+    const double th[3] = {20, 60, 85};
+    for (const BridgeCase &bc : kBridgeCases)
+        for (double n : {1.33, 2.0})
+            for (double alpha : {2e-4, 5e-5}) {
+                if (alpha > 1e-4 && n > 1.5)
+                    continue; // the sharp lobe's quadrature takes ~0.5 s: one index per target
+                const double rough = bc.ggx_roughness ? std::sqrt(alpha) : alpha;
+                const pgloss_bridge_params p = bridge_params(0.0, rough, n * bc.ior_scale, bc.specular);
+                pgloss_glossmeter_readings r;
+                ASSERT_GE(pgloss_glossmeter_readings_bridge(bc.t, &p, 0, 1e-4, &r), PGLOSS_OK)
+                    << pgloss_bridge_target_name(bc.t);
+                for (int k = 0; k < 3; ++k) {
+                    const double c = std::cos(th[k] * kDeg), want = 100.0 * fresnel(n, c) / fresnel(1.567, c);
+                    EXPECT_NEAR(r.r[k].value, want, 2e-3 * want)
+                        << pgloss_bridge_target_name(bc.t) << " n " << n << " alpha " << alpha << " at " << th[k];
+                }
+            }
+}
+
+// Beckmann's D is Ward's Gaussian in tan θh (Ward 1992; Walter et al. 2007 eq. 25), so a black
+// roughplastic at α reads as the Ward paint of the same α whose ρs carries the Fresnel factor
+// and the cosine Ward's lobe lacks: G_beck/R_F(n, θ) = G_ward/(ρs cos θ). The two lobes differ
+// at second order in the window's offsets from the mirror direction (Ward's 1/sqrt(μi μo)
+// against Beckmann's 1/(μi μo cos⁴θh)), O(α² (1 + tan²θ)): at most 1 % at α = 0.05 and 60°.
+// Shadowing is 1 there (Mitsuba's G1 fit is 1 for 1/(α tan θ) >= 1.6). Tolerance 1 %.
+TEST(GlossmeterBridge, BeckmannReadsAsWardOfTheSameAlpha)
+{
+    const double th[2] = {20, 60}, n = 1.5, rho_s = 0.1;
+    for (double alpha : {0.01, 0.02, 0.05}) {
+        const pgloss_bridge_params p = bridge_params(0.0, alpha, n * 1.000277, 1.0);
+        pgloss_glossmeter_readings rb;
+        ASSERT_GE(pgloss_glossmeter_readings_bridge(PGLOSS_BRIDGE_ROUGHPLASTIC_BECKMANN, &p, 0, 1e-5, &rb), PGLOSS_OK);
+        for (int k = 0; k < 2; ++k) {
+            const double c = std::cos(th[k] * kDeg);
+            const double ward = read(static_cast<pgloss_glossmeter_kind>(k), paint(0.0, rho_s, alpha), 1e-6);
+            const double want = ward / (rho_s * c) * fresnel(n, c);
+            EXPECT_NEAR(rb.r[k].value, want, 0.01 * want) << "alpha " << alpha << " at " << th[k];
+        }
+    }
+}
+
+// Over each target's parameter ranges every reading is finite and >= 0, and a base gives
+// contrast gloss a diffuse reference. DOI alone may dip below 0 by quadrature-size amounts where
+// the lobe is far wider than the 0.3° offset (R0.3 ≈ Rs: Fresnel and shadowing tilt the flat top).
+// (Lobes of α ~ 1e-3 take about a second each: the range's ends and middle are read here.)
+TEST(GlossmeterBridge, FiniteAndNonNegativeOverTheRanges)
+{
+    for (const BridgeCase &bc : kBridgeCases)
+        for (double alpha : {1e-5, 0.02, 0.3, 1.0})
+            for (double n : {1.05, 3.0})
+                for (double base : {0.0, 1.0}) {
+                    const double rough = bc.ggx_roughness ? std::sqrt(alpha) : alpha;
+                    const pgloss_bridge_params p = bridge_params(base, rough, n * bc.ior_scale, bc.specular);
+                    pgloss_glossmeter_readings r;
+                    const pgloss_status st = pgloss_glossmeter_readings_bridge(bc.t, &p, 0, 1e-4, &r);
+                    ASSERT_GE(st, PGLOSS_OK) << pgloss_bridge_target_name(bc.t) << " " << alpha << " " << n;
+                    for (int k = 0; k < PGLOSS_GLOSSMETER_KINDS; ++k) {
+                        EXPECT_TRUE(std::isfinite(r.r[k].value));
+                        if (k != PGLOSS_HAZE_INDEX) {
+                            EXPECT_GE(r.r[k].value, k == PGLOSS_DOI_30 ? -0.01 : 0.0)
+                                << pgloss_bridge_target_name(bc.t) << " kind " << k;
+                        }
+                    }
+                    if (base > 0.0) {
+                        EXPECT_GT(r.r[PGLOSS_CONTRAST_60].value, 0.0);
+                    }
+                }
+}
+
+TEST(GlossmeterBridge, BadInputGetsAReason)
+{
+    pgloss_glossmeter_readings r;
+    const pgloss_bridge_params ok = bridge_params(0.5, 0.3, 1.5, 1.0);
+    EXPECT_EQ(pgloss_glossmeter_readings_bridge(PGLOSS_BRIDGE_OPENPBR, nullptr, 0, 0, &r), PGLOSS_ERR_NULL);
+    EXPECT_EQ(pgloss_glossmeter_readings_bridge(PGLOSS_BRIDGE_OPENPBR, &ok, 0, 0, nullptr), PGLOSS_ERR_NULL);
+    EXPECT_EQ(pgloss_glossmeter_readings_bridge(static_cast<pgloss_bridge_target>(99), &ok, 0, 0, &r),
+              PGLOSS_ERR_ARGUMENT);
+    const auto expect = [&](pgloss_bridge_target t, pgloss_bridge_params p, pgloss_status want) {
+        r.r[0].value = 1.0;
+        EXPECT_EQ(pgloss_glossmeter_readings_bridge(t, &p, 0, 0, &r), want) << pgloss_bridge_target_name(t);
+        EXPECT_EQ(r.r[0].value, 0.0);
+    };
+    expect(PGLOSS_BRIDGE_OPENPBR, bridge_params(0.5, -0.1, 1.5, 1.0), PGLOSS_ERR_NEGATIVE);
+    expect(PGLOSS_BRIDGE_OPENPBR, bridge_params(0.5, 0.0, 1.5, 1.0), PGLOSS_ERR_NEGATIVE);
+    expect(PGLOSS_BRIDGE_GLTF, bridge_params(0.5, 0.3, NAN, 1.0), PGLOSS_ERR_NONFINITE);
+    expect(PGLOSS_BRIDGE_PRINCIPLED, bridge_params(1.5, 0.3, 1.5, 0.5), PGLOSS_ERR_BRIDGE_BASE);
+    expect(PGLOSS_BRIDGE_GLTF_CORE, bridge_params(0.5, 0.3, 1.4, 1.0), PGLOSS_ERR_ARGUMENT);
+    expect(PGLOSS_BRIDGE_ROUGHPLASTIC_GGX, bridge_params(0.5, 2.0, 1.5, 1.0), PGLOSS_ERR_BRIDGE_ROUGHNESS);
+    expect(PGLOSS_BRIDGE_GLTF, bridge_params(0.5, 0.3, 1.5, 100.0), PGLOSS_ERR_BRIDGE_SPECULAR);
+    EXPECT_EQ(pgloss_glossmeter_readings_bridge(PGLOSS_BRIDGE_OPENPBR, &ok, 0, 0, &r), PGLOSS_OK);
+    EXPECT_GT(r.r[PGLOSS_GLOSS_60].value, 0.0);
+}
+
 }  // namespace

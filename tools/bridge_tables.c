@@ -22,6 +22,7 @@
 #include <time.h>
 
 #include "bridge_meter.h"
+#include "microfacet_d.h"
 #include "pgloss/pgloss.h"
 
 static void stamp(const char *what)
@@ -396,48 +397,10 @@ enum { M_PRINCIPLED, M_MATERIALX, M_RP_GGX, M_RP_BECKMANN, M_COUNT };
 static const char *const MODEL_NAME[M_COUNT] = {"principled", "materialx", "roughplastic_ggx",
                                                 "roughplastic_beckmann"};
 
-/* Unpolarised Fresnel reflectance of a dielectric interface, relative IOR eta, cosine c > 0. */
-static double fresnel(double c, double eta)
-{
-    double g2 = eta * eta - 1 + c * c;
-    if (g2 <= 0) return 1.0; /* total internal reflection */
-    double g = sqrt(g2), a = (g - c) / (g + c), b = (c * (g + c) - 1) / (c * (g - c) + 1);
-    return 0.5 * a * a * (1 + b * b);
-}
+/* The models' Fresnel, D and G are the library's (microfacet_d.h), which the glossmeter of bridge
+ * targets evaluates too; M_* here number the models as its PGLOSS__MF_* do. */
 static inline double f0_of_eta(double eta) { return ((eta - 1) / (eta + 1)) * ((eta - 1) / (eta + 1)); }
 static double eta_of_f0(double f0) { double s = sqrt(f0); return (1 + s) / (1 - s); }
-
-/* tan²θ of a direction with cosine mu. */
-static double tan2(double mu) { return (1 - mu * mu) / (mu * mu); }
-static double ggx_D(double t2, double a)
-{
-    double a2 = a * a, k = a2 + t2;
-    return a2 * (1 + t2) * (1 + t2) / (PI * k * k);
-}
-static double ggx_lambda(double mu, double a) { return 0.5 * (sqrt(1 + a * a * tan2(mu)) - 1); }
-static double beck_D(double t2, double a) { return exp(-t2 / (a * a)) * (1 + t2) * (1 + t2) / (PI * a * a); }
-/* Mitsuba 3's rational fit of Beckmann's G1 (include/mitsuba/render/microfacet.h, smith_g1). */
-static double beck_G1(double mu, double a)
-{
-    double t = sqrt(tan2(mu));
-    if (t == 0) return 1;
-    double x = 1 / (a * t);
-    return x >= 1.6 ? 1.0 : (3.535 * x + 2.181 * x * x) / (1 + 2.276 * x + 2.577 * x * x);
-}
-
-/* The specular lobe f·(4 μi μo) without the Fresnel factor: D G. */
-static double lobe_DG(int m, double mi, double mo, double t2, double a)
-{
-    switch (m) {
-    case M_PRINCIPLED:
-    case M_MATERIALX: /* height-correlated Smith (Cycles bsdf_G; MaterialX mx_ggx_smith_G2) */
-        return ggx_D(t2, a) / (1 + ggx_lambda(mi, a) + ggx_lambda(mo, a));
-    case M_RP_GGX: /* separable Smith (Mitsuba MicrofacetDistribution::G) */
-        return ggx_D(t2, a) / ((1 + ggx_lambda(mi, a)) * (1 + ggx_lambda(mo, a)));
-    default:
-        return beck_D(t2, a) * beck_G1(mi, a) * beck_G1(mo, a);
-    }
-}
 
 /* Ring r of the albedo quadrature over the half vector (96 rings, log-spaced in θh from a 1e-4
  * cap to π/2, 48 cells over a half circle): its centre cosine and sine, cell area, tan²θh;
@@ -474,8 +437,8 @@ static double albedo(int m, double mu, double a, int kind, double eta)
             if (oh <= 0) continue;
             double mi = 2 * oh * ch - mu;
             if (mi <= 0) continue;
-            double f = lobe_DG(m, mi, mu, t2, a) / (4 * mi * mu);
-            if (kind == 1) f *= fresnel(oh, eta);
+            double f = pgloss__mf_DG_d(m, mi, mu, t2, a) / (4 * mi * mu);
+            if (kind == 1) f *= pgloss__fresnel_any_d(oh, eta);
             if (kind == 2) f *= pow(1 - oh, 5);
             sum += 2 * f * mi * 4 * oh * area;
         }
@@ -491,17 +454,17 @@ static double albedo(int m, double mu, double a, int kind, double eta)
  * to 1e-4 (docs/bridge.md). */
 static double rough_interface(int m, double mu, double a, double eta, int transmit)
 {
-    const double g1i = m == M_RP_BECKMANN ? beck_G1(mu, a) : 1 / (1 + ggx_lambda(mu, a));
+    const double g1i = m == M_RP_BECKMANN ? pgloss__beck_G1_d(mu, a) : 1 / (1 + pgloss__ggx_lambda_d(mu, a));
     double so = sqrt(1 - mu * mu), sum = 0, norm = 0;
     for (int r = 0; r < HR; ++r) {
         const double ch = HRING[r].ch, sh = HRING[r].sh, area = HRING[r].area, t2 = HRING[r].t2;
-        const double D = m == M_RP_BECKMANN ? beck_D(t2, a) : ggx_D(t2, a);
+        const double D = m == M_RP_BECKMANN ? pgloss__beck_D_d(t2, a) : pgloss__ggx_D_d(t2, a);
         for (int k = 0; k < HA; ++k) {
             double c = so * sh * HCOS[k] + mu * ch; /* wi·m */
             if (c <= 0) continue;
             const double vis = 2 * D * g1i * c / mu * area; /* the visible normals' measure */
             norm += vis;
-            double F = fresnel(c, eta), vz, val;
+            double F = pgloss__fresnel_any_d(c, eta), vz, val;
             if (transmit) {
                 double ct2 = 1 - (1 - c * c) / (eta * eta);
                 if (ct2 <= 0) continue;
@@ -514,7 +477,7 @@ static double rough_interface(int m, double mu, double a, double eta, int transm
                 val = F;
             }
             /* |v| = 1 for both the reflected and the refracted direction: |vz| is its cosine. */
-            double g1o = m == M_RP_BECKMANN ? beck_G1(fabs(vz), a) : 1 / (1 + ggx_lambda(fabs(vz), a));
+            double g1o = m == M_RP_BECKMANN ? pgloss__beck_G1_d(fabs(vz), a) : 1 / (1 + pgloss__ggx_lambda_d(fabs(vz), a));
             sum += vis * val * g1o;
         }
     }
@@ -579,13 +542,13 @@ static void image_spec(double *img, int m, double a, double eta, const double *v
     if (GBUF_M != m || GBUF_A != a) {
         for (size_t j = 0; j < (size_t)NPIX * NS; ++j) {
             const spec_sample *s = &SS[j];
-            GBUF[j] = s->w == 0 ? 0 : s->w * lobe_DG(m, s->mi, s->mo, s->t2, a) / (4.0 * s->mi * s->mo);
+            GBUF[j] = s->w == 0 ? 0 : s->w * pgloss__mf_DG_d(m, s->mi, s->mo, s->t2, a) / (4.0 * s->mi * s->mo);
         }
         GBUF_M = m;
         GBUF_A = a;
     }
     static double Ft[NFT];
-    for (int k = 0; k < NFT; ++k) Ft[k] = fresnel(k == 0 ? 1e-6 : (double)k / (NFT - 1), eta);
+    for (int k = 0; k < NFT; ++k) Ft[k] = pgloss__fresnel_any_d(k == 0 ? 1e-6 : (double)k / (NFT - 1), eta);
     for (int p = 0; p < NPIX; ++p) {
         double sum = 0;
         const spec_sample *s = &SS[(size_t)p * NS];
@@ -721,7 +684,7 @@ static void target_images(int m, double f0, double a, double *Dt, double *St)
         for (int i = 0; i < NMO; ++i) {
             E[i] = Ec[i];
             EF[i] = albedo(m, mu_node(i), a, 1, eta);
-            Fh[i] = fresnel(mu_node(i), eta);
+            Fh[i] = pgloss__fresnel_any_d(mu_node(i), eta);
         }
         double Eavg = trap_mu(E);
         if (m == M_PRINCIPLED) {

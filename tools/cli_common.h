@@ -84,6 +84,15 @@ int pgloss_cli_usage_error(pgloss_cli *cli, const char *fmt, ...);
 /* The status line ("status: ok" or "status: NAME (reason)") on out; the exit code. */
 int pgloss_cli_report(pgloss_cli *cli, pgloss_status st);
 
+/* A bridge target's short name (pgloss/bridge.h); 0 after the reason and the usage line. */
+int pgloss_cli_bridge_target(pgloss_cli *cli, const char *text, pgloss_bridge_target *t);
+
+/* A target's parameters from FILE.json under the target's own names (what `pgloss bridge`
+ * prints, or a bare object); absent ior and specular take the target's defaults. Returns
+ * PGLOSS_CLI_OK, or PGLOSS_CLI_USAGE after the reason. */
+int pgloss_cli_bridge_params_file(pgloss_cli *cli, pgloss_bridge_target t, const char *path,
+                                  pgloss_bridge_params *p);
+
 /* Two verdicts as one: the first error, else the first warning, else ok. */
 pgloss_status pgloss_cli_worst(pgloss_status a, pgloss_status b);
 

@@ -57,7 +57,7 @@ static void print_json(FILE *out, pgloss_bridge_target t, pgloss_status st, cons
 }
 
 /* The target named `text`; 0 after the reason (naming every target) and the usage line. */
-static int target_arg(pgloss_cli *cli, const char *text, pgloss_bridge_target *t)
+int pgloss_cli_bridge_target(pgloss_cli *cli, const char *text, pgloss_bridge_target *t)
 {
     char q[PGLOSS_CLI_QUOTE_SIZE], all[256] = "";
     if (pgloss_bridge_target_from_name(text, t) == PGLOSS_OK)
@@ -115,7 +115,8 @@ static int json_find(pgloss_cli *cli, const char *file, const char *text, const 
 
 enum { MAX_JSON = 1 << 16 };
 
-static int from_file(pgloss_cli *cli, pgloss_bridge_target t, const char *path)
+int pgloss_cli_bridge_params_file(pgloss_cli *cli, pgloss_bridge_target t, const char *path,
+                                  pgloss_bridge_params *p)
 {
     char file[PGLOSS_CLI_QUOTE_SIZE];
     pgloss_cli_quote(path, file);
@@ -135,32 +136,41 @@ static int from_file(pgloss_cli *cli, pgloss_bridge_target t, const char *path)
     const names n = target_names(t);
     const char *params = strstr(text, "\"parameters\"");
     const char *body = params ? params : text;
-    pgloss_bridge_params p = {{0, 0, 0}, 0, 0, 1};
+    *p = (pgloss_bridge_params){{0, 0, 0}, 0, 0, 1};
     /* Where a key is absent: the target's own default. */
-    p.ior = (t == PGLOSS_BRIDGE_ROUGHPLASTIC_GGX || t == PGLOSS_BRIDGE_ROUGHPLASTIC_BECKMANN) ? 1.49 : 1.5;
-    p.specular = t == PGLOSS_BRIDGE_PRINCIPLED ? 0.5 : 1;
+    p->ior = (t == PGLOSS_BRIDGE_ROUGHPLASTIC_GGX || t == PGLOSS_BRIDGE_ROUGHPLASTIC_BECKMANN) ? 1.49 : 1.5;
+    p->specular = t == PGLOSS_BRIDGE_PRINCIPLED ? 0.5 : 1;
     int base = 0, rough = 0, ior = 0, spec = 0;
     if (failed)
         pgloss_cli_usage_error(cli, "FILE.json: %s: cannot be read", file);
     else if (too_long)
         pgloss_cli_usage_error(cli, "FILE.json: %s: larger than 64 KiB", file);
-    else if ((base = json_find(cli, file, body, n.base, p.base_color, 3)) < 0 ||
-             (rough = json_find(cli, file, body, n.rough, &p.roughness, 1)) < 0 ||
-             (ior = json_find(cli, file, body, n.ior, &p.ior, 1)) < 0 ||
-             (n.spec && (spec = json_find(cli, file, body, n.spec, &p.specular, 1)) < 0)) {
+    else if ((base = json_find(cli, file, body, n.base, p->base_color, 3)) < 0 ||
+             (rough = json_find(cli, file, body, n.rough, &p->roughness, 1)) < 0 ||
+             (ior = json_find(cli, file, body, n.ior, &p->ior, 1)) < 0 ||
+             (n.spec && (spec = json_find(cli, file, body, n.spec, &p->specular, 1)) < 0)) {
         /* the reason is printed */
     } else if (!base || !rough) {
         pgloss_cli_usage_error(cli, "FILE.json: %s: needs \"%s\" and \"%s\" for %s", file, n.base, n.rough,
                                pgloss_bridge_target_name(t));
     } else {
-        pgloss_perceptual q;
-        double residual;
-        const pgloss_status st = pgloss_bridge_to_perceptual(t, &p, &q, &residual);
-        print_json(cli->out, t, st, &p, &q, &residual);
-        rc = st < 0 ? PGLOSS_CLI_ERROR : PGLOSS_CLI_OK;
+        rc = PGLOSS_CLI_OK;
     }
     free(text);
     return rc;
+}
+
+static int from_file(pgloss_cli *cli, pgloss_bridge_target t, const char *path)
+{
+    pgloss_bridge_params p;
+    const int rc = pgloss_cli_bridge_params_file(cli, t, path, &p);
+    if (rc != PGLOSS_CLI_OK)
+        return rc;
+    pgloss_perceptual q;
+    double residual;
+    const pgloss_status st = pgloss_bridge_to_perceptual(t, &p, &q, &residual);
+    print_json(cli->out, t, st, &p, &q, &residual);
+    return st < 0 ? PGLOSS_CLI_ERROR : PGLOSS_CLI_OK;
 }
 
 static int bridge(pgloss_cli *cli, int argc, char **argv)
@@ -170,13 +180,13 @@ static int bridge(pgloss_cli *cli, int argc, char **argv)
         if (argc != 3)
             return pgloss_cli_usage_error(cli, "--from takes TARGET FILE.json, got %d argument%s", argc - 1,
                                           argc == 2 ? "" : "s");
-        if (!target_arg(cli, argv[1], &t))
+        if (!pgloss_cli_bridge_target(cli, argv[1], &t))
             return PGLOSS_CLI_USAGE;
         return from_file(cli, t, argv[2]);
     }
     if (argc != 6)
         return pgloss_cli_usage_error(cli, "expected 6 arguments, got %d", argc);
-    if (!target_arg(cli, argv[0], &t))
+    if (!pgloss_cli_bridge_target(cli, argv[0], &t))
         return PGLOSS_CLI_USAGE;
     static const char *const nm[5] = {"L", "a", "b", "c", "d"};
     double v[5];

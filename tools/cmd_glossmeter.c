@@ -174,6 +174,30 @@ static int glossmeter(pgloss_cli *cli, int argc, char **argv)
         return pgloss_cli_usage_error(cli, "%s takes %s", argv[0], is_fig4 ? "only --markdown" : "no arguments");
     }
     double ay = NAN, az = 0.0, tol = 0.0, rgb[3];
+    if (argc >= 1 && !strcmp(argv[0], "--target")) {
+        /* a bridge target's material: --target TARGET FILE.json [--azimuth DEG] [--tol T] */
+        pgloss_bridge_target t;
+        pgloss_bridge_params bp;
+        if (argc < 3)
+            return pgloss_cli_usage_error(cli, "--target takes TARGET FILE.json");
+        if (!pgloss_cli_bridge_target(cli, argv[1], &t))
+            return PGLOSS_CLI_USAGE;
+        option topts[] = {{"--azimuth", 1, &az, 0}, {"--tol", 1, &tol, 0}};
+        pgloss_normalization unused = PGLOSS_NORM_WARD;
+        if (read_options(cli, argc - 3, argv + 3, topts, 2, &unused, NULL, 0) < 0)
+            return PGLOSS_CLI_USAGE;
+        const int rc = pgloss_cli_bridge_params_file(cli, t, argv[2], &bp);
+        if (rc != PGLOSS_CLI_OK)
+            return rc;
+        pgloss_glossmeter_readings r;
+        const pgloss_status st = pgloss_glossmeter_readings_bridge(t, &bp, az, tol, &r);
+        if (st >= 0) {
+            fprintf(cli->out, "virtual glossmeter, %s material (docs/glossmeter.md, \"Microfacet targets\")\n",
+                    pgloss_bridge_target_name(t));
+            print_readings(cli->out, &r);
+        }
+        return pgloss_cli_report(cli, st);
+    }
     option opts[] = {{"--alpha-y", 1, &ay, 0}, {"--azimuth", 1, &az, 0}, {"--tol", 1, &tol, 0}, {"--rgb", 3, rgb, 0}};
     char *pos[MAX_POSITIONAL];
     pgloss_normalization n = PGLOSS_NORM_WARD;
@@ -333,7 +357,7 @@ static int finish(pgloss_cli *cli, int argc, char **argv)
 }
 
 const pgloss_cli_command pgloss_cmd_glossmeter = {
-    "glossmeter", "rho_d rho_s alpha [norm] [--alpha-y A] [--azimuth DEG] [--tol T] [--rgb R G B] | --fig4 [--markdown] | --bench",
+    "glossmeter", "rho_d rho_s alpha [norm] [--alpha-y A] [--azimuth DEG] [--tol T] [--rgb R G B] | --target TARGET FILE.json [--azimuth DEG] [--tol T] | --fig4 [--markdown] | --bench",
     "a paint's 20/60/85 deg gloss, haze and DOI readings (ISO 2813, ASTM D523/E430)", glossmeter};
 const pgloss_cli_command pgloss_cmd_from_gloss_units = {
     "from-gloss-units", "--L L --g60 G [--a A] [--b B] [--g20 G | --haze H | --doi D | --d D] [--norm N]",

@@ -8,6 +8,7 @@
 #include "pgloss/bridge.h"
 
 #include "bridge_meter.h"
+#include "microfacet_d.h"
 #include "bridge_tables.inc"
 
 /* The tables as the shared reader takes them (bridge_meter.h). */
@@ -41,6 +42,11 @@ static int ggx_roughness(pgloss_bridge_target t)
 }
 static double f0_of_ior(double ior) { const double r = (ior - 1) / (ior + 1); return r * r; }
 static double ior_of_f0(double f0) { const double s = sqrt(f0); return (1 + s) / (1 - s); }
+
+int pgloss__bridge_model_of(int target)
+{
+    return valid_target((pgloss_bridge_target)target) ? TARGET_MODEL[target] : -1;
+}
 
 const char *pgloss_bridge_target_name(pgloss_bridge_target target)
 {

@@ -645,17 +645,17 @@ pgloss_status pgloss_glossmeter_read_material(pgloss_glossmeter_kind kind, const
     return read_fn(kind, material_eval, (void *)m, fmin(m->alpha_x, m->alpha_y), azimuth_deg, tol, out);
 }
 
-pgloss_status pgloss_glossmeter_readings_physical(const pgloss_physical *p, double azimuth_deg, double tol,
-                                                  pgloss_glossmeter_readings *out)
+pgloss_status pgloss_glossmeter_readings_brdf(const pgloss_glossmeter_brdf *brdf, double azimuth_deg, double tol,
+                                         pgloss_glossmeter_readings *out)
 {
     if (out) memset(out, 0, sizeof *out);
-    if (!p || !out)
+    if (!brdf || !out)
         return PGLOSS_ERR_NULL;
     pgloss_status all = PGLOSS_OK;
     for (int k = 0; k < PGLOSS_GLOSSMETER_KINDS; ++k) {
         if (k == PGLOSS_HAZE_INDEX)
             continue; /* from the two gloss readings below */
-        const pgloss_status st = pgloss_glossmeter_read_physical((pgloss_glossmeter_kind)k, p, azimuth_deg, tol, &out->r[k]);
+        const pgloss_status st = pgloss_glossmeter_read((pgloss_glossmeter_kind)k, brdf, azimuth_deg, tol, &out->r[k]);
         if (st < 0 && !(k == PGLOSS_CONTRAST_60 && st == PGLOSS_ERR_ARGUMENT)) {
             memset(out, 0, sizeof *out);
             return st;
@@ -665,4 +665,18 @@ pgloss_status pgloss_glossmeter_readings_physical(const pgloss_physical *p, doub
     out->r[PGLOSS_HAZE_INDEX].value = out->r[PGLOSS_GLOSS_60].value - out->r[PGLOSS_GLOSS_20].value;
     out->r[PGLOSS_HAZE_INDEX].error = out->r[PGLOSS_GLOSS_60].error + out->r[PGLOSS_GLOSS_20].error;
     return all;
+}
+
+pgloss_status pgloss_glossmeter_readings_physical(const pgloss_physical *p, double azimuth_deg, double tol,
+                                                  pgloss_glossmeter_readings *out)
+{
+    if (out) memset(out, 0, sizeof *out);
+    if (!p || !out)
+        return PGLOSS_ERR_NULL;
+    gm_ward w;
+    const pgloss_status st = ward_of(p, &w);
+    if (st != PGLOSS_OK)
+        return st;
+    const pgloss_glossmeter_brdf b = {ward_eval, NULL, &w, fmin(w.k.alpha_x, w.k.alpha_y)};
+    return pgloss_glossmeter_readings_brdf(&b, azimuth_deg, tol, out);
 }

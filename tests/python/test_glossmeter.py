@@ -70,3 +70,38 @@ def test_finishes():
     with pytest.raises(ValueError):
         gm.finish("lacquer")
     assert gm.fresnel_dielectric(1.567, 1.0) == pytest.approx(((1.567 - 1) / (1.567 + 1)) ** 2, rel=1e-14)
+
+
+def _fresnel(n: float, c: float) -> float:
+    """Unpolarised Fresnel reflectance from the s and p amplitudes (written here)."""
+    ct = math.sqrt(1.0 - (1.0 - c * c) / (n * n))
+    rs, rp = (c - n * ct) / (c + n * ct), (n * c - ct) / (n * c + ct)
+    return 0.5 * (rs * rs + rp * rp)
+
+
+def test_readings_bridge_arrays_and_the_smooth_limit():
+    # A black OpenPBR dielectric in the smooth limit reads ISO 2813's Fresnel ratio; arrays of
+    # materials broadcast, and the JSON names of pgloss bridge are accepted.
+    from pgloss import bridge
+    params = bridge.Params(np.zeros((2, 3)), np.array([1e-3, 0.3]), 1.5, 1.0)
+    r = gm.readings_bridge("openpbr", params, tol=1e-4)
+    assert r.values.shape == (2, 7) and r.status.shape == (2,)
+    for k, th in ((gm.GLOSS_20, 20.0), (gm.GLOSS_60, 60.0), (gm.GLOSS_85, 85.0)):
+        c = math.cos(math.radians(th))
+        want = 100.0 * _fresnel(1.5, c) / _fresnel(1.567, c)
+        assert r.values[0, k] == pytest.approx(want, rel=2e-3)
+    assert r.values[1, gm.GLOSS_60] < r.values[0, gm.GLOSS_60]
+    named = {"base_color": [0.18, 0.18, 0.18], "specular_roughness": 0.24, "specular_ior": 1.5,
+             "specular_weight": 1.13, "base_weight": 1}
+    one = gm.readings_bridge("openpbr", named, tol=1e-4)
+    assert one.values.shape == (7,) and np.all(np.isfinite(one.values))
+
+
+def test_readings_bridge_rejects_with_a_status():
+    from pgloss import bridge
+    bad = bridge.Params(np.array([1.5, 0.2, 0.2]), 0.3, 1.5, 0.5)
+    with pytest.raises(gm.GlossmeterError) as e:
+        gm.readings_bridge("principled", bad)
+    assert e.value.status == pgloss.bridge.ERR_BRIDGE_BASE
+    with pytest.raises(ValueError):
+        gm.readings_bridge("blender", bad)

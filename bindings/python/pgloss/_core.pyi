@@ -7,8 +7,9 @@ pgloss._core: the C core's batches over numpy arrays (use the pgloss package, no
 from __future__ import annotations
 import collections.abc
 import numpy
+import numpy.typing
 import typing
-__all__: list[str] = ['ALPHA_MIN', 'ALPHA_TRUSTED_MAX', 'BOUNDARY_TOLERANCE', 'CIE_EPSILON', 'CIE_KAPPA', 'COS_MIN', 'D_WEIGHT', 'LUMA', 'MIN_ELEMENTS_PER_THREAD', 'Material', 'VERSION', 'check_perceptual', 'check_physical', 'contrast_gloss', 'envelope_contrast', 'eval_pdf', 'eval_pdf_reference', 'get_num_threads', 'gloss_distance', 'gloss_from_physical', 'isogloss_contour', 'lab_from_rgb', 'lightness_from_luminance', 'luminance', 'luminance_from_lightness', 'match_gloss', 'material_init', 'perceptual_from_physical', 'physical_from_gloss', 'physical_from_perceptual', 'rgb_from_lab', 'sample', 'set_num_threads', 'specular_from_contrast', 'specular_probability', 'status_name', 'status_string']
+__all__: list[str] = ['ALPHA_MIN', 'ALPHA_TRUSTED_MAX', 'ASSUMED_DOI_GLOSS', 'BOUNDARY_TOLERANCE', 'BRIDGE_TARGET_COUNT', 'CIE_EPSILON', 'CIE_KAPPA', 'COS_MIN', 'D_WEIGHT', 'ERR_BRIDGE_BASE', 'ERR_BRIDGE_ROUGHNESS', 'ERR_BRIDGE_SPECULAR', 'GLOSSMETER_KINDS', 'GLOSSMETER_TOL', 'GLOSS_STANDARD_INDEX', 'LUMA', 'MIN_ELEMENTS_PER_THREAD', 'Material', 'VERSION', 'bridge_from_perceptual', 'bridge_model_inputs', 'bridge_params_from_model', 'bridge_range', 'bridge_read', 'bridge_target_name', 'bridge_to_perceptual', 'check_perceptual', 'check_physical', 'contrast_gloss', 'envelope_contrast', 'eval_pdf', 'eval_pdf_reference', 'finish_paint', 'finishes', 'fresnel_dielectric', 'get_num_threads', 'gloss_distance', 'gloss_from_physical', 'glossmeter_readings', 'glossmeter_readings_bridge', 'isogloss_contour', 'lab_from_rgb', 'lightness_from_luminance', 'luminance', 'luminance_from_lightness', 'match_gloss', 'material_init', 'paint_from_gloss_units', 'perceptual_from_physical', 'physical_from_gloss', 'physical_from_perceptual', 'rgb_from_lab', 'sample', 'set_num_threads', 'specular_from_contrast', 'specular_probability', 'status_name', 'status_string']
 class Material:
     """
     An evaluation-ready material (pgloss_material): the physical parameters rounded to float
@@ -98,6 +99,20 @@ def _set_min_elements_per_thread(n: typing.SupportsInt | typing.SupportsIndex) -
     ...
 def _test_ranges(units: typing.SupportsInt | typing.SupportsIndex, throw_at: typing.SupportsInt | typing.SupportsIndex) -> list[int]:
     ...
+def bridge_from_perceptual(arg0: typing.SupportsInt | typing.SupportsIndex, arg1: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg2: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg3: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg4: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg5: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> tuple:
+    ...
+def bridge_model_inputs(arg0: typing.SupportsInt | typing.SupportsIndex, arg1: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg2: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg3: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg4: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg5: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg6: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> tuple:
+    ...
+def bridge_params_from_model(arg0: typing.SupportsInt | typing.SupportsIndex, arg1: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg2: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg3: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg4: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg5: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> tuple:
+    ...
+def bridge_range(arg0: typing.SupportsInt | typing.SupportsIndex) -> tuple[float, float, float, float, int]:
+    ...
+def bridge_read(arg0: typing.SupportsInt | typing.SupportsIndex, arg1: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg2: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg3: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> tuple:
+    ...
+def bridge_target_name(arg0: typing.SupportsInt | typing.SupportsIndex) -> str:
+    ...
+def bridge_to_perceptual(arg0: typing.SupportsInt | typing.SupportsIndex, arg1: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg2: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg3: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg4: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg5: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg6: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> tuple:
+    ...
 def check_perceptual(L: numpy.ndarray, a: numpy.ndarray, b: numpy.ndarray, c: numpy.ndarray, d: numpy.ndarray, space: typing.SupportsInt | typing.SupportsIndex, status: numpy.ndarray) -> None:
     ...
 def check_physical(physical: tuple, status: numpy.ndarray) -> None:
@@ -113,12 +128,26 @@ def eval_pdf(material: typing.Any, materials: typing.Any, lobes: typing.Supports
     """
 def eval_pdf_reference(material: Material, lobes: typing.SupportsInt | typing.SupportsIndex, wo: typing.Annotated[collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], "FixedSize(3)"], wi: typing.Annotated[collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], "FixedSize(3)"]) -> tuple[tuple[float, float, float], float, int]:
     ...
+def finish_paint(arg0: str, arg1: typing.SupportsFloat | typing.SupportsIndex, arg2: typing.SupportsFloat | typing.SupportsIndex, arg3: typing.SupportsFloat | typing.SupportsIndex, arg4: typing.SupportsInt | typing.SupportsIndex) -> tuple[float, float, float, float, float, float, bool, int, str]:
+    ...
+def finishes() -> list[tuple]:
+    ...
+def fresnel_dielectric(arg0: typing.SupportsFloat | typing.SupportsIndex, arg1: typing.SupportsFloat | typing.SupportsIndex) -> tuple[float, int]:
+    ...
 def get_num_threads() -> int:
     ...
 def gloss_distance(c1: numpy.ndarray, d1: numpy.ndarray, c2: numpy.ndarray, d2: numpy.ndarray, D: numpy.ndarray, status: numpy.ndarray) -> None:
     ...
 def gloss_from_physical(rho_d: numpy.ndarray, rho_s: numpy.ndarray, alpha: numpy.ndarray, L: numpy.ndarray, c: numpy.ndarray, d: numpy.ndarray, status: numpy.ndarray) -> None:
     ...
+def glossmeter_readings(arg0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg1: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg2: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg3: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg4: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg5: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg6: typing.SupportsInt | typing.SupportsIndex, arg7: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg8: typing.SupportsFloat | typing.SupportsIndex) -> tuple:
+    """
+    pgloss_glossmeter_readings_physical per element: (values (n, 7), errors (n, 7), status (n,)).
+    """
+def glossmeter_readings_bridge(arg0: typing.SupportsInt | typing.SupportsIndex, arg1: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg2: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg3: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg4: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg5: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg6: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg7: typing.SupportsFloat | typing.SupportsIndex) -> tuple:
+    """
+    pgloss_glossmeter_readings_bridge per element: (values (n, 7), errors (n, 7), status (n,)).
+    """
 def isogloss_contour(c0: typing.SupportsFloat | typing.SupportsIndex, d0: typing.SupportsFloat | typing.SupportsIndex, D: typing.SupportsFloat | typing.SupportsIndex, c: numpy.ndarray, d: numpy.ndarray) -> int:
     ...
 def lab_from_rgb(rgb: numpy.ndarray, space: typing.SupportsInt | typing.SupportsIndex, lab: numpy.ndarray, status: numpy.ndarray) -> None:
@@ -133,6 +162,10 @@ def match_gloss(rho_d: numpy.ndarray, rho_s: numpy.ndarray, L_target: numpy.ndar
     ...
 def material_init(v: typing.Annotated[collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], "FixedSize(6)"], normalization: typing.SupportsInt | typing.SupportsIndex) -> tuple[Material, int]:
     ...
+def paint_from_gloss_units(arg0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg1: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg2: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg3: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg4: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], arg5: typing.SupportsInt | typing.SupportsIndex, arg6: typing.SupportsInt | typing.SupportsIndex) -> tuple:
+    """
+    pgloss_paint_from_gloss_units per element: (c, d, status).
+    """
 def perceptual_from_physical(physical: tuple, space: typing.SupportsInt | typing.SupportsIndex, L: numpy.ndarray, a: numpy.ndarray, b: numpy.ndarray, c: numpy.ndarray, d: numpy.ndarray, status: numpy.ndarray) -> None:
     ...
 def physical_from_gloss(L: numpy.ndarray, c: numpy.ndarray, d: numpy.ndarray, rho_d: numpy.ndarray, rho_s: numpy.ndarray, alpha: numpy.ndarray, status: numpy.ndarray) -> None:
@@ -157,11 +190,19 @@ def status_string(status: typing.SupportsInt | typing.SupportsIndex) -> str:
     ...
 ALPHA_MIN: float = 9.999999747378752e-05
 ALPHA_TRUSTED_MAX: float = 0.2
+ASSUMED_DOI_GLOSS: float = 0.93
 BOUNDARY_TOLERANCE: float = 1e-12
+BRIDGE_TARGET_COUNT: int = 7
 CIE_EPSILON: float = 0.008856451679035631
 CIE_KAPPA: float = 903.2962962962963
 COS_MIN: float = 9.999999717180685e-10
 D_WEIGHT: float = 1.78
+ERR_BRIDGE_BASE: int = -13
+ERR_BRIDGE_ROUGHNESS: int = -15
+ERR_BRIDGE_SPECULAR: int = -14
+GLOSSMETER_KINDS: int = 7
+GLOSSMETER_TOL: float = 1e-06
+GLOSS_STANDARD_INDEX: float = 1.567
 LUMA: tuple = (0.21263900587151036, 0.7151686787677559, 0.07219231536073371)
 MIN_ELEMENTS_PER_THREAD: int = 65536
 VERSION: str

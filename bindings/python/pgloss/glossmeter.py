@@ -99,6 +99,21 @@ def readings(paint: Any, *, azimuth: Union[float, np.ndarray] = 0.0, tol: float 
     return Readings(v.reshape(shape + (7,)), e.reshape(shape + (7,)), st.reshape(shape))
 
 
+def readings_bridge(target: Union[str, int], params: Any, *, tol: float = 0.0) -> Readings:
+    """The virtual glossmeter's readings of gloss-bridge ``target`` materials (``params``: a
+    :class:`pgloss.bridge.Params`, or a mapping under the target's own names as ``pgloss bridge``
+    prints them; arrays broadcast): the target's microfacet lobe with its Fresnel and energy
+    compensation plus its diffuse base (docs/glossmeter.md, "Microfacet targets"). The targets are
+    isotropic, so there is no azimuth. Raises :class:`GlossmeterError` for a material the core
+    rejects (NaN, negative, a base channel above 1, F0 = 1, α > 1)."""
+    from . import bridge
+    t = bridge._target("readings_bridge", target)
+    shape, cols = bridge._param_columns("readings_bridge", params, t)
+    v, e, st = _core.glossmeter_readings_bridge(t, *cols, float(tol))
+    _raise_first("readings_bridge", st, shape)
+    return Readings(v.reshape(shape + (7,)), e.reshape(shape + (7,)), st.reshape(shape))
+
+
 def from_gloss_units(L: Any, gloss_60: Any, *, gloss_20: Any = None, haze: Any = None, doi: Any = None,
                      d: Any = None, a: Any = 0.0, b: Any = 0.0, normalization: int = 0,
                      errors: str = "raise") -> Any:
@@ -177,5 +192,5 @@ def fresnel_dielectric(n: float, cos_i: float) -> float:
 
 
 __all__: List[str] = ["GLOSS_20", "GLOSS_60", "GLOSS_85", "HAZE_20", "HAZE_INDEX", "DOI_30", "CONTRAST_60",
-                      "KINDS", "STANDARD_INDEX", "ASSUMED_DOI_GLOSS", "GlossmeterError", "Readings", "readings",
+                      "KINDS", "STANDARD_INDEX", "ASSUMED_DOI_GLOSS", "GlossmeterError", "Readings", "readings", "readings_bridge",
                       "from_gloss_units", "Finish", "FINISHES", "FinishPaint", "finish", "fresnel_dielectric"]

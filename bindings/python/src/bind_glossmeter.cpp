@@ -35,6 +35,14 @@ py::ssize_t common_length(std::initializer_list<const darr *> in) {
     return n;
 }
 
+// Row i of the (n, 7) values and errors.
+void store(const pgloss_glossmeter_readings &out, py::ssize_t i, double *v, double *e) {
+    for (int k = 0; k < PGLOSS_GLOSSMETER_KINDS; ++k) {
+        v[i * PGLOSS_GLOSSMETER_KINDS + k] = out.r[k].value;
+        e[i * PGLOSS_GLOSSMETER_KINDS + k] = out.r[k].error;
+    }
+}
+
 py::tuple readings(const darr &r, const darr &g, const darr &b, const darr &rs, const darr &ax, const darr &ay,
                    int norm, const darr &azimuth, double tol) {
     const py::ssize_t n = common_length({&r, &g, &b, &rs, &ax, &ay, &azimuth});
@@ -50,10 +58,28 @@ py::tuple readings(const darr &r, const darr &g, const darr &b, const darr &rs, 
             const pgloss_physical p = {{pr[i], pg[i], pb[i]}, ps[i], px[i], py_[i], static_cast<pgloss_normalization>(norm)};
             pgloss_glossmeter_readings out;
             s[i] = static_cast<std::int8_t>(pgloss_glossmeter_readings_physical(&p, pa[i], tol, &out));
-            for (int k = 0; k < PGLOSS_GLOSSMETER_KINDS; ++k) {
-                v[i * PGLOSS_GLOSSMETER_KINDS + k] = out.r[k].value;
-                e[i * PGLOSS_GLOSSMETER_KINDS + k] = out.r[k].error;
-            }
+            store(out, i, v, e);
+        }
+    }
+    return py::make_tuple(values, errors, st);
+}
+
+py::tuple readings_bridge(int target, const darr &r, const darr &g, const darr &b, const darr &rough,
+                          const darr &ior, const darr &spec, double tol) {
+    const py::ssize_t n = common_length({&r, &g, &b, &rough, &ior, &spec});
+    py::array_t<double> values({n, py::ssize_t(PGLOSS_GLOSSMETER_KINDS)}), errors({n, py::ssize_t(PGLOSS_GLOSSMETER_KINDS)});
+    py::array_t<std::int8_t> st(n);
+    const double *pr = r.data(), *pg = g.data(), *pb = b.data(), *pro = rough.data(), *pi = ior.data(), *ps = spec.data();
+    double *v = values.mutable_data(), *e = errors.mutable_data();
+    std::int8_t *s = st.mutable_data();
+    {
+        py::gil_scoped_release nogil;
+        for (py::ssize_t i = 0; i < n; ++i) {
+            const pgloss_bridge_params p = {{pr[i], pg[i], pb[i]}, pro[i], pi[i], ps[i]};
+            pgloss_glossmeter_readings out;
+            s[i] = static_cast<std::int8_t>(
+                pgloss_glossmeter_readings_bridge(static_cast<pgloss_bridge_target>(target), &p, 0.0, tol, &out));
+            store(out, i, v, e);
         }
     }
     return py::make_tuple(values, errors, st);
@@ -93,6 +119,8 @@ void bind_glossmeter(py::module_ &mod) {
     mod.attr("ASSUMED_DOI_GLOSS") = PGLOSS_ASSUMED_DOI_GLOSS;
     mod.def("glossmeter_readings", &readings,
             "pgloss_glossmeter_readings_physical per element: (values (n, 7), errors (n, 7), status (n,)).");
+    mod.def("glossmeter_readings_bridge", &readings_bridge,
+            "pgloss_glossmeter_readings_bridge per element: (values (n, 7), errors (n, 7), status (n,)).");
     mod.def("paint_from_gloss_units", &from_gloss_units,
             "pgloss_paint_from_gloss_units per element: (c, d, status).");
     mod.def("fresnel_dielectric", [](double n, double c) {

@@ -68,6 +68,7 @@
 
 #include <stddef.h>
 #include "pgloss/brdf.h"
+#include "pgloss/bridge.h"
 #include "pgloss/perceptual.h"
 
 #ifdef __cplusplus
@@ -194,6 +195,23 @@ PGLOSS_API pgloss_status pgloss_glossmeter_read_material(pgloss_glossmeter_kind 
 PGLOSS_API pgloss_status pgloss_glossmeter_readings_physical(const pgloss_physical *p,
                                                              double azimuth_deg, double tol,
                                                              pgloss_glossmeter_readings *out);
+
+/* Every kind for a BRDF given as functions (CONTRAST_60 is 0 where it has no diffuse at 45°:0°).
+ * Errors as pgloss_glossmeter_read (the first failing kind; outputs 0). */
+PGLOSS_API pgloss_status pgloss_glossmeter_readings_brdf(const pgloss_glossmeter_brdf *brdf, double azimuth_deg,
+                                                    double tol, pgloss_glossmeter_readings *out);
+
+/* Every kind for a gloss-bridge target with its parameters: its specular microfacet lobe (GGX or
+ * Beckmann, α, F0 and base luminance as pgloss_bridge_model_inputs converts them) with the
+ * target's energy compensation, plus its diffuse term as the target defines it
+ * (docs/glossmeter.md, "Microfacet targets"); α < 1e-4 reads as an ideal mirror. Errors: those
+ * of pgloss_bridge_model_inputs (NULL, ARGUMENT, NONFINITE, NEGATIVE), BRIDGE_BASE (a base
+ * channel > 1), BRIDGE_SPECULAR (F0 = 1), BRIDGE_ROUGHNESS (α > 1), then as
+ * pgloss_glossmeter_readings_brdf; outputs 0. */
+PGLOSS_API pgloss_status pgloss_glossmeter_readings_bridge(pgloss_bridge_target target,
+                                                           const pgloss_bridge_params *params,
+                                                           double azimuth_deg, double tol,
+                                                           pgloss_glossmeter_readings *out);
 
 /* ---- inverse: readings → paint --------------------------------------------------------------- */
 
