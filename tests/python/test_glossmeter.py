@@ -50,14 +50,14 @@ def test_round_trip_and_statuses():
     assert q.c == pytest.approx(q0.c, abs=2e-6) and q.d == pytest.approx(q0.d, abs=2e-6)
     qs = gm.from_gloss_units(np.array([q0.L, q0.L]), r.gloss_60, d=np.array([0.9, 0.96]))
     assert qs.c.shape == (2,) and qs.c[0] > qs.c[1]  # a blurrier lobe needs more energy for the same 60° gloss
-    with pytest.raises(gm.GlossmeterError) as e:
+    with pytest.raises(pgloss.PglossError) as e:
         gm.from_gloss_units(50.0, 20.0, gloss_20=90.0)
     assert e.value.status == -16 and math.isfinite(e.value.result.c)
     _, st = gm.from_gloss_units(50.0, 20.0, gloss_20=90.0, errors="status")
     assert st == -16
     with pytest.raises(ValueError):
         gm.from_gloss_units(50.0, 20.0, gloss_20=10.0, haze=3.0)
-    with pytest.raises(gm.GlossmeterError):
+    with pytest.raises(pgloss.PglossError):
         gm.readings(pgloss.Physical(0.2, -0.1, 0.05))
 
 
@@ -100,7 +100,7 @@ def test_readings_bridge_arrays_and_the_smooth_limit():
 def test_readings_bridge_rejects_with_a_status():
     from pgloss import bridge
     bad = bridge.Params(np.array([1.5, 0.2, 0.2]), 0.3, 1.5, 0.5)
-    with pytest.raises(gm.GlossmeterError) as e:
+    with pytest.raises(pgloss.PglossError) as e:
         gm.readings_bridge("principled", bad)
     assert e.value.status == pgloss.bridge.ERR_BRIDGE_BASE
     with pytest.raises(ValueError):

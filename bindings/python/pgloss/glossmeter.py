@@ -32,6 +32,7 @@ from typing import Any, List, NamedTuple, Optional, Tuple, Union
 import numpy as np
 
 from . import _core
+from ._status import PglossError
 
 # Indices of the last axis of Readings.values / .errors (pgloss_glossmeter_kind).
 GLOSS_20, GLOSS_60, GLOSS_85, HAZE_20, HAZE_INDEX, DOI_30, CONTRAST_60 = range(7)
@@ -41,23 +42,6 @@ ASSUMED_DOI_GLOSS: float = _core.ASSUMED_DOI_GLOSS
 
 _WARN_QUADRATURE = 2
 _ERR_NO_FIT = -16
-
-
-class GlossmeterError(ValueError):
-    """A glossmeter call failed: ``status`` (the core's code), ``reason``, ``index`` (first failing
-    element of an array call, else None), ``status_array`` (every element's status, or None) and
-    ``result`` (what the core wrote anyway, e.g. the nearest paint for NO_FIT)."""
-
-    def __init__(self, status: int, function: str, index: Optional[Tuple[int, ...]] = None,
-                 status_array: Optional[np.ndarray] = None, result: Any = None) -> None:
-        self.status = int(status)
-        self.reason = _core.status_string(self.status)
-        self.function = function
-        self.index = index
-        self.status_array = status_array
-        self.result = result
-        where = "" if index is None else f" (first at index {index})"
-        super().__init__(f"pgloss.glossmeter.{function}: {self.reason} [{_core.status_name(self.status)}]{where}")
 
 
 class Readings(NamedTuple):
@@ -80,19 +64,20 @@ def _raise_first(function: str, st: np.ndarray, shape: Tuple[int, ...], result: 
     if bad.size:
         i = int(bad[0])
         index = tuple(int(x) for x in np.unravel_index(i, shape)) if shape else None
-        raise GlossmeterError(int(st.flat[i]), function, index, st.reshape(shape) if shape else None, result)
+        raise PglossError(int(st.flat[i]), f"glossmeter.{function}", index, result, st.reshape(shape) if shape else None)
 
 
 def readings(paint: Any, *, azimuth: Union[float, np.ndarray] = 0.0, tol: float = 0.0) -> Readings:
     """The virtual glossmeter's readings of ``paint`` (a :class:`pgloss.Physical`, one or an array,
     any normalisation, anisotropic lobes) rotated by ``azimuth`` degrees about its normal (broadcast
     against the paints), each to relative tolerance ``tol`` (0: 1e-6) of its flux. Raises
-    :class:`GlossmeterError` for a paint the core rejects (NaN, negative, α <= 0)."""
+    :class:`pgloss.PglossError` for a paint the core rejects (NaN, negative, α <= 0)."""
     from . import Physical  # the package's class (pgloss/__init__.py)
     if not isinstance(paint, Physical):
         raise TypeError(f"pgloss.glossmeter.readings: expected a pgloss.Physical, not {type(paint).__name__}")
     shape = np.broadcast_shapes(paint.shape, np.shape(azimuth))
-    cols = paint._columns(shape)
+    rd, rs, ax, ay, _ = paint._core_arrays(shape)
+    cols = [rd[0], rd[1], rd[2], rs, ax, ay]
     az = np.ascontiguousarray(np.broadcast_to(np.asarray(azimuth, dtype=np.float64), shape)).ravel()
     v, e, st = _core.glossmeter_readings(*cols, int(paint.normalization), az, float(tol))
     _raise_first("readings", st, shape)
@@ -104,7 +89,7 @@ def readings_bridge(target: Union[str, int], params: Any, *, tol: float = 0.0) -
     :class:`pgloss.bridge.Params`, or a mapping under the target's own names as ``pgloss bridge``
     prints them; arrays broadcast): the target's microfacet lobe with its Fresnel and energy
     compensation plus its diffuse base (docs/glossmeter.md, "Microfacet targets"). The targets are
-    isotropic, so there is no azimuth. Raises :class:`GlossmeterError` for a material the core
+    isotropic, so there is no azimuth. Raises :class:`pgloss.PglossError` for a material the core
     rejects (NaN, negative, a base channel above 1, F0 = 1, α > 1)."""
     from . import bridge
     t = bridge._target("readings_bridge", target)
@@ -179,7 +164,7 @@ def finish(name: str, L: float = 50.0, a: float = 0.0, b: float = 0.0, normaliza
                                                                 int(normalization))
     res = FinishPaint(fname, Perceptual(float(L), float(a), float(b), c, d), (c0, c1), (d0, d1), sheen, st)
     if st < 0 and st != _ERR_NO_FIT:
-        raise GlossmeterError(st, "finish", result=res)
+        raise PglossError(st, "glossmeter.finish", result=res)
     return res
 
 
@@ -187,10 +172,10 @@ def fresnel_dielectric(n: float, cos_i: float) -> float:
     """Unpolarised Fresnel reflectance of a dielectric of index n > 1 at incidence cosine cos_i."""
     r, st = _core.fresnel_dielectric(float(n), float(cos_i))
     if st < 0:
-        raise GlossmeterError(st, "fresnel_dielectric")
+        raise PglossError(st, "glossmeter.fresnel_dielectric")
     return float(r)
 
 
 __all__: List[str] = ["GLOSS_20", "GLOSS_60", "GLOSS_85", "HAZE_20", "HAZE_INDEX", "DOI_30", "CONTRAST_60",
-                      "KINDS", "STANDARD_INDEX", "ASSUMED_DOI_GLOSS", "GlossmeterError", "Readings", "readings", "readings_bridge",
+                      "KINDS", "STANDARD_INDEX", "ASSUMED_DOI_GLOSS", "Readings", "readings", "readings_bridge",
                       "from_gloss_units", "Finish", "FINISHES", "FinishPaint", "finish", "fresnel_dielectric"]
