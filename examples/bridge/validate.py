@@ -388,6 +388,19 @@ def validation_table(r: Renderers, meter: Meter, args: argparse.Namespace,
     return out
 
 
+def command_line(argv: Sequence[str], report: str) -> List[str]:
+    """The command that writes ``report``: argv with the positional ``all`` written as ``report``;
+    an option's value ``all`` (``--paints all``) stays as it is."""
+    out: List[str] = []
+    value_next = False
+    for a in argv:
+        if a == "all" and not value_next:
+            a = report
+        value_next = a.startswith("--") and "=" not in a and a != "--quick"
+        out.append(a)
+    return out
+
+
 def main(argv: Optional[List[str]] = None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -426,7 +439,7 @@ def main(argv: Optional[List[str]] = None) -> int:
     reports = ["table", "harnesses"] if args.report == "all" else [args.report]
     for report in reports:
         t0, l0 = time.time(), os.getloadavg()[0]
-        cmd = [report if a == "all" else a for a in argv]
+        cmd = command_line(argv, report)
         if report == "harnesses":
             title, default = "The gloss bridge's instruments: harnesses and image gloss meter", "docs/bridge-harnesses.md"
         else:

@@ -85,6 +85,16 @@ def test_view_is_the_stimulus_sphere(view: im.View) -> None:
     assert (x0 * 2 + w, y0 * 2 + h) == (view.width, view.height)  # centred
 
 
+def test_report_names_the_command_that_wrote_it() -> None:
+    # A generated doc must name a command that regenerates it: `all` runs both reports and each is
+    # named by its own, but the value of `--paints all` is the paints, not the report.
+    import validate
+
+    argv = ["all", "--paints", "all", "--spp", "256", "--quick"]
+    assert validate.command_line(argv, "table") == ["table", "--paints", "all", "--spp", "256", "--quick"]
+    assert validate.command_line(["--paints", "all", "table"], "table") == ["--paints", "all", "table"]
+
+
 @pytest.mark.parametrize("rs,a", [(0.066, 0.07), (0.033, 0.04), (0.099, 0.1)])
 def test_meter_control_tracer_ward(basis: im.Basis, view: im.View, rs: float, a: float) -> None:
     img = _tracer(view, RD, rs, a, 512, 91)
