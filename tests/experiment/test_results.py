@@ -11,6 +11,7 @@ also when the bad file sits in the middle of a batch of good ones. Then the JATO
 (.jzip) of `export-jspsych` against JATOS's documented format."""
 from __future__ import annotations
 
+import hashlib
 import importlib.util
 import json
 import re
@@ -39,8 +40,6 @@ class Study:
     SHA-256, as every row of the study carries it)."""
 
     def __init__(self, manifest: Path):
-        import hashlib
-
         self.manifest = manifest
         self.ids = [s["id"] for s in json.loads(manifest.read_text())["stimuli"]]
         digest = hashlib.sha256(manifest.read_bytes()).hexdigest()
@@ -318,15 +317,30 @@ BAD: Dict[str, Tuple[Callable[[Study, Path], Path], str]] = {
 }
 
 
+@pytest.fixture(scope="module")
+def batch(study: Study, tmp_path_factory) -> List[Path]:
+    """Two good files of two new subjects, to go around a bad one."""
+    d = tmp_path_factory.mktemp("batch")
+    return [write(d / "new-a.json", json_text(run_rows(study, "pairs", "new-a", 11))),
+            write(d / "new-b.csv", csv_text(run_rows(study, "magnitude", "new-b", 12)))]
+
+
+def test_batch_files_import(study: Study, populated, batch: List[Path], tmp_path: Path):
+    """The good files around each bad one below import alone: what those imports refuse is the bad file."""
+    db = tmp_path / "store.sqlite"
+    shutil.copyfile(populated[0], db)
+    assert f"{PAIRS + MAGNITUDE} responses in 2 sittings imported" in import_files(study, db, *batch).stdout
+    assert store_state(db)["responses"] == populated[1]["responses"] + PAIRS + MAGNITUDE
+
+
 @pytest.mark.parametrize("case", list(BAD))
-def test_bad_file_imports_nothing(case: str, study: Study, populated, tmp_path: Path):
+def test_bad_file_imports_nothing(case: str, study: Study, populated, batch: List[Path], tmp_path: Path):
     """Each bad file alone, and in the middle of a batch whose other files are good and new:
     exit status 2, the reason on stderr (no traceback), the store unchanged."""
     base, state, _ = populated
     make, reason = BAD[case]
     bad = make(study, tmp_path)
-    good = [write(tmp_path / "new-a.json", json_text(run_rows(study, "pairs", "new-a", 11))),
-            write(tmp_path / "new-b.csv", csv_text(run_rows(study, "magnitude", "new-b", 12)))]
+    good = batch
     for files in ([bad], [good[0], bad, good[1]]):
         db = tmp_path / "store.sqlite"
         shutil.copyfile(base, db)
@@ -336,7 +350,99 @@ def test_bad_file_imports_nothing(case: str, study: Study, populated, tmp_path: 
         assert run.stderr.startswith("pgloss experiment: ") and run.stdout == "", run.stderr
         assert bad.name in run.stderr, run.stderr  # names the file
         assert store_state(db) == state, case
-    # The good files of the batch do import alone (what was refused above was the bad file).
-    db = tmp_path / "store.sqlite"
-    shutil.copyfile(base, db)
-    assert f"{PAIRS + MAGNITUDE} responses in 2 sittings imported" in import_files(study, db, *good).stdout
+
+
+#: JATOS's worker types, as the JAS schema lists them for allowedWorkerTypes.
+JATOS_WORKERS = {"GeneralMultiple", "GeneralSingle", "Jatos", "MTSandbox", "MT", "PersonalMultiple", "PersonalSingle"}
+#: The JAS schema's optional study properties and their types; None where the documented example
+#: itself gives null (studyEntryMsg, jsonData, a batch's comments and limits).
+STUDY_OPTIONAL = {"description": str, "groupStudy": bool, "linearStudy": bool, "allowPreview": bool, "comments": str,
+                  "jsonData": str, "endRedirectUrl": str, "studyEntryMsg": str, "batchList": list}
+COMPONENT_OPTIONAL = {"reloadable": bool, "active": bool, "comments": str, "jsonData": str}
+BATCH_OPTIONAL = {"active": bool, "maxActiveMembers": int, "maxTotalMembers": int, "maxTotalWorkers": int,
+                  "comments": str, "jsonData": str}
+
+
+class Links(HTMLParser):
+    """The local files an HTML page loads (src and href that are not URLs or fragments)."""
+
+    def __init__(self):
+        super().__init__()
+        self.files: List[str] = []
+
+    def handle_starttag(self, tag, attrs):
+        for k, v in attrs:
+            if k in ("src", "href") and v and not re.match(r"[a-z]+:|#|//", v):
+                self.files.append(v.split("?")[0].split("#")[0])
+
+
+def check_types(obj: dict, required: Dict[str, type], optional: Dict[str, type], what: str) -> None:
+    def ok(v, kind: type) -> bool:  # JSON's true/false are no integers here
+        return isinstance(v, kind) and (kind is bool) == isinstance(v, bool)
+
+    for key, kind in required.items():
+        assert ok(obj.get(key), kind), f"{what}: {key} is {obj.get(key)!r}, want {kind.__name__}"
+    for key, kind in optional.items():
+        assert obj.get(key) is None or ok(obj[key], kind), f"{what}: {key} is {obj[key]!r}, want {kind.__name__} or null"
+
+
+def check_uuid(text: str, what: str) -> str:
+    assert str(uuid.UUID(text)) == text, f"{what}: {text!r} is not a UUID in canonical form"
+    return text
+
+
+def test_jatos_study_archive(study: Study, tmp_path: Path):
+    """The .jzip of `export-jspsych` against JATOS's documented study archive format ("JATOS Study
+    Archive (JZIP)", https://www.jatos.org/JATOS-Study-Archive-JZIP.html, in the JATOS_docs
+    repository, JATOS 3.x): a ZIP holding the study assets directory (named by the study
+    properties' dirName) and one .jas file, the study properties as JSON: required version
+    (string) and data; data requires uuid, title, dirName and componentList (each component uuid,
+    title, htmlFilePath); batchList's batches uuid, title and allowedWorkerTypes from JATOS's
+    worker types. Beyond the schema: the UUIDs are UUIDs, unique, the same on a re-export and
+    different for the other procedure; each component's HTML file is in the archive, and every
+    file it loads but jatos.js (which JATOS serves); the folder in the archive is the exported folder byte for byte."""
+    seen: Dict[str, dict] = {}
+    for procedure, name in (("pairs", "pairs"), ("magnitude", "magnitude"), ("pairs", "pairs-again")):
+        out = tmp_path / name
+        pgloss_cli("experiment", "export-jspsych", str(study.manifest), "--procedure", procedure, "--out", str(out))
+        jzip = out.with_name(out.name + ".jzip")
+        with zipfile.ZipFile(jzip) as z:
+            assert z.testzip() is None
+            names = [n for n in z.namelist() if not n.endswith("/")]
+            assert all(not n.startswith("/") and ".." not in n.split("/") and "\\" not in n for n in names), names
+            top = {n.split("/")[0] for n in names}
+            jas_files = [n for n in names if "/" not in n]
+            assert len(jas_files) == 1 and jas_files[0].endswith(".jas"), jas_files
+            folders = top - set(jas_files)
+            assert len(folders) == 1, top
+            jas = json.loads(z.read(jas_files[0]).decode("utf-8"))
+            folder = folders.pop()
+            files = {n[len(folder) + 1:]: z.read(n) for n in names if n.startswith(folder + "/")}
+        assert isinstance(jas, dict) and set(jas) == {"version", "data"}, jas.keys()
+        assert jas["version"] == "3", jas["version"]  # the study serial version the schema describes
+        data = jas["data"]
+        check_types(data, {"uuid": str, "title": str, "dirName": str, "componentList": list}, STUDY_OPTIONAL, "study")
+        assert data["dirName"] == folder and re.fullmatch(r"[A-Za-z0-9_-]{1,100}", folder), (data["dirName"], folder)
+        assert data["title"].strip() and not re.search(r"[<>]", data["title"])
+        ids = [check_uuid(data["uuid"], "study")]
+        assert data["componentList"], "no component"
+        for c in data["componentList"]:
+            check_types(c, {"uuid": str, "title": str, "htmlFilePath": str}, COMPONENT_OPTIONAL, "component")
+            ids.append(check_uuid(c["uuid"], "component"))
+            page = c["htmlFilePath"]
+            assert not page.startswith("/") and ".." not in page.split("/") and page in files, (page, sorted(files))
+            links = Links()
+            links.feed(files[page].decode("utf-8"))
+            # jatos.js is JATOS's own, served beside the component's page ("jatos.js Reference").
+            assert links.files and all(f in files for f in links.files if f != "jatos.js"), (links.files, sorted(files))
+        for b in data.get("batchList") or []:
+            check_types(b, {"uuid": str, "title": str, "allowedWorkerTypes": list}, BATCH_OPTIONAL, "batch")
+            ids.append(check_uuid(b["uuid"], "batch"))
+            assert b["allowedWorkerTypes"] and set(b["allowedWorkerTypes"]) <= JATOS_WORKERS, b["allowedWorkerTypes"]
+        assert len(set(ids)) == len(ids), ids
+        on_disk = {p.relative_to(out).as_posix(): p.read_bytes() for p in out.rglob("*") if p.is_file()}
+        assert files == on_disk
+        assert len([f for f in files if f.startswith("stimuli/")]) == len(study.ids)
+        seen[name] = {"ids": ids, "dir": folder}
+    assert seen["pairs-again"] == seen["pairs"]  # a re-export updates the same study in JATOS
+    assert not set(seen["pairs"]["ids"]) & set(seen["magnitude"]["ids"]) and seen["pairs"]["dir"] != seen["magnitude"]["dir"]
