@@ -13,8 +13,9 @@ import sys
 import time
 import urllib.error
 import urllib.request
+import zipfile
 from pathlib import Path
-from typing import Any, Dict, Iterator, Optional, Tuple
+from typing import Any, Dict, Iterator, List, Optional, Tuple
 
 import pytest
 
@@ -54,6 +55,23 @@ def free_port() -> int:
     with socket.socket() as s:
         s.bind(("127.0.0.1", 0))
         return int(s.getsockname()[1])
+
+
+def jrzip(path: Path, runs: List[tuple], compression: int = zipfile.ZIP_DEFLATED) -> Path:
+    """A JATOS results archive as JATOS 3.x writes it (ResultStreamer, IOUtils.getResultsPathForZip,
+    JsonUtils.studyResultMetadata): metadata.json and study_result_N/comp-result_M/data.txt; runs are
+    (study title, data.txt file)."""
+    meta = {"data": []}
+    with zipfile.ZipFile(path, "w", compression) as z:
+        for k, (title, data) in enumerate(runs, 1):
+            sr, cr = 100 + k, 200 + k
+            z.writestr(f"study_result_{sr}/comp-result_{cr}/data.txt", data.read_text(encoding="utf-8"))
+            meta["data"].append({"studyId": k, "studyUuid": f"uuid-{k}", "studyTitle": title, "studyResults": [{
+                "id": sr, "uuid": f"sr-{k}", "studyState": "FINISHED", "workerId": 77, "workerType": "GeneralSingle",
+                "componentResults": [{"id": cr, "componentState": "FINISHED", "path": f"/study_result_{sr}/comp-result_{cr}",
+                                      "data": {"size": data.stat().st_size}, "files": []}]}]})
+        z.writestr("metadata.json", json.dumps(meta))
+    return path
 
 
 @pytest.fixture(scope="session")

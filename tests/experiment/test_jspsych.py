@@ -30,7 +30,6 @@ import shutil
 import subprocess
 import threading
 import time
-import zipfile
 from fractions import Fraction
 from pathlib import Path
 from typing import Dict, Iterator, List, Optional
@@ -39,7 +38,7 @@ import numpy as np
 import pytest
 from playwright.sync_api import Browser, Page
 
-from conftest import MAGNITUDE, OUT, PAIRS, PY, ROOT, pgloss_cli
+from conftest import MAGNITUDE, OUT, PAIRS, PY, ROOT, jrzip, pgloss_cli
 from observers import D_WEIGHT, Model, set_slider, thumb_hidden
 from pngio import read_png
 from recovery import distances, procrustes_r2, spearman
@@ -236,22 +235,6 @@ class Observer:
         path = out / dl.value.suggested_filename
         dl.value.save_as(path)
         return path
-
-
-def jrzip(path: Path, runs: List[tuple]) -> Path:
-    """A JATOS results archive as JATOS 3.x writes it (ResultStreamer, IOUtils.getResultsPathForZip,
-    JsonUtils.studyResultMetadata): metadata.json and study_result_N/comp-result_M/data.txt."""
-    meta = {"data": []}
-    with zipfile.ZipFile(path, "w", zipfile.ZIP_DEFLATED) as z:
-        for k, (title, data) in enumerate(runs, 1):
-            sr, cr = 100 + k, 200 + k
-            z.writestr(f"study_result_{sr}/comp-result_{cr}/data.txt", data.read_text(encoding="utf-8"))
-            meta["data"].append({"studyId": k, "studyUuid": f"uuid-{k}", "studyTitle": title, "studyResults": [{
-                "id": sr, "uuid": f"sr-{k}", "studyState": "FINISHED", "workerId": 77, "workerType": "GeneralSingle",
-                "componentResults": [{"id": cr, "componentState": "FINISHED", "path": f"/study_result_{sr}/comp-result_{cr}",
-                                      "data": {"size": data.stat().st_size}, "files": []}]}]})
-        z.writestr("metadata.json", json.dumps(meta))
-    return path
 
 
 def test_stimulus_size_on_the_pixel_grid(browser: Browser):

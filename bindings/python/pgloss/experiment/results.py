@@ -31,6 +31,7 @@ import json
 import math
 import re
 import zipfile
+import zlib
 from pathlib import Path
 from typing import Dict, Iterable, List, Tuple
 
@@ -130,7 +131,8 @@ def _read(path: Path) -> List[Tuple[str, List[dict]]]:
                         raise ResultsError(f"{path}: metadata.json is not JATOS's results metadata")
                 return [(f"{path.name}:{n}", _json_lines(z.read(n).decode("utf-8"), f"{path}:{n}"))
                         for n in sorted(names)]
-        except (zipfile.BadZipFile, EOFError, ValueError, UnicodeDecodeError) as e:
+        # zlib.error: a damaged deflate stream breaks before its CRC can be checked.
+        except (zipfile.BadZipFile, zlib.error, EOFError, ValueError, UnicodeDecodeError) as e:
             raise ResultsError(f"{path}: not a complete ZIP / JATOS results archive ({e}); a truncated file?") \
                 from None
     try:
