@@ -14,22 +14,14 @@
 
 #include "pgloss/pgloss.h"
 
+#include "flat_arrays.h"
+
 namespace py = pybind11;
 
 namespace {
 
-using darr = py::array_t<double, py::array::c_style | py::array::forcecast>;
-
-// The flat inputs' common length (all must be 1-D and equally long).
-py::ssize_t common_length(std::initializer_list<const darr *> in) {
-    py::ssize_t n = -1;
-    for (const darr *a : in) {
-        if (a->ndim() != 1 || (n >= 0 && a->size() != n))
-            throw std::invalid_argument("pgloss._core: inputs must be flat arrays of equal length");
-        n = a->size();
-    }
-    return n;
-}
+using pgloss_py::common_length;
+using pgloss_py::darr;
 
 pgloss_bridge_target target_of(int t) {
     if (t < 0 || t >= PGLOSS_BRIDGE_TARGET_COUNT)
