@@ -395,13 +395,13 @@ void pgloss_impl_eval_pdf(pgloss_material m, uint act, vec3 o, vec3 i, out vec3 
             vec3 d = i - o;
             float q = 0.25 * dot(d, s); /* (|i|² − |o|²)/4 */
             vec3 h = s - q * d;         /* parallel to ô + î */
-            /* 4. cosines raised to COS_MIN; one reciprocal */
+            /* 4. cosines raised to COS_MIN; two reciprocals: at grazing angles the product
+               h.z·(ci + co) underflows to 0 on GPUs, which flush subnormals */
             float ci = max(cos_i, PGLOSS_COS_MIN);
             float co = max(cos_o, PGLOSS_COS_MIN);
             float hzc = ci + co;
-            float r = 1.0 / (max(h.z, PGLOSS_FLT_MIN) * hzc); /* GPUs flush subnormals */
-            float inv_hz = r * hzc;
-            float inv_hzc = r * max(h.z, PGLOSS_FLT_MIN);
+            float inv_hz = 1.0 / max(h.z, PGLOSS_FLT_MIN);
+            float inv_hzc = 1.0 / hzc;
             /* 5. eq. 2's exponential */
 #ifdef PGLOSS_NO_ANISOTROPY
             vec2 t2 = h.xy * (m.inv_alpha_x * inv_hz);

@@ -33,7 +33,7 @@ def test_vectors_ward_readings():
 
 
 def test_arrays_broadcast_and_match_scalars():
-    paints = pgloss.Physical([0.03, 0.193, 0.767], 0.066, 0.07)
+    paints = pgloss.Physical(np.repeat([[0.03], [0.193], [0.767]], 3, axis=1), 0.066, 0.07)  # three grey paints
     r = gm.readings(paints, azimuth=np.array([[0.0], [30.0]]))
     assert r.values.shape == (2, 3, 7) and r.errors.shape == (2, 3, 7) and r.status.shape == (2, 3)
     one = gm.readings(pgloss.Physical(0.193, 0.066, 0.07))
