@@ -395,8 +395,8 @@ void pgloss_impl_eval_pdf(pgloss_material m, uint act, vec3 o, vec3 i, out vec3 
             vec3 d = i - o;
             float q = 0.25 * dot(d, s); /* (|i|² − |o|²)/4 */
             vec3 h = s - q * d;         /* parallel to ô + î */
-            /* 4. cosines raised to COS_MIN; two reciprocals: at grazing angles the product
-               h.z·(ci + co) underflows to 0 on GPUs, which flush subnormals */
+            /* 4. cosines raised to COS_MIN; one reciprocal */
+            /* (here two: at grazing angles h.z·(ci + co) underflows to 0 on GPUs, which flush subnormals) */
             float ci = max(cos_i, PGLOSS_COS_MIN);
             float co = max(cos_o, PGLOSS_COS_MIN);
             float hzc = ci + co;
