@@ -11,6 +11,7 @@
 # test is a failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/step.sh
 export PGLOSS_REQUIRE_ALL="${PGLOSS_REQUIRE_ALL:-1}"
 # libllvm19: Dr.Jit's LLVM back end (Mitsuba's llvm_ad_rgb); the tracer's packages as test-tracer.sh.
 bash scripts/bootstrap.sh apt g++ cmake python3 python3-venv python3-dev libllvm19 pkg-config libembree-dev \
@@ -24,10 +25,10 @@ bash scripts/venv-pgloss.sh .venv-bridge mitsuba==3.9.1 drjit==1.5.0 openimageio
   numpy==2.4.6 pytest==9.2.0 scikit-build-core==1.1.2 pybind11==3.1.0
 
 echo "== pgloss-tracer (build-tracer-test) and the pgloss tool (build-test; its bridge command maps the paints)"
-cmake --preset tracer-test >/dev/null
-cmake --build --preset tracer-test --target pgloss-tracer >/dev/null
-cmake --preset test >/dev/null
-cmake --build --preset test --target pgloss_cli >/dev/null
+step "configure (build-tracer-test)" cmake --preset tracer-test
+step "build pgloss-tracer (build-tracer-test)" cmake --build --preset tracer-test --target pgloss-tracer
+step "configure (build-test)" cmake --preset test
+step "build pgloss_cli (build-test)" cmake --build --preset test --target pgloss_cli
 
 # Dr.Jit loads the first libLLVM it finds; clang's LLVM 14 aborts it ("Cannot select: fminimum").
 llvm=$(ls /usr/lib/x86_64-linux-gnu/libLLVM-19.so /usr/lib/llvm-19/lib/libLLVM-19.so 2>/dev/null | head -1 || true)
