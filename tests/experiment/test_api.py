@@ -18,7 +18,7 @@ import tempfile
 import threading
 import time
 from pathlib import Path
-from typing import List, Optional
+from typing import List
 
 import numpy as np
 import pytest
@@ -331,17 +331,15 @@ def test_hostile_bodies_and_paths_are_4xx(manifest: Path, server_factory):
     assert srv.request("/api/response", good)[0] == 200
 
 
-def _serve(manifest: Path, db: Path, *extra: str, user: Optional[int] = None, timeout: float = 60):
+def _serve(manifest: Path, db: Path, *extra: str, unprivileged: bool = False, timeout: float = 60):
     """`experiment serve` expected to refuse to start: its CompletedProcess (a TimeoutExpired
-    means it started and served, the failure)."""
-    preexec = None
-    if user is not None:
-        def preexec():  # noqa: F811 - the server as an unprivileged user (root ignores file modes)
-            os.setgroups([])
-            os.setgid(user)
-            os.setuid(user)
-    return subprocess.run([PY, "-m", "pgloss", "experiment", "serve", str(manifest), "--db", str(db), "--port", "0",
-                           "--quiet", *extra], capture_output=True, text=True, timeout=timeout, preexec_fn=preexec)
+    means it started and served, the failure). `unprivileged`: as root, the server runs without
+    the capabilities that let root ignore file modes (CAP_DAC_OVERRIDE, CAP_DAC_READ_SEARCH;
+    util-linux setpriv). It stays root so that it can still reach a checkout under /root."""
+    cmd = [PY, "-m", "pgloss", "experiment", "serve", str(manifest), "--db", str(db), "--port", "0", "--quiet", *extra]
+    if unprivileged and os.geteuid() == 0:
+        cmd = ["setpriv", "--inh-caps=-all", "--bounding-set=-dac_override,-dac_read_search", *cmd]
+    return subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
 
 
 def test_serve_refuses_a_database_it_cannot_use(manifest: Path, server_factory, tmp_path: Path):
@@ -350,17 +348,16 @@ def test_serve_refuses_a_database_it_cannot_use(manifest: Path, server_factory, 
     run = _serve(manifest, Path("/nonexistent-pgloss-folder/x.sqlite"))
     assert run.returncode == 2 and "Traceback" not in run.stderr, run.stderr
     assert "no folder /nonexistent-pgloss-folder for the database" in run.stderr, run.stderr
-    # A folder anyone may write to, holding a database file nobody may (the server runs as
-    # nobody when the test is root, whom file modes do not stop).
+    # A folder anyone may write to, holding a database file nobody may (as root, the server runs
+    # without the capabilities that make root ignore file modes).
     folder = Path(tempfile.mkdtemp(prefix="pgloss-ro-"))
     try:
         folder.chmod(0o777)
         db = folder / "ro.sqlite"
         server_factory(manifest, db).start().stop()  # a database with this manifest's tables
         db.chmod(0o444)
-        user = 65534 if os.geteuid() == 0 else None
         try:
-            run = _serve(manifest, db, user=user, timeout=30)
+            run = _serve(manifest, db, unprivileged=True, timeout=30)
         except subprocess.TimeoutExpired:
             pytest.fail("the server started on a read-only database")
         assert run.returncode == 2 and "Traceback" not in run.stderr, run.stderr

@@ -94,12 +94,16 @@ def paints(grid: Dict[str, List[float]]) -> List[Dict[str, float]]:
     keys = PERCEPTUAL if perceptual else PHYSICAL
     rows = []
     for values in itertools.product(*(grid[k] for k in keys)):
-        if perceptual:
-            L, c, d = values
-            rd, rs, al = (float(x) for x in pgloss.physical_from_gloss(L, c, d))
-        else:
-            rd, rs, al = values
-            L, c, d = (float(x) for x in pgloss.gloss_from_physical(rd, rs, al))
+        try:  # a paint the model refuses (pgloss.PglossError, with its reason and code)
+            if perceptual:
+                L, c, d = values
+                rd, rs, al = (float(x) for x in pgloss.physical_from_gloss(L, c, d))
+            else:
+                rd, rs, al = values
+                L, c, d = (float(x) for x in pgloss.gloss_from_physical(rd, rs, al))
+        except ValueError as e:
+            names = ", ".join(f"{k}={v:g}" for k, v in zip(keys, values))
+            raise SpecError(f"paint {names}: {e}") from None
         p = pgloss.Physical(rd, rs, al)
         status = p.check()
         if status.is_error or not all(np.isfinite([rd, rs, al, L, c, d])):
