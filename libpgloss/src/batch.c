@@ -130,6 +130,28 @@ static int rows3_f(const void *const *p, ptrdiff_t stride, size_t size)
     return size == 4 && stride == 12 && (const char *)p[1] == x + 4 && (const char *)p[2] == x + 8;
 }
 
+/* Asks for the next chunk's rows [from, min(from + B, n)) (to write: rw 1) while the loops
+ * compute this one: the copies of rows otherwise wait for memory with nothing to overlap,
+ * where the loops on columns in place overlap their loads with the lobe's arithmetic. */
+static void prefetch_rows(const void *const *ptr, ptrdiff_t stride, size_t size, size_t from,
+                          size_t n, int rw)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    if (from >= n || !rows3_f(ptr, stride, size))
+        return;
+    const char *p = (const char *)ptr[0] + 12 * from;
+    const size_t bytes = 12 * (n - from < B ? n - from : B);
+    for (size_t k = 0; k < bytes; k += 64) {
+        if (rw)
+            __builtin_prefetch(p + k, 1);
+        else
+            __builtin_prefetch(p + k, 0);
+    }
+#else
+    (void)ptr, (void)stride, (void)size, (void)from, (void)n, (void)rw;
+#endif
+}
+
 static void gather3(const pgloss__loops *L, pgloss_strided3 s, size_t size, size_t base, size_t m,
                     double (*buf)[B], const void **col)
 {
@@ -288,6 +310,10 @@ pgloss_status pgloss_eval_pdf_batch(const pgloss_batch_options *options,
         size_t bad;
         gather3(L, wo, size, base, cnt, &c.in[0], c.o);
         gather3(L, wi, size, base, cnt, &c.in[3], c.x);
+        prefetch_rows(wo.ptr, wo.stride, size, base + cnt, n, 0);
+        prefetch_rows(wi.ptr, wi.stride, size, base + cnt, n, 0);
+        if (want_f)
+            prefetch_rows((const void *const *)f.ptr, f.stride, size, base + cnt, n, 1);
         if (ms)
             gather_materials(L, ms, size, base, cnt, &c);
         c.y[0] = c.y[1] = c.y[2] = c.y[3] = NULL;
@@ -383,6 +409,10 @@ pgloss_status pgloss_sample_batch(const pgloss_batch_options *options, const pgl
         unsigned char *lb = lobe ? lobe + base : NULL;
         gather3(L, wo, size, base, cnt, &c.in[0], c.o);
         gather3(L, u, size, base, cnt, &c.in[3], c.x);
+        prefetch_rows(wo.ptr, wo.stride, size, base + cnt, n, 0);
+        prefetch_rows(u.ptr, u.stride, size, base + cnt, n, 0);
+        prefetch_rows((const void *const *)wi.ptr, wi.stride, size, base + cnt, n, 1);
+        prefetch_rows((const void *const *)weight.ptr, weight.stride, size, base + cnt, n, 1);
         if (ms)
             gather_materials(L, ms, size, base, cnt, &c);
         out3(wi, size, base, &c.out[0], c.y);
