@@ -50,10 +50,14 @@ PGLOSS_INLINE_FN pv_f load_part(const float *p, size_t m, float fill)
 {
     if (m == W)
         return pv_load(p);
+#if defined(pv_load_part)
+    return pv_load_part(p, m, fill);
+#else
     float t[W];
     for (size_t j = 0; j < W; ++j)
         t[j] = j < m ? p[j] : fill;
     return pv_load(t);
+#endif
 }
 
 PGLOSS_INLINE_FN void store_part(float *p, size_t m, pv_f v)
