@@ -390,8 +390,9 @@ TEST_P(PerIsa, DoubleSamplerEqualsOneMaterialPerCallScalarAndBaseline) {
 
 // k values per element (k = 1 or 3) of type T in a byte buffer, in one of these layouts:
 // columns, (n, k) rows, rows in reverse order (a negative stride), rows at an odd stride from an
-// odd address (unaligned), or one value for every element (stride 0, inputs only).
-enum Layout { kColumns, kRows, kReversed, kOdd, kBroadcast };
+// odd address (unaligned), packed rows from an odd address (the library's wide de-interleave
+// of float rows, unaligned), or one value for every element (stride 0, inputs only).
+enum Layout { kColumns, kRows, kReversed, kOdd, kRowsOdd, kBroadcast };
 
 template <class T>
 struct Laid {
@@ -408,7 +409,7 @@ struct Laid {
             total = k * (rows * sz + 8);
         } else {
             const size_t row = l == kOdd ? k * sz + 1 : k * sz;
-            const size_t first = l == kOdd ? 1 : 0;
+            const size_t first = l == kOdd || l == kRowsOdd ? 1 : 0;
             for (size_t c = 0; c < k; ++c) off[c] = first + c * sz;
             total = first + rows * row;
             stride = l == kBroadcast ? 0 : static_cast<ptrdiff_t>(row);
@@ -490,7 +491,7 @@ void strided_layouts_match_columns(pgloss_isa isa) {
             for (int per_element = 0; per_element < 2; ++per_element) {
                 Call<T> ref(t, n, kColumns, sample);
                 ref.run(&opt, &m, per_element, sample, n);
-                for (Layout l : {kRows, kReversed, kOdd}) {
+                for (Layout l : {kRows, kReversed, kOdd, kRowsOdd}) {
                     Call<T> c(t, n, l, sample);
                     c.run(&opt, &m, per_element, sample, n);
                     ASSERT_EQ(c.all, ref.all) << "layout " << l;

@@ -123,17 +123,53 @@ typedef struct chunk {
     void *y[7];                       /* f or wi (3), pdf, weight (3) */
 } chunk;
 
-static void gather3(pgloss_strided3 s, size_t size, size_t base, size_t m, double (*buf)[B],
-                    const void **col)
+/* (n, 3) float32 rows: x y z of an element adjacent, one element every 12 bytes. */
+static int rows3_f(const void *const *p, ptrdiff_t stride, size_t size)
 {
+    const char *x = (const char *)p[0];
+    return size == 4 && stride == 12 && (const char *)p[1] == x + 4 && (const char *)p[2] == x + 8;
+}
+
+/* Asks for the next chunk's rows [from, min(from + B, n)) (to write: rw 1) while the loops
+ * compute this one: the copies of rows otherwise wait for memory with nothing to overlap,
+ * where the loops on columns in place overlap their loads with the lobe's arithmetic. */
+static void prefetch_rows(const void *const *ptr, ptrdiff_t stride, size_t size, size_t from,
+                          size_t n, int rw)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    if (from >= n || !rows3_f(ptr, stride, size))
+        return;
+    const char *p = (const char *)ptr[0] + 12 * from;
+    const size_t bytes = 12 * (n - from < B ? n - from : B);
+    for (size_t k = 0; k < bytes; k += 64) {
+        if (rw)
+            __builtin_prefetch(p + k, 1);
+        else
+            __builtin_prefetch(p + k, 0);
+    }
+#else
+    (void)ptr, (void)stride, (void)size, (void)from, (void)n, (void)rw;
+#endif
+}
+
+static void gather3(const pgloss__loops *L, pgloss_strided3 s, size_t size, size_t base, size_t m,
+                    double (*buf)[B], const void **col)
+{
+    if (rows3_f(s.ptr, s.stride, size)) {
+        L->rows_in((const char *)s.ptr[0] + 12 * base, m, (float *)buf[0], (float *)buf[1],
+                   (float *)buf[2]);
+        for (int c = 0; c < 3; ++c)
+            col[c] = buf[c];
+        return;
+    }
     for (int c = 0; c < 3; ++c)
         col[c] = pgloss__gather(s.ptr[c], s.stride, size, base, m, buf[c]);
 }
 
-static void gather_materials(const pgloss_physical_array *p, size_t size, size_t base, size_t m,
-                             chunk *c)
+static void gather_materials(const pgloss__loops *L, const pgloss_physical_array *p, size_t size,
+                             size_t base, size_t m, chunk *c)
 {
-    gather3(p->rho_d, size, base, m, &c->in[6], c->mat);
+    gather3(L, p->rho_d, size, base, m, &c->in[6], c->mat);
     c->mat[3] = pgloss__gather(p->rho_s.ptr, p->rho_s.stride, size, base, m, c->in[9]);
     c->mat[4] = pgloss__gather(p->alpha_x.ptr, p->alpha_x.stride, size, base, m, c->in[10]);
     c->mat[5] = p->alpha_y.ptr
@@ -147,8 +183,13 @@ static void out3(pgloss_strided3_out s, size_t size, size_t base, double (*buf)[
         col[c] = pgloss__out(s.ptr[c], s.stride, size, base, buf[c]);
 }
 
-static void scatter3(pgloss_strided3_out s, size_t size, size_t base, size_t m, void *const *col)
+static void scatter3(const pgloss__loops *L, pgloss_strided3_out s, size_t size, size_t base,
+                     size_t m, void *const *col)
 {
+    if (rows3_f((const void *const *)s.ptr, s.stride, size)) {
+        L->rows_out(col[0], col[1], col[2], m, (char *)s.ptr[0] + 12 * base);
+        return;
+    }
     for (int c = 0; c < 3; ++c)
         pgloss__scatter(s.ptr[c], s.stride, size, base, m, col[c]);
 }
@@ -267,10 +308,14 @@ pgloss_status pgloss_eval_pdf_batch(const pgloss_batch_options *options,
     for (size_t base = 0; base < n; base += B) {
         const size_t cnt = n - base < B ? n - base : B;
         size_t bad;
-        gather3(wo, size, base, cnt, &c.in[0], c.o);
-        gather3(wi, size, base, cnt, &c.in[3], c.x);
+        gather3(L, wo, size, base, cnt, &c.in[0], c.o);
+        gather3(L, wi, size, base, cnt, &c.in[3], c.x);
+        prefetch_rows(wo.ptr, wo.stride, size, base + cnt, n, 0);
+        prefetch_rows(wi.ptr, wi.stride, size, base + cnt, n, 0);
+        if (want_f)
+            prefetch_rows((const void *const *)f.ptr, f.stride, size, base + cnt, n, 1);
         if (ms)
-            gather_materials(ms, size, base, cnt, &c);
+            gather_materials(L, ms, size, base, cnt, &c);
         c.y[0] = c.y[1] = c.y[2] = c.y[3] = NULL;
         if (want_f)
             out3(f, size, base, &c.out[0], c.y);
@@ -292,7 +337,7 @@ pgloss_status pgloss_eval_pdf_batch(const pgloss_batch_options *options,
             bad = L->eval_pdf[o.precision == PGLOSS_PRECISION_FAST](&s.c, cnt, vo, vi, vf, c.y[3]);
         }
         if (want_f)
-            scatter3(f, size, base, cnt, c.y);
+            scatter3(L, f, size, base, cnt, c.y);
         if (want_p)
             pgloss__scatter(pdf.ptr, pdf.stride, size, base, cnt, c.y[3]);
         first = chunk_done(&a, base, cnt, bad, status, first);
@@ -362,10 +407,14 @@ pgloss_status pgloss_sample_batch(const pgloss_batch_options *options, const pgl
         const size_t cnt = n - base < B ? n - base : B;
         size_t bad;
         unsigned char *lb = lobe ? lobe + base : NULL;
-        gather3(wo, size, base, cnt, &c.in[0], c.o);
-        gather3(u, size, base, cnt, &c.in[3], c.x);
+        gather3(L, wo, size, base, cnt, &c.in[0], c.o);
+        gather3(L, u, size, base, cnt, &c.in[3], c.x);
+        prefetch_rows(wo.ptr, wo.stride, size, base + cnt, n, 0);
+        prefetch_rows(u.ptr, u.stride, size, base + cnt, n, 0);
+        prefetch_rows((const void *const *)wi.ptr, wi.stride, size, base + cnt, n, 1);
+        prefetch_rows((const void *const *)weight.ptr, weight.stride, size, base + cnt, n, 1);
         if (ms)
-            gather_materials(ms, size, base, cnt, &c);
+            gather_materials(L, ms, size, base, cnt, &c);
         out3(wi, size, base, &c.out[0], c.y);
         c.y[3] = pgloss__out(pdf.ptr, pdf.stride, size, base, c.out[3]);
         out3(weight, size, base, &c.out[4], c.y + 4);
@@ -387,9 +436,9 @@ pgloss_status pgloss_sample_batch(const pgloss_batch_options *options, const pgl
             bad = L->sample[o.precision == PGLOSS_PRECISION_FAST](&s.c, cnt, vo, c.x[0], c.x[1],
                                                                    c.x[2], vw, c.y[3], vg, lb);
         }
-        scatter3(wi, size, base, cnt, c.y);
+        scatter3(L, wi, size, base, cnt, c.y);
         pgloss__scatter(pdf.ptr, pdf.stride, size, base, cnt, c.y[3]);
-        scatter3(weight, size, base, cnt, c.y + 4);
+        scatter3(L, weight, size, base, cnt, c.y + 4);
         first = chunk_done(&a, base, cnt, bad, status, first);
     }
     return first;

@@ -71,12 +71,21 @@ typedef size_t (*pgloss__sample_d_fn)(const struct pgloss__consts_d *, const pgl
                                     const double *, const double *, pgloss__vec3_out_d,
                                     double *, pgloss__rgb_out_d, unsigned char *);
 
+/* (n, 3) float32 rows (byte stride 12, any alignment) to n contiguous x, y, z, and back
+ * (rows3.h): compiled per ISA, so that the front ends' gathers and scatters of the common
+ * channel-last layout run as wide as the loops. */
+typedef void (*pgloss__rows_in_fn)(const void *rows, size_t n, float *x, float *y, float *z);
+typedef void (*pgloss__rows_out_fn)(const float *x, const float *y, const float *z, size_t n,
+                                    void *rows);
+
 /* Every loop of one ISA: what dispatch.c hands the front ends. */
 typedef struct pgloss__loops {
     pgloss__eval_pdf_fn eval_pdf[2]; /* [FAST tier] */
     pgloss__sample_fn sample[2];
     pgloss__eval_pdf_d_fn eval_pdf_d;
     pgloss__sample_d_fn sample_d;
+    pgloss__rows_in_fn rows_in;
+    pgloss__rows_out_fn rows_out;
 #define PGLOSS__LOOP_FIELD(name) pgloss__perceptual_loop name;
     PGLOSS__PERCEPTUAL_LOOPS(PGLOSS__LOOP_FIELD)
 #undef PGLOSS__LOOP_FIELD

@@ -12,6 +12,7 @@
  * outputs wanted) by constant arguments of always-inlined functions: absent lobes, unused
  * normalisations and unwanted outputs cost nothing. */
 #include "batch_internal.h"
+#include "rows3.h"
 
 #if !defined(PGLOSS_ISA) || !defined(PGLOSS_FAST)
 #error "PGLOSS_ISA must name the instruction set this file is compiled for, PGLOSS_FAST the tier"
@@ -49,10 +50,14 @@ PGLOSS_INLINE_FN pv_f load_part(const float *p, size_t m, float fill)
 {
     if (m == W)
         return pv_load(p);
+#if defined(pv_load_part)
+    return pv_load_part(p, m, fill);
+#else
     float t[W];
     for (size_t j = 0; j < W; ++j)
         t[j] = j < m ? p[j] : fill;
     return pv_load(t);
+#endif
 }
 
 PGLOSS_INLINE_FN void store_part(float *p, size_t m, pv_f v)
@@ -251,3 +256,18 @@ size_t NAME(pgloss__sample)(const pgloss__call_f *c, size_t n, pgloss__vec3_f wo
 #undef LOOP
 #undef RUN
 }
+
+/* ---- (n, 3) float rows ------------------------------------------------------------------- */
+
+#if !PGLOSS_FAST /* one copy per ISA: the tiers share it */
+void CAT(pgloss__rows_in, PGLOSS_ISA, f)(const void *rows, size_t n, float *x, float *y, float *z)
+{
+    pgloss__rows3_to_columns(rows, n, x, y, z);
+}
+
+void CAT(pgloss__rows_out, PGLOSS_ISA, f)(const float *x, const float *y, const float *z,
+                                          size_t n, void *rows)
+{
+    pgloss__columns_to_rows3(x, y, z, n, rows);
+}
+#endif

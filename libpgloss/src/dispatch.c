@@ -76,12 +76,16 @@ const char *pgloss_isa_name(pgloss_isa isa)
                                       const pgloss__materials_d *, unsigned, int, size_t,        \
                                       pgloss__vec3_d, const double *, const double *,            \
                                       const double *, pgloss__vec3_out_d, double *,              \
-                                      pgloss__rgb_out_d, unsigned char *);
+                                      pgloss__rgb_out_d, unsigned char *);                         \
+    void pgloss__rows_in_##isa##_f(const void *, size_t, float *, float *, float *);               \
+    void pgloss__rows_out_##isa##_f(const float *, const float *, const float *, size_t, void *);
 #define TABLE(isa)                                                                                 \
     {{pgloss__eval_pdf_##isa##_float, pgloss__eval_pdf_##isa##_fast},                              \
      {pgloss__sample_##isa##_float, pgloss__sample_##isa##_fast},                                  \
      pgloss__eval_pdf_batch_d_##isa,                                                               \
      pgloss__sample_batch_d_##isa,                                                                 \
+     pgloss__rows_in_##isa##_f,                                                                    \
+     pgloss__rows_out_##isa##_f,                                                                   \
      PGLOSS__PERCEPTUAL_LOOPS(PERCEPTUAL_ENTRY)}
 #define ISA baseline
 DECLARE_LOOPS(baseline)

@@ -11,6 +11,15 @@
 typedef int32_t pgloss__i8 __attribute__((vector_size(32)));
 typedef double pgloss__d8 __attribute__((vector_size(64)));
 
+/* The first m < 8 floats at p, the other lanes `fill`: one masked load, where a copy through
+ * the stack would stall on store-to-load forwarding (the batch's last block, and n = 1). */
+static inline __m256 pgloss__load_part8(const float *p, size_t m, float fill)
+{
+    const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+    const __m256i in = _mm256_cmpgt_epi32(_mm256_set1_epi32((int)m), lane);
+    return _mm256_blendv_ps(_mm256_set1_ps(fill), _mm256_maskload_ps(p, in), _mm256_castsi256_ps(in));
+}
+
 #endif /* PGLOSS_SIMD_AVX2_H */
 
 #define PGLOSS_K(name) pgloss__v_##name
@@ -54,5 +63,6 @@ typedef double pgloss__d8 __attribute__((vector_size(64)));
 #define pv_m1(b) ((pgloss__i8)_mm256_set1_epi32(-(int)((b) != 0)))
 #define pv_count(m) __builtin_popcount((unsigned)_mm256_movemask_ps((__m256)(m)))
 #define pv_load _mm256_loadu_ps
+#define pv_load_part pgloss__load_part8
 #define pv_store _mm256_storeu_ps
 #define pv_store_i(p, a) _mm256_storeu_si256((__m256i *)(p), (__m256i)(a))

@@ -1,0 +1,113 @@
+// SPDX-FileCopyrightText: 2026 The pgloss authors
+// SPDX-License-Identifier: Apache-2.0
+/* (n, 3) float32 rows (x y z x y z …, any alignment) to three contiguous columns and back,
+ * for batch_isa.c: numpy's channel-last arrays reach the batches as such rows, and a strided
+ * copy of one float at a time costs as much as the lobe. AVX2 (also in the AVX-512 file)
+ * de-interleaves 8 rows from 3 loads by blends and one lane permute per column, SSE2 4 rows by
+ * shuffles; other targets copy element by element. A pure copy: no value changes. Not
+ * installed. */
+#ifndef PGLOSS_ROWS3_H
+#define PGLOSS_ROWS3_H
+
+#include <stddef.h>
+#include <string.h>
+#if defined(__AVX2__)
+#include <immintrin.h>
+#define PGLOSS__ROWS 8
+#elif defined(__SSE2__)
+#include <emmintrin.h>
+#define PGLOSS__ROWS 4
+#else
+#define PGLOSS__ROWS 1
+#endif
+
+/* Rows [0, n) at `rows` (byte pointer) into x, y, z. */
+static inline void pgloss__rows3_to_columns(const void *rows, size_t n, float *x, float *y,
+                                            float *z)
+{
+    const char *p = (const char *)rows;
+    size_t j = 0;
+#if defined(__AVX2__)
+    /* Blend each column's 8 values into one register (the lane order a rotation), then
+     * permute them into place: x = 0 3 6 9 …, y = 1 4 7 …, z = 2 5 8 … of the 24 floats. */
+    const __m256i px = _mm256_setr_epi32(0, 3, 6, 1, 4, 7, 2, 5);
+    const __m256i py = _mm256_setr_epi32(1, 4, 7, 2, 5, 0, 3, 6);
+    const __m256i pz = _mm256_setr_epi32(2, 5, 0, 3, 6, 1, 4, 7);
+    for (; j + 8 <= n; j += 8, p += 96) {
+        const __m256 a = _mm256_loadu_ps((const float *)p);
+        const __m256 b = _mm256_loadu_ps((const float *)(p + 32));
+        const __m256 c = _mm256_loadu_ps((const float *)(p + 64));
+        const __m256 tx = _mm256_blend_ps(_mm256_blend_ps(a, b, 0x92), c, 0x24);
+        const __m256 ty = _mm256_blend_ps(_mm256_blend_ps(a, b, 0x24), c, 0x49);
+        const __m256 tz = _mm256_blend_ps(_mm256_blend_ps(a, b, 0x49), c, 0x92);
+        _mm256_storeu_ps(x + j, _mm256_permutevar8x32_ps(tx, px));
+        _mm256_storeu_ps(y + j, _mm256_permutevar8x32_ps(ty, py));
+        _mm256_storeu_ps(z + j, _mm256_permutevar8x32_ps(tz, pz));
+    }
+#elif defined(__SSE2__)
+    for (; j + 4 <= n; j += 4, p += 48) {
+        const __m128 a = _mm_loadu_ps((const float *)p);
+        const __m128 b = _mm_loadu_ps((const float *)(p + 16));
+        const __m128 c = _mm_loadu_ps((const float *)(p + 32));
+        const __m128 bc = _mm_shuffle_ps(b, c, _MM_SHUFFLE(1, 0, 3, 2)); /* b2 b3 c0 c1 */
+        _mm_storeu_ps(x + j, _mm_shuffle_ps(a, bc, _MM_SHUFFLE(3, 0, 3, 0)));
+        _mm_storeu_ps(y + j, _mm_shuffle_ps(_mm_shuffle_ps(a, b, _MM_SHUFFLE(0, 0, 1, 1)),
+                                            _mm_shuffle_ps(b, c, _MM_SHUFFLE(2, 2, 3, 3)),
+                                            _MM_SHUFFLE(2, 0, 2, 0)));
+        _mm_storeu_ps(z + j, _mm_shuffle_ps(_mm_shuffle_ps(a, b, _MM_SHUFFLE(1, 1, 2, 2)),
+                                            _mm_shuffle_ps(c, c, _MM_SHUFFLE(3, 3, 0, 0)),
+                                            _MM_SHUFFLE(2, 0, 2, 0)));
+    }
+#endif
+    for (; j < n; ++j, p += 12) {
+        memcpy(x + j, p, 4);
+        memcpy(y + j, p + 4, 4);
+        memcpy(z + j, p + 8, 4);
+    }
+}
+
+/* Columns x, y, z [0, n) into rows [0, n) at `rows` (byte pointer). */
+static inline void pgloss__columns_to_rows3(const float *x, const float *y, const float *z,
+                                            size_t n, void *rows)
+{
+    char *p = (char *)rows;
+    size_t j = 0;
+#if defined(__AVX2__)
+    /* The inverse of the above: each column permuted back (the same rotations), then blended. */
+    const __m256i px = _mm256_setr_epi32(0, 3, 6, 1, 4, 7, 2, 5);
+    const __m256i py = _mm256_setr_epi32(5, 0, 3, 6, 1, 4, 7, 2);
+    const __m256i pz = _mm256_setr_epi32(2, 5, 0, 3, 6, 1, 4, 7);
+    for (; j + 8 <= n; j += 8, p += 96) {
+        const __m256 tx = _mm256_permutevar8x32_ps(_mm256_loadu_ps(x + j), px);
+        const __m256 ty = _mm256_permutevar8x32_ps(_mm256_loadu_ps(y + j), py);
+        const __m256 tz = _mm256_permutevar8x32_ps(_mm256_loadu_ps(z + j), pz);
+        _mm256_storeu_ps((float *)p, _mm256_blend_ps(_mm256_blend_ps(tx, ty, 0x92), tz, 0x24));
+        _mm256_storeu_ps((float *)(p + 32),
+                         _mm256_blend_ps(_mm256_blend_ps(tx, ty, 0x24), tz, 0x49));
+        _mm256_storeu_ps((float *)(p + 64),
+                         _mm256_blend_ps(_mm256_blend_ps(tx, ty, 0x49), tz, 0x92));
+    }
+#elif defined(__SSE2__)
+    for (; j + 4 <= n; j += 4, p += 48) {
+        const __m128 vx = _mm_loadu_ps(x + j), vy = _mm_loadu_ps(y + j), vz = _mm_loadu_ps(z + j);
+        _mm_storeu_ps((float *)p, _mm_shuffle_ps(_mm_shuffle_ps(vx, vy, _MM_SHUFFLE(1, 0, 1, 0)),
+                                                 _mm_shuffle_ps(vz, vx, _MM_SHUFFLE(1, 1, 0, 0)),
+                                                 _MM_SHUFFLE(2, 0, 2, 0)));
+        _mm_storeu_ps((float *)(p + 16),
+                      _mm_shuffle_ps(_mm_shuffle_ps(vy, vz, _MM_SHUFFLE(1, 1, 1, 1)),
+                                     _mm_shuffle_ps(vx, vy, _MM_SHUFFLE(2, 2, 2, 2)),
+                                     _MM_SHUFFLE(2, 0, 2, 0)));
+        _mm_storeu_ps((float *)(p + 32),
+                      _mm_shuffle_ps(_mm_shuffle_ps(vz, vx, _MM_SHUFFLE(3, 3, 2, 2)),
+                                     _mm_shuffle_ps(vy, vz, _MM_SHUFFLE(3, 3, 3, 3)),
+                                     _MM_SHUFFLE(2, 0, 2, 0)));
+    }
+#endif
+    for (; j < n; ++j, p += 12) {
+        memcpy(p, x + j, 4);
+        memcpy(p + 4, y + j, 4);
+        memcpy(p + 8, z + j, 4);
+    }
+}
+
+#endif
