@@ -333,12 +333,6 @@ PGLOSS__D_FN double clamp_u_d(double u)
     return u > 0.0 ? (u < ONE_MINUS_EPS_D ? u : ONE_MINUS_EPS_D) : 0.0;
 }
 
-#if defined(__GNUC__) || defined(__clang__)
-#define PGLOSS__D_NOINLINE __attribute__((noinline))
-#else
-#define PGLOSS__D_NOINLINE
-#endif
-
 /* The sampler's chunk: half the eval chunk, as it keeps about thirty arrays on the stack. */
 #define CHUNK_S 128
 
@@ -378,7 +372,7 @@ PGLOSS__D_FN pgloss__consts_d consts_of_chunk_d(const pgloss__consts_d *kc,
  * the horizon, wo·h > 0 for a specular draw, wi not zero) pdf and weight = f cosθi / pdf
  * at the unit wi, at most FLT_MAX; a zero pdf is a rejected sample (weight 0). Out of line:
  * inlined into the sampler, GCC 12 finds no vector type for its loads and leaves it scalar. */
-static PGLOSS__D_NOINLINE void write_sample_d(size_t m, const double *restrict oks,
+static PGLOSS__NOINLINE void write_sample_d(size_t m, const double *restrict oks,
                                  const double *restrict vis, const double *restrict wx,
                                  const double *restrict wy, const double *restrict wz,
                                  const double *restrict iz, const double *restrict fr,

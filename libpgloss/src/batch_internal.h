@@ -43,6 +43,25 @@ typedef struct pgloss__materials_d {
      : (active) == PGLOSS_LOBE_ALL      ? PGLOSS__BY_NORM(LOOP, PGLOSS_LOBE_ALL, norm)            \
                                         : LOOP(PGLOSS_LOBE_NONE, PGLOSS_NORM_WARD))
 
+/* X(lobes, normalisation) for every pair PGLOSS__BY_LOBES chooses among: the loops define one
+ * out-of-line function per pair with it (one function holding every specialisation inlined
+ * made GCC's superlinear passes and the sanitizers take minutes per object). */
+#define PGLOSS__EACH_LOBES(X)                                                                      \
+    X(PGLOSS_LOBE_DIFFUSE, PGLOSS_NORM_WARD)                                                       \
+    X(PGLOSS_LOBE_SPECULAR, PGLOSS_NORM_WARD)                                                      \
+    X(PGLOSS_LOBE_SPECULAR, PGLOSS_NORM_WARD_DUR)                                                  \
+    X(PGLOSS_LOBE_SPECULAR, PGLOSS_NORM_BOUNDED)                                                   \
+    X(PGLOSS_LOBE_ALL, PGLOSS_NORM_WARD)                                                           \
+    X(PGLOSS_LOBE_ALL, PGLOSS_NORM_WARD_DUR)                                                       \
+    X(PGLOSS_LOBE_ALL, PGLOSS_NORM_BOUNDED)                                                        \
+    X(PGLOSS_LOBE_NONE, PGLOSS_NORM_WARD)
+
+#if defined(__GNUC__) || defined(__clang__)
+#define PGLOSS__NOINLINE __attribute__((noinline))
+#else
+#define PGLOSS__NOINLINE
+#endif
+
 /* A float call as the loops take it. */
 typedef struct pgloss__call_f {
     const pgloss_material *m;      /* one material, or NULL: */

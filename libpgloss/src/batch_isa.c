@@ -162,18 +162,31 @@ PGLOSS_INLINE_FN size_t eval_loop(const pgloss__call_f *c, const unsigned active
     return bad;
 }
 
-size_t NAME(pgloss__eval_pdf)(const pgloss__call_f *c, size_t n, pgloss__vec3_f wo,
-                              pgloss__vec3_f wi, pgloss__rgb_out_f f, float *pdf)
-{
-    const int wf = f.r != NULL, wp = pdf != NULL;
+/* One out-of-line function per (lobes, normalisation) (PGLOSS__EACH_LOBES), choosing among
+ * its six loops; the entry point picks the function. */
+#define EVAL_FN(A, N) CAT(eval, A, N)
 #define OUT(A, N, E)                                                                               \
     (wf && wp ? eval_loop(c, A, N, E, 1, 1, n, wo, wi, f, pdf)                                     \
               : (wf ? eval_loop(c, A, N, E, 1, 0, n, wo, wi, f, pdf)                               \
                     : eval_loop(c, A, N, E, 0, 1, n, wo, wi, f, pdf)))
-#define LOOP(A, N) (c->ms ? OUT(A, N, 1) : OUT(A, N, 0))
+#define DEFINE_EVAL(A, N)                                                                          \
+    static PGLOSS__NOINLINE size_t EVAL_FN(A, N)(const pgloss__call_f *c, size_t n,                \
+                                                 pgloss__vec3_f wo, pgloss__vec3_f wi,             \
+                                                 pgloss__rgb_out_f f, float *pdf)                  \
+    {                                                                                              \
+        const int wf = f.r != NULL, wp = pdf != NULL;                                              \
+        return c->ms ? OUT(A, N, 1) : OUT(A, N, 0);                                                \
+    }
+PGLOSS__EACH_LOBES(DEFINE_EVAL)
+#undef DEFINE_EVAL
+#undef OUT
+
+size_t NAME(pgloss__eval_pdf)(const pgloss__call_f *c, size_t n, pgloss__vec3_f wo,
+                              pgloss__vec3_f wi, pgloss__rgb_out_f f, float *pdf)
+{
+#define LOOP(A, N) EVAL_FN(A, N)(c, n, wo, wi, f, pdf)
     return PGLOSS__BY_LOBES(LOOP, c->active, c->norm);
 #undef LOOP
-#undef OUT
 }
 
 /* ---- sampling ----------------------------------------------------------------------------- */
@@ -246,15 +259,26 @@ PGLOSS_INLINE_FN size_t sample_loop(const pgloss__call_f *c, const unsigned acti
     return bad;
 }
 
+#define SAMPLE_FN(A, N) CAT(sample, A, N)
+#define DEFINE_SAMPLE(A, N)                                                                        \
+    static PGLOSS__NOINLINE size_t SAMPLE_FN(A, N)(                                                \
+        const pgloss__call_f *c, size_t n, pgloss__vec3_f wo, const float *u0, const float *u1,    \
+        const float *u2, pgloss__vec3_out_f wi, float *pdf, pgloss__rgb_out_f weight,              \
+        unsigned char *lobe)                                                                       \
+    {                                                                                              \
+        return c->ms ? sample_loop(c, A, N, 1, n, wo, u0, u1, u2, wi, pdf, weight, lobe)           \
+                     : sample_loop(c, A, N, 0, n, wo, u0, u1, u2, wi, pdf, weight, lobe);          \
+    }
+PGLOSS__EACH_LOBES(DEFINE_SAMPLE)
+#undef DEFINE_SAMPLE
+
 size_t NAME(pgloss__sample)(const pgloss__call_f *c, size_t n, pgloss__vec3_f wo, const float *u0,
                             const float *u1, const float *u2, pgloss__vec3_out_f wi, float *pdf,
                             pgloss__rgb_out_f weight, unsigned char *lobe)
 {
-#define RUN(A, N, E) sample_loop(c, A, N, E, n, wo, u0, u1, u2, wi, pdf, weight, lobe)
-#define LOOP(A, N) (c->ms ? RUN(A, N, 1) : RUN(A, N, 0))
+#define LOOP(A, N) SAMPLE_FN(A, N)(c, n, wo, u0, u1, u2, wi, pdf, weight, lobe)
     return PGLOSS__BY_LOBES(LOOP, c->active, c->norm);
 #undef LOOP
-#undef RUN
 }
 
 /* ---- (n, 3) float rows ------------------------------------------------------------------- */
