@@ -89,17 +89,23 @@ def paint_node(mat: Optional[bpy.types.Material]) -> Optional[bpy.types.Node]:
     return None
 
 
-def new_material(name: str = "pgloss paint") -> bpy.types.Material:
-    """A material with the node group wired to its output (Cycles with OSL renders it)."""
+def _material(name: str, node_type: str):
+    """A new material whose only node of type ``node_type`` drives its output: (material, node)."""
     mat = bpy.data.materials.new(name)
     nt = mat.node_tree
     for n in list(nt.nodes):
         nt.nodes.remove(n)
     out = nt.nodes.new("ShaderNodeOutputMaterial")
-    grp = nt.nodes.new("ShaderNodeGroup")
+    node = nt.nodes.new(node_type)
+    node.location, out.location = (-300, 0), (0, 0)
+    return mat, node
+
+
+def new_material(name: str = "pgloss paint") -> bpy.types.Material:
+    """A material with the node group wired to its output (Cycles with OSL renders it)."""
+    mat, grp = _material(name, "ShaderNodeGroup")
     grp.node_tree = node_group()
-    grp.location, out.location = (-300, 0), (0, 0)
-    nt.links.new(grp.outputs["BSDF"], out.inputs["Surface"])
+    mat.node_tree.links.new(grp.outputs["BSDF"], mat.node_tree.nodes["Material Output"].inputs["Surface"])
     return mat
 
 
@@ -215,16 +221,10 @@ def apply_principled(mat: bpy.types.Material) -> pr.Principled:
 def new_principled_material(name: str = "pgloss paint") -> bpy.types.Material:
     """A material of one Principled BSDF (multiscatter GGX, the bridge's model) driven by the paint
     in Material.pgloss; renders in EEVEE and in Cycles on any device."""
-    mat = bpy.data.materials.new(name)
-    nt = mat.node_tree
-    for n in list(nt.nodes):
-        nt.nodes.remove(n)
-    out = nt.nodes.new("ShaderNodeOutputMaterial")
-    node = nt.nodes.new("ShaderNodeBsdfPrincipled")
+    mat, node = _material(name, "ShaderNodeBsdfPrincipled")
     node.name = node.label = pr.NODE
     node.distribution = "MULTI_GGX"
-    node.location, out.location = (-300, 0), (0, 0)
-    nt.links.new(node.outputs["BSDF"], out.inputs["Surface"])
+    mat.node_tree.links.new(node.outputs["BSDF"], mat.node_tree.nodes["Material Output"].inputs["Surface"])
     mat.pgloss.mode = "PRINCIPLED"
     apply_principled(mat)
     return mat
