@@ -194,6 +194,12 @@ def principled_node(mat: Optional[bpy.types.Material]) -> Optional[bpy.types.Nod
     return mat.node_tree.nodes.get(pr.NODE)
 
 
+def working_space() -> str:
+    """The .blend's working colour space (Blender 5; Linear Rec. 709 before it)."""
+    cs = getattr(bpy.data, "colorspace", None)
+    return cs.working_space if cs is not None else "Linear Rec.709"
+
+
 def mapping(mat: bpy.types.Material) -> pr.Principled:
     """The bridge's mapping of the material's paint (its source: paint, gloss units or finish)."""
     s = mat.pgloss
@@ -211,7 +217,7 @@ def apply_principled(mat: bpy.types.Material) -> pr.Principled:
     s = mat.pgloss
     node = principled_node(mat)
     if node is not None:
-        pr.write(node, p)
+        pr.write(node, p, working_space())
     s.status, s.status_name, s.reason, s.note = p.status, p.status_name, p.reason, p.note
     s.reached = p.reached
     s.readings = tuple(p.readings.get(k, 0.0) for k in ("gloss_20", "gloss_60", "gloss_85"))
@@ -287,7 +293,7 @@ def _draw_principled(layout, mat: bpy.types.Material) -> None:
     node = principled_node(mat)
     if node is not None and s.status_name and (s.status >= 0 or s.reached[0] or s.reached[3]):
         bc = node.inputs["Base Color"].default_value
-        box.label(text=f"Base Color ({bc[0]:.4f}, {bc[1]:.4f}, {bc[2]:.4f})")
+        box.label(text=f"Base Color ({bc[0]:.4f}, {bc[1]:.4f}, {bc[2]:.4f}), {working_space()}")
         box.label(text=f"Roughness {node.inputs['Roughness'].default_value:.4f}    "
                        f"IOR {node.inputs['IOR'].default_value:.4f}    "
                        f"Specular IOR Level {node.inputs['Specular IOR Level'].default_value:.3f}")

@@ -159,8 +159,30 @@ def from_finish(L: float, a: float, b: float, name: str, d: float) -> Principled
     return p
 
 
-def write(node, p: Principled) -> None:
-    """Writes the mapping's inputs into a Principled BSDF node (nothing if the paint is invalid)."""
+#: Blender 5's working spaces (``bpy.data.colorspace.working_space``) as pgloss colour spaces.
+WORKING_SPACES = {"Linear Rec.709": 0, "ACEScg": 1, "Linear Rec.2020": 3}
+
+
+def base_color_in(rgb709: Tuple[float, float, float], working_space: str) -> Tuple[float, float, float]:
+    """The bridge's linear Rec. 709 base colour in the .blend's working space, through CIELAB
+    (``pgloss.lab_from_rgb`` / ``rgb_from_lab``: D65, ACEScg Bradford-adapted); Y is unchanged,
+    so the paint's L* and gloss are too."""
+    import pgloss
+
+    space = WORKING_SPACES.get(working_space)
+    if space is None:
+        raise ValueError(f"pgloss paint: unknown working space {working_space!r}; one of {', '.join(WORKING_SPACES)}")
+    if space == 0:
+        return rgb709
+    lab = pgloss.lab_from_rgb(np.asarray(rgb709, dtype=np.float64), 0)
+    return tuple(float(x) for x in pgloss.rgb_from_lab(lab, space))
+
+
+def write(node, p: Principled, working_space: str = "Linear Rec.709") -> None:
+    """Writes the mapping's inputs into a Principled BSDF node (nothing if the paint is invalid),
+    the base colour in the .blend's working space."""
     for k, v in p.inputs.items():
         sock = node.inputs[k]
+        if k == "Base Color":
+            v = base_color_in(v, working_space)
         sock.default_value = (*v, 1.0) if isinstance(v, tuple) else v

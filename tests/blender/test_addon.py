@@ -179,6 +179,32 @@ def test_principled_mode_writes_the_bridge_values(addon) -> None:
     assert pgloss.__version__
 
 
+#: Linear Rec. 709 → ACEScg (Bradford from D65 to the ACES white), as colour-science's
+#: RGB_to_RGB(sRGB, ACEScg, chromatic_adaptation_transform="Bradford") gives it.
+REC709_TO_ACESCG = np.array([[0.6131324224, 0.3395380158, 0.0474166960],
+                             [0.0701243808, 0.9163940113, 0.0134515240],
+                             [0.0206153959, 0.1095697616, 0.8698883771]])
+
+
+def test_principled_base_color_follows_the_working_space(addon) -> None:
+    """Blender 5's per-file working space: the bridge's Rec. 709 base colour is written in it, as
+    Blender itself converts colours when the space changes."""
+    _scene()
+    bpy.ops.material.pgloss_paint_new(mode="PRINCIPLED")
+    mat = bpy.context.object.active_material
+    p = addon.set_principled(mat, L=30.0, a=45.0, b=30.0, c=0.08, d=0.95)
+    rec709 = np.array(p.inputs["Base Color"])
+    node = addon.principled_node(mat)
+    np.testing.assert_allclose(node.inputs["Base Color"].default_value[:3], rec709, rtol=1e-6)
+    # Blender's own conversion (its OCIO config) of the node's colour is the reference.
+    assert bpy.ops.wm.set_working_color_space(working_space="ACEScg", convert_colors=True) == {"FINISHED"}
+    blender = np.array(node.inputs["Base Color"].default_value[:3])
+    np.testing.assert_allclose(blender, REC709_TO_ACESCG @ rec709, atol=2e-4)
+    node.inputs["Base Color"].default_value = (0, 0, 0, 1)
+    addon.apply_principled(mat)
+    np.testing.assert_allclose(node.inputs["Base Color"].default_value[:3], blender, atol=2e-4)
+
+
 def test_principled_out_of_reach_renders_the_nearest_paint(addon) -> None:
     """Fig. 12's black paint (c of the white one at L* 18.4): F0 would be below 0.01. The node gets
     the nearest reachable paint, the settings say which, with the status: never a silent clamp."""
