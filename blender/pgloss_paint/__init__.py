@@ -184,6 +184,7 @@ class PglossPaintSettings(bpy.types.PropertyGroup):
     status_name: bpy.props.StringProperty()
     reason: bpy.props.StringProperty()
     note: bpy.props.StringProperty()
+    nearest: bpy.props.BoolProperty()  # out of reach: the node holds the nearest paint's inputs
     reached: bpy.props.FloatVectorProperty(size=5)
     readings: bpy.props.FloatVectorProperty(size=3)  # 20°, 60°, 85° gloss (GU)
 
@@ -219,8 +220,12 @@ def apply_principled(mat: bpy.types.Material) -> pr.Principled:
     if node is not None:
         pr.write(node, p, working_space())
     s.status, s.status_name, s.reason, s.note = p.status, p.status_name, p.reason, p.note
+    s.nearest = p.nearest
+    if not p.renderable:
+        s.note = "The paint is outside the model: the material keeps its previous inputs"
     s.reached = p.reached
-    s.readings = tuple(p.readings.get(k, 0.0) for k in ("gloss_20", "gloss_60", "gloss_85"))
+    if p.renderable:
+        s.readings = tuple(p.readings[k] for k in ("gloss_20", "gloss_60", "gloss_85"))
     return p
 
 
@@ -243,7 +248,7 @@ def set_principled(mat: bpy.types.Material, **values: Any) -> pr.Principled:
     s.batch = True
     try:
         for k, v in values.items():
-            if not hasattr(s, k) or k in ("mode", "batch", "status", "reason", "reached", "readings"):
+            if k not in ("source", "L", "a", "b", "c", "d", "gloss_60", "finish"):
                 raise KeyError(f"pgloss paint: no Principled input {k!r}")
             setattr(s, k, v)
     finally:
@@ -291,7 +296,7 @@ def _draw_principled(layout, mat: bpy.types.Material) -> None:
     col.prop(s, "d")
     box = layout.box()
     node = principled_node(mat)
-    if node is not None and s.status_name and (s.status >= 0 or s.reached[0] or s.reached[3]):
+    if node is not None:
         bc = node.inputs["Base Color"].default_value
         box.label(text=f"Base Color ({bc[0]:.4f}, {bc[1]:.4f}, {bc[2]:.4f}), {working_space()}")
         box.label(text=f"Roughness {node.inputs['Roughness'].default_value:.4f}    "
@@ -304,7 +309,7 @@ def _draw_principled(layout, mat: bpy.types.Material) -> None:
     row.label(text="Reaches the paint" if s.status == 0 else f"{s.status_name}: {s.reason}",
               icon="CHECKMARK" if s.status >= 0 else "ERROR")
     r = s.reached
-    if s.status < 0 and (r[0] or r[3]):
+    if s.nearest:
         box.label(text=f"Renders the nearest reachable paint: L* {r[0]:.2f}  a* {r[1]:.2f}  b* {r[2]:.2f}  "
                        f"c {r[3]:.4f}  d {r[4]:.4f}", icon="INFO")
     elif s.source != "PAINT":

@@ -50,6 +50,13 @@ class Principled:
         return bool(self.inputs)
 
     @property
+    def nearest(self) -> bool:
+        """True when the paint is out of the bridge's reach and the inputs are the nearest paint's."""
+        from pgloss import bridge
+
+        return self.status in bridge.REACH_STATUSES
+
+    @property
     def exact(self) -> bool:
         """True when the material reads as the requested paint (ok, or a warning)."""
         return self.status >= 0
@@ -90,9 +97,7 @@ def from_gloss_60(L: float, a: float, b: float, gloss_60: float, d: float) -> Pr
     from pgloss import bridge
 
     if not (math.isfinite(gloss_60) and gloss_60 >= 0):
-        p = from_paint(L, a, b, 0.0, d, readings=False)
-        return Principled({}, p.requested, p.requested, -1, "PGLOSS_ERR_ARGUMENT",
-                          f"the 60° gloss must be a finite number ≥ 0 GU, not {gloss_60}")
+        raise ValueError(f"pgloss paint: the 60° gloss must be a finite number ≥ 0 GU, not {gloss_60}")
     # The c the bridge reaches at this L*, d: the nearest paint to c = 0, and to the largest c
     # inside the model's envelope (Fig. 10) on a grid (the envelope's c depends on L*).
     grid = np.linspace(0.5, 0.0, 51)

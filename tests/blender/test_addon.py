@@ -231,10 +231,42 @@ def test_principled_out_of_reach_renders_the_nearest_paint(addon) -> None:
     assert back.status in (0, bridge.ERR_BRIDGE_SPECULAR)
     np.testing.assert_allclose(back.paint, reached, atol=1e-4)
     np.testing.assert_allclose(reached, p.reached, atol=1e-6)
+    assert any("nearest reachable paint" in t for t in _panel_text(addon, mat))
     # A paint outside the model itself (beyond the envelope) leaves the node as it was, and says why.
     before = tuple(node.inputs["Base Color"].default_value)
     addon.set_principled(mat, L=50.0, c=0.9, d=0.9)
     assert s.status_name == "PGLOSS_ERR_ENVELOPE" and tuple(node.inputs["Base Color"].default_value) == before
+    text = _panel_text(addon, mat)
+    assert any("envelope" in t.lower() for t in text) and any("previous inputs" in t for t in text)
+    assert not any("nearest reachable" in t for t in text)
+
+
+class _Layout:
+    """Records what a panel's draw() writes (no UI in background mode)."""
+
+    def __init__(self, out):
+        self.out, self.alert = out, False
+
+    def label(self, text="", icon="NONE"):
+        self.out.append(text)
+
+    def prop(self, data, name, **kw):
+        self.out.append(f"[{name}]")
+
+    def operator(self, idname, **kw):
+        self.out.append(f"<{idname}>")
+        return type("Props", (), {})()
+
+    def column(self, **kw):
+        return self
+
+    row = box = column
+
+
+def _panel_text(addon, mat) -> list:
+    out: list = []
+    addon._draw_principled(_Layout(out), mat)
+    return out
 
 
 def test_principled_gloss_units_and_finishes(addon) -> None:
