@@ -35,8 +35,7 @@ import harness_cycles  # noqa: E402
 SCENE = ROOT / "examples" / "tracer" / "scenes" / "fig14.scene"
 STIMULUS = ROOT / "examples" / "tracer" / "scenes" / "stimulus.scene"
 MODULE = "bl_ext.user_default.pgloss_paint"
-#: The meter's basis: α 0.02–0.2 in 11 log steps (as tests/bridge), its spp, and the spp of the
-#: sphere renders read against it (noise: docs/bridge-validation.md).
+#: The α grid of the meter's basis: 0.02–0.2 in 11 log steps (as tests/bridge).
 ALPHAS = tuple(float(a) for a in np.geomspace(0.02, 0.2, 11))
 
 

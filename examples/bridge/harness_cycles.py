@@ -29,6 +29,10 @@ bridge tool prints, is unwrapped):
 * ``{"type": "osl", "file": "shader.osl", "output": "out"}`` — an OSL shader (e.g. MaterialX's
   genosl output) in a Script node, Cycles' OSL shading system on.
 
+From Python, :func:`build` also takes a function that makes each object's material from the
+scene's material statement (a Blender add-on's material), and builds the scene's ``mesh`` lines
+(OBJ through Blender's importer), so other scenes of the tracer's format render too (Fig. 14).
+
     .venv-bpy/bin/python examples/bridge/harness_cycles.py MATERIAL.json|'{…}' --out sphere.exr
         [--spp 1024] [--seed 1] [--size 160x120] [--crop x0,y0,w,h] [--threads 2]
 """
