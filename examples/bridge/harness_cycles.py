@@ -391,6 +391,7 @@ def build(bpy, material: PaintMaterial, tmp: Path, *, spp: int, seed: int, size:
         # The tracer's light emits from the side of e1 × e2 (scene.hpp): this winding's normal.
         pts = [c, c + e1, c + e1 + e2, c + e2]
         _quad(bpy, sc, f"light{i}", pts, light_material(bpy, float(lt["radiance"])))
+
     def paint(fields: Dict[str, str]):
         if callable(material):
             return material(bpy, mats[fields["material"]])
