@@ -24,7 +24,7 @@ wheel=$(basename "$(ls "$build"/wheels/pgloss-*.whl | head -1)")
 stage=$build/pgloss_paint
 rm -rf "$stage"
 mkdir -p "$stage/wheels"
-cp blender/pgloss_paint/__init__.py "$stage/"
+cp blender/pgloss_paint/*.py "$stage/"
 sed "s/@WHEEL@/$wheel/" blender/pgloss_paint/blender_manifest.toml >"$stage/blender_manifest.toml"
 cp osl/standalone/pgloss_material.osl "$stage/"
 cp "$build/wheels/$wheel" "$stage/wheels/"

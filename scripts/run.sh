@@ -35,4 +35,5 @@ fi
 for f in out/fig4.png out/fig12.png; do
   [[ -s $f ]] || { echo "run.sh: $f was not written" >&2; exit 1; }
 done
+bash scripts/fig14.sh  # out/fig14.png: Fig. 14's mugs matched in gloss, Blender Principled (gloss bridge) | Ward
 echo "== out/fig4.png (Experiment 1's 27 stimuli), out/fig12.png (gloss matching); linear EXRs in out/fig4/, out/fig12/"

@@ -29,6 +29,10 @@ bridge tool prints, is unwrapped):
 * ``{"type": "osl", "file": "shader.osl", "output": "out"}`` — an OSL shader (e.g. MaterialX's
   genosl output) in a Script node, Cycles' OSL shading system on.
 
+From Python, :func:`build` also takes a function that makes each object's material from the
+scene's material statement (a Blender add-on's material), and builds the scene's ``mesh`` lines
+(OBJ through Blender's importer), so other scenes of the tracer's format render too (Fig. 14).
+
     .venv-bpy/bin/python examples/bridge/harness_cycles.py MATERIAL.json|'{…}' --out sphere.exr
         [--spp 1024] [--seed 1] [--size 160x120] [--crop x0,y0,w,h] [--threads 2]
 """
@@ -40,7 +44,7 @@ import math
 import sys
 import tempfile
 from pathlib import Path
-from typing import Dict, List, Optional, Tuple
+from typing import Any, Callable, Dict, List, Optional, Tuple, Union
 
 import numpy as np
 
@@ -268,17 +272,51 @@ def analytic_sphere(bpy, sc, center, radius: float, mat):
     return ob
 
 
-def build(bpy, material: dict, tmp: Path, *, spp: int, seed: int, size: Tuple[int, int],
-          crop: Optional[Tuple[int, int, int, int]], threads: int, scene_path: Path = SCENE):
+def mesh_object(bpy, sc, path: Path, scale: float, translate, mat):
+    """An OBJ of a scene's ``mesh`` line through Blender's own importer, in the scene's axes (no
+    Y-up conversion), scaled then translated, flat shaded (the tracer's geometric normals)."""
+    before = set(bpy.data.objects)
+    bpy.ops.wm.obj_import(filepath=str(path), forward_axis="Y", up_axis="Z")
+    new = [o for o in bpy.data.objects if o not in before]
+    if len(new) != 1 or new[0].type != "MESH":
+        raise RuntimeError(f"{path}: Blender's OBJ importer made {len(new)} objects, not one mesh")
+    ob = new[0]
+    for poly in ob.data.polygons:
+        poly.use_smooth = False
+    ob.data.materials.clear()
+    ob.data.materials.append(mat)
+    ob.scale = (scale, scale, scale)
+    ob.location = tuple(translate)
+    if ob.name not in sc.collection.objects:
+        for c in list(ob.users_collection):
+            c.objects.unlink(ob)
+        sc.collection.objects.link(ob)
+    return ob
+
+
+#: What puts a material on the scene's paint objects: a harness material (one object for every
+#: sphere and mesh), or a function (bpy, the scene's material statement) → a bpy Material, called
+#: after the scene is reset (e.g. a Blender add-on's material made from the scene's paint).
+PaintMaterial = Union[dict, Callable[[Any, Dict[str, str]], Any]]
+
+
+def build(bpy, material: PaintMaterial, tmp: Path, *, spp: int, seed: int, size: Tuple[int, int],
+          crop: Optional[Tuple[int, int, int, int]], threads: int, scene_path: Path = SCENE,
+          keep_preferences: bool = False):
+    """The scene in a reset Blender. ``keep_preferences``: reset with the home file (empty), which
+    keeps the preferences and so the enabled add-ons, instead of the factory settings."""
     from mathutils import Matrix, Vector  # noqa: PLC0415
 
     st = read_scene(scene_path)
-    bpy.ops.wm.read_factory_settings(use_empty=True)
+    if keep_preferences:
+        bpy.ops.wm.read_homefile(use_empty=True)
+    else:
+        bpy.ops.wm.read_factory_settings(use_empty=True)
     sc = bpy.context.scene
     sc.render.engine = "CYCLES"
     cy = sc.cycles
     cy.device = "CPU"
-    cy.shading_system = material["type"] == "osl"
+    cy.shading_system = isinstance(material, dict) and material["type"] == "osl"
     cy.samples = spp
     cy.seed = seed
     cy.use_adaptive_sampling = False
@@ -353,9 +391,31 @@ def build(bpy, material: dict, tmp: Path, *, spp: int, seed: int, size: Tuple[in
         # The tracer's light emits from the side of e1 × e2 (scene.hpp): this winding's normal.
         pts = [c, c + e1, c + e1 + e2, c + e2]
         _quad(bpy, sc, f"light{i}", pts, light_material(bpy, float(lt["radiance"])))
-    sph = st["sphere"][0]
-    analytic_sphere(bpy, sc, vec(sph["center"]), float(sph["radius"]), sphere_material(bpy, material, tmp))
+
+    def paint(fields: Dict[str, str]):
+        if callable(material):
+            return material(bpy, mats[fields["material"]])
+        return sphere_material(bpy, material, tmp)
+
+    for sph in st.get("sphere", []):
+        analytic_sphere(bpy, sc, vec(sph["center"]), float(sph["radius"]), paint(sph))
+    for m in st.get("mesh", []):
+        mesh_object(bpy, sc, scene_path.parent / m["file"], float(m.get("scale", 1)),
+                    vec(m.get("translate", "0,0,0")), paint(m))
     return sc
+
+
+def install_extension(bpy, zip_path: Path, module: str):
+    """Installs a Blender extension zip into the user repository and enables it (the user folder
+    is $BLENDER_USER_RESOURCES: point it at a scratch folder); returns the add-on's module."""
+    import os  # noqa: PLC0415
+
+    if not os.environ.get("BLENDER_USER_RESOURCES"):
+        raise RuntimeError("set BLENDER_USER_RESOURCES to a scratch folder: the extension installs there")
+    r = bpy.ops.extensions.package_install_files(filepath=str(zip_path), repo="user_default", enable_on_install=True)
+    if r != {"FINISHED"} or module not in bpy.context.preferences.addons.keys():
+        raise RuntimeError(f"{zip_path}: the extension did not install and enable as {module} ({r})")
+    return sys.modules[module]
 
 
 def _bpy():
