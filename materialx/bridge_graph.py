@@ -41,6 +41,8 @@ ALPHA_RANGE = (0.004, 0.35)
 SQRT_C_SCALE = 0.35
 LN_A_CENTRE, LN_A_HALF = -2.76, 1.84
 OPENPBR = 0
+# PGLOSS_ERR_BRIDGE_BASE, _SPECULAR, _ROUGHNESS (pgloss/status.h): out of the target's reach.
+REACH_STATUSES = (-13, -14, -15)
 
 
 class Paint(C.Structure):
@@ -119,7 +121,7 @@ def training_set(lib: C.CDLL) -> np.ndarray:
 def fit(rows: np.ndarray, w_out: float = 0.0) -> np.ndarray:
     """Least squares over the reachable paints (status OK or ALPHA_UNTRUSTED), and with weight
     w_out the out-of-reach ones, whose parameters are those of the nearest reachable paint."""
-    w = np.where(rows[:, 3] >= 0, 1.0, np.where(np.isin(rows[:, 3], (-13, -14, -15)), w_out, 0.0))
+    w = np.where(rows[:, 3] >= 0, 1.0, np.where(np.isin(rows[:, 3], REACH_STATUSES), w_out, 0.0))
     r, sw = rows[w > 0], np.sqrt(w[w > 0])[:, None]
     M = monomials(features(r[:, 0], r[:, 1], r[:, 2]))
     Y = np.stack([np.log(r[:, 5]), np.log(r[:, 6]), r[:, 4]], -1)
@@ -409,7 +411,7 @@ def report(lib: C.CDLL, coef: np.ndarray, n: int = 4000, seed: int = 1) -> None:
         got_v = np.array([got.L, got.a, got.b, got.c, got.d])
         if st >= 0:
             inside.append((p[4], *np.abs(got_v - p)))
-        elif st in (-13, -14, -15):  # BRIDGE_BASE, BRIDGE_SPECULAR, BRIDGE_ROUGHNESS
+        elif st in REACH_STATUSES:
             want = np.array([reached.L, reached.a, reached.b, reached.c, reached.d])
             outside.append((p[4], *np.abs(got_v - want)))
     for name, rows in (("reachable", inside), ("out of reach (vs the C bridge's nearest reachable paint)", outside)):
