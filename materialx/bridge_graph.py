@@ -20,7 +20,7 @@ import ctypes as C
 import itertools
 import sys
 from pathlib import Path
-from typing import List, Sequence, Tuple
+from typing import List, NamedTuple, Sequence, Tuple
 
 import numpy as np
 
@@ -30,6 +30,7 @@ import cref  # noqa: E402  (libpgloss through ctypes, built with the project's C
 
 OUT = ROOT / "materialx" / "pgloss" / "pgloss_bridge.mtlx"
 DEGREE = 7
+BOUND_DEGREE = 6
 # The fitted box of inputs (a shader cannot raise an error: inputs outside are clamped to it).
 L_RANGE = (0.0, 100.0)
 C_RANGE = (0.0, 0.5)
@@ -90,19 +91,93 @@ def features(L: np.ndarray, c: np.ndarray, d: np.ndarray) -> np.ndarray:
     return np.stack([L / 50.0 - 1.0, np.sqrt(c) / SQRT_C_SCALE - 1.0, (np.log(1.0 - d) - LN_A_CENTRE) / LN_A_HALF], -1)
 
 
-def exponents(degree: int = DEGREE) -> List[Tuple[int, int, int]]:
-    return [e for e in itertools.product(range(degree + 1), repeat=3) if sum(e) <= degree]
+def exponents(degree: int = DEGREE, dims: int = 3) -> List[Tuple[int, ...]]:
+    return [e for e in itertools.product(range(degree + 1), repeat=dims) if sum(e) <= degree]
 
 
 def monomials(X: np.ndarray, degree: int = DEGREE) -> np.ndarray:
-    return np.stack([X[:, 0] ** i * X[:, 1] ** j * X[:, 2] ** k for i, j, k in exponents(degree)], -1)
+    return np.stack([np.prod([X[:, k] ** e[k] for k in range(X.shape[1])], 0)
+                     for e in exponents(degree, X.shape[1])], -1)
 
 
-def predict(coef: np.ndarray, L, c, d) -> Tuple[np.ndarray, np.ndarray, np.ndarray]:
+class Fit(NamedTuple):
+    """The fitted polynomials: the inverse (ln F0, ln α, β/Y) of (x, y, z); the bounds of the
+    reachable y (√c) as functions of (x, z) and of z (ln(1 − d)) as functions of (x, y); the
+    reachable x (L*) interval; the most y reachable at x < x_dark, where β = 0 limits it (a
+    dark paint's L* comes partly from its specular lobe), as a function of (x, z)."""
+    inverse: np.ndarray
+    y_bounds: np.ndarray
+    z_bounds: np.ndarray
+    x_range: Tuple[float, float]
+    y_dark: np.ndarray
+    x_dark: float
+
+
+def project(fit: Fit, X: np.ndarray) -> np.ndarray:
+    """Features onto (about) the reachable set, as the graph does: x into its interval; then z,
+    y, z again between their bounds at the other two (the C bridge's order: L* first, then c, d)."""
+    x = np.clip(X[:, 0], *fit.x_range)
+    y, z = X[:, 1], X[:, 2]
+
+    def clamp(v, b):
+        return np.clip(v, np.minimum(b[:, 0], b[:, 1]), np.maximum(b[:, 0], b[:, 1]))
+    z = clamp(z, monomials(np.stack([x, y], -1), BOUND_DEGREE) @ fit.z_bounds)
+    y = clamp(y, monomials(np.stack([x, z], -1), BOUND_DEGREE) @ fit.y_bounds)
+    dark = (monomials(np.stack([x, z], -1), BOUND_DEGREE) @ fit.y_dark)[:, 0]
+    y = np.where(x < fit.x_dark, np.minimum(y, dark), y)
+    z = clamp(z, monomials(np.stack([x, y], -1), BOUND_DEGREE) @ fit.z_bounds)
+    return np.stack([x, y, z], -1)
+
+
+def predict(fit: Fit, L, c, d) -> Tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The graph's arithmetic in numpy (double): F0, α, β/Y after the graph's clamps."""
     L, c, d = (np.atleast_1d(np.asarray(v, dtype=float)) for v in (L, c, d))
-    q = monomials(features(L, c, d)) @ coef
+    q = monomials(project(fit, features(L, c, d))) @ fit.inverse
     return (np.clip(np.exp(q[:, 0]), *F0_RANGE), np.clip(np.exp(q[:, 1]), *ALPHA_RANGE), np.maximum(q[:, 2], 0.0))
+
+
+def boundary_paints(lib: C.CDLL) -> Tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Features of the paints on the faces of the targets' box (pgloss_bridge_read): F0 at
+    either limit (the bounds of c), α at either limit (the bounds of d), and β = 0 (the
+    bound of c of dark paints); each row (x, y, z, which limit: 0 low, 1 high)."""
+    betas = np.linspace(0.0, 1.0, 41)
+    f0s = np.geomspace(*F0_RANGE, 25)
+    alphas = np.geomspace(*ALPHA_RANGE, 25)
+    reading = (C.c_double * 4)()
+    faces = []
+    for axis, limits, others in ((0, F0_RANGE, alphas), (1, ALPHA_RANGE, f0s)):
+        rows = []
+        for side, limit in enumerate(limits):
+            for beta in betas:
+                for o in others:
+                    f0, alpha = (limit, o) if axis == 0 else (o, limit)
+                    lib.pgloss_bridge_read(OPENPBR, C.c_double(beta), C.c_double(f0), C.c_double(alpha), reading)
+                    rd, rs, aw = reading[0], reading[1], reading[2]
+                    L = 116 * np.cbrt(rd) - 16 if rd > 216 / 24389 else rd * 24389 / 27
+                    c = np.cbrt(rs + rd / 2) - np.cbrt(rd / 2)
+                    rows.append((*features(np.array([L]), np.array([c]), np.array([1 - aw]))[0], side))
+        faces.append(np.array(rows))
+    dark = []
+    for f0 in f0s:
+        for alpha in alphas:
+            lib.pgloss_bridge_read(OPENPBR, C.c_double(0.0), C.c_double(f0), C.c_double(alpha), reading)
+            rd, rs, aw = reading[0], reading[1], reading[2]
+            L = 116 * np.cbrt(rd) - 16 if rd > 216 / 24389 else rd * 24389 / 27
+            c = np.cbrt(rs + rd / 2) - np.cbrt(rd / 2)
+            dark.append((*features(np.array([L]), np.array([c]), np.array([1 - aw]))[0], 0))
+    return faces[0], faces[1], np.array(dark)
+
+
+def fit_bounds(f0_faces: np.ndarray, alpha_faces: np.ndarray) -> Tuple[np.ndarray, np.ndarray]:
+    """y on the F0 faces as polynomials of (x, z); z on the α faces as polynomials of (x, y)."""
+    out = []
+    for faces, (a, b, v) in ((f0_faces, (0, 2, 1)), (alpha_faces, (0, 1, 2))):
+        cols = []
+        for side in (0, 1):
+            r = faces[faces[:, 3] == side]
+            cols.append(np.linalg.lstsq(monomials(r[:, [a, b]], BOUND_DEGREE), r[:, v], rcond=None)[0])
+        out.append(np.stack(cols, -1))
+    return out[0], out[1]
 
 
 def training_set(lib: C.CDLL) -> np.ndarray:
@@ -118,7 +193,7 @@ def training_set(lib: C.CDLL) -> np.ndarray:
     return np.array(rows)
 
 
-def fit(rows: np.ndarray, w_out: float = 0.0) -> np.ndarray:
+def fit_inverse(rows: np.ndarray, w_out: float = 0.0) -> np.ndarray:
     """Least squares over the reachable paints (status OK or ALPHA_UNTRUSTED), and with weight
     w_out the out-of-reach ones, whose parameters are those of the nearest reachable paint."""
     w = np.where(rows[:, 3] >= 0, 1.0, np.where(np.isin(rows[:, 3], REACH_STATUSES), w_out, 0.0))
@@ -165,34 +240,32 @@ class Graph:
         self.lines.append(f"    <!-- {text} -->")
 
 
-def _horner(g: Graph, coef: np.ndarray, x: str, y: str, z: str, degree: int = DEGREE) -> str:
-    """Σ C_ijk x^i y^j z^k (vector3 coefficients: the three fitted outputs at once), nested
-    Horner: in x outermost, then y, then z."""
-    index = {e: n for n, e in enumerate(exponents(degree))}
+def _poly(g: Graph, coef: np.ndarray, variables: Sequence[str], degree: int) -> str:
+    """Σ_e coef_e Π v^e (a vector coefficient per term: every fitted output at once), nested
+    Horner in the variables in order."""
+    typ = "float" if coef.shape[1] == 1 else f"vector{coef.shape[1]}"
+    index = {e: n for n, e in enumerate(exponents(degree, len(variables)))}
 
-    def const(v) -> tuple:
-        return tuple(float(t) for t in v)
-
-    def poly_z(i: int, j: int):
-        top = degree - i - j
-        acc = g.node("constant", "vector3", value=("vector3", const(coef[index[(i, j, top)]])))
-        for k in range(top - 1, -1, -1):
-            m = g.node("multiply", "vector3", in1=("vector3", acc), in2=("float", z))
-            acc = g.node("add", "vector3", in1=("vector3", m), in2=("vector3", const(coef[index[(i, j, k)]])))
+    def rec(prefix: tuple):
+        if len(prefix) == len(variables):
+            return tuple(float(v) for v in coef[index[prefix]])
+        top = degree - sum(prefix)
+        acc = rec(prefix + (top,))
+        if isinstance(acc, tuple):
+            acc = g.node("constant", typ, value=(typ, acc))
+        for e in range(top - 1, -1, -1):
+            m = g.node("multiply", typ, in1=(typ, acc), in2=("float", variables[len(prefix)]))
+            acc = g.node("add", typ, in1=(typ, m), in2=(typ, rec(prefix + (e,))))
         return acc
+    return rec(())
 
-    def poly_yz(i: int):
-        acc = poly_z(i, degree - i)
-        for j in range(degree - i - 1, -1, -1):
-            m = g.node("multiply", "vector3", in1=("vector3", acc), in2=("float", y))
-            acc = g.node("add", "vector3", in1=("vector3", m), in2=("vector3", poly_z(i, j)))
-        return acc
 
-    acc = poly_yz(degree)
-    for i in range(degree - 1, -1, -1):
-        m = g.node("multiply", "vector3", in1=("vector3", acc), in2=("float", x))
-        acc = g.node("add", "vector3", in1=("vector3", m), in2=("vector3", poly_yz(i)))
-    return acc
+def _clamp_between(g: Graph, v: str, bounds: str, name: str) -> str:
+    """v clamped between the two components of a vector2 (in either order)."""
+    b = g.node("separate2", "multioutput", in_=("vector2", bounds))
+    lo = g.node("min", "float", in1=("float", b + ".outx"), in2=("float", b + ".outy"))
+    hi = g.node("max", "float", in1=("float", b + ".outx"), in2=("float", b + ".outy"))
+    return g.node("clamp", "float", name, in_=("float", v), low=("float", lo), high=("float", hi))
 
 
 # Linear Rec. 709 from XYZ (D65): libpgloss/src/color.c (IEC 61966-2-1 primaries, D65 white).
@@ -212,7 +285,7 @@ def _lab_finv(g: Graph, t: str) -> str:
                   in2=("float", lin))
 
 
-def bridge_graph(coef: np.ndarray) -> List[str]:
+def bridge_graph(fit: Fit) -> List[str]:
     g = Graph()
     g.comment("The inputs, clamped to the fitted box (a shader cannot report an error).")
     L = g.node("clamp", "float", "L", in_=("float", "@lightness"), low=("float", L_RANGE[0]), high=("float", L_RANGE[1]))
@@ -245,7 +318,17 @@ def bridge_graph(coef: np.ndarray) -> List[str]:
     one_minus_d = g.node("subtract", "float", in1=("float", 1.0), in2=("float", d))
     z = g.node("divide", "float", "z", in1=("float", g.node("subtract", "float", in1=("float", g.node(
         "ln", "float", in_=("float", one_minus_d))), in2=("float", LN_A_CENTRE))), in2=("float", LN_A_HALF))
-    q = _horner(g, coef, x, y, z)
+    g.comment("Onto (about) the reachable set, as the C bridge's nearest reachable paint: L* into its interval, then "
+              "d, c, d between the fitted faces of the targets' box (F0 and alpha at their limits).")
+    x = g.node("clamp", "float", "x_reachable", in_=("float", x), low=("float", fit.x_range[0]),
+               high=("float", fit.x_range[1]))
+    z = _clamp_between(g, z, _poly(g, fit.z_bounds, (x, y), BOUND_DEGREE), "z_between_alpha_faces")
+    y = _clamp_between(g, y, _poly(g, fit.y_bounds, (x, z), BOUND_DEGREE), "y_between_f0_faces")
+    dark = g.node("min", "float", in1=("float", y), in2=("float", _poly(g, fit.y_dark, (x, z), BOUND_DEGREE)))
+    y = g.node("ifgreater", "float", "y_below_dark_face", value1=("float", fit.x_dark), value2=("float", x),
+               in1=("float", dark), in2=("float", y))
+    z = _clamp_between(g, z, _poly(g, fit.z_bounds, (x, y), BOUND_DEGREE), "z_reachable")
+    q = _poly(g, fit.inverse, (x, y, z), DEGREE)
     g.node("separate3", "multioutput", "q", in_=("vector3", q))
 
     g.comment("Onto the targets' parameter box (pgloss_bridge_range): the nearest reachable F0, alpha, base.")
@@ -279,7 +362,7 @@ PERCEPTUAL_INPUTS = """\
            doc="Distinctness-of-image gloss (eq. 3) of the paint as the bridge's gloss meter reads it." />"""
 
 
-def document(coef: np.ndarray) -> str:
+def document(fit: Fit) -> str:
     head = f"""<?xml version="1.0"?>
 <!-- SPDX-FileCopyrightText: 2026 The pgloss authors -->
 <!-- SPDX-License-Identifier: Apache-2.0 -->
@@ -305,7 +388,7 @@ def document(coef: np.ndarray) -> str:
 
   <nodegraph name="NG_pgloss_bridge_from_perceptual" nodedef="ND_pgloss_bridge_from_perceptual">
 """
-    body = "\n".join(bridge_graph(coef))
+    body = "\n".join(bridge_graph(fit))
     tail = f"""
     <output name="base_color" type="color3" nodename="base_color_in_gamut" />
     <output name="roughness" type="float" nodename="roughness_of_alpha" />
@@ -386,10 +469,10 @@ def _bridge_call() -> str:
     return f'    <pgloss_bridge_from_perceptual name="bridge" type="multioutput">\n{ins}\n    </pgloss_bridge_from_perceptual>'
 
 
-def graph_params(lib: C.CDLL, coef: np.ndarray, paint: Sequence[float]) -> Tuple[List[float], float, float]:
+def graph_params(lib: C.CDLL, fit: Fit, paint: Sequence[float]) -> Tuple[List[float], float, float]:
     """The graph's arithmetic in double for one paint: (base colour, roughness, F0)."""
     L, a, b, c, d = paint
-    f0, alpha, ratio = (float(v[0]) for v in predict(coef, L, c, d))
+    f0, alpha, ratio = (float(v[0]) for v in predict(fit, L, c, d))
     rgb = (C.c_double * 3)()
     lib.pgloss_rgb_from_lab((C.c_double * 3)(min(max(L, 0.0), 100.0), a, b), rgb)
     base = [max(v, 0.0) * ratio for v in rgb]
@@ -397,7 +480,7 @@ def graph_params(lib: C.CDLL, coef: np.ndarray, paint: Sequence[float]) -> Tuple
     return [v / top for v in base], float(np.sqrt(alpha)), f0
 
 
-def report(lib: C.CDLL, coef: np.ndarray, n: int = 4000, seed: int = 1) -> None:
+def report(lib: C.CDLL, fit: Fit, n: int = 4000, seed: int = 1) -> None:
     """The graph's error against the C bridge at random paints (not the fitting grid)."""
     rng = np.random.default_rng(seed)
     paints = np.stack([rng.uniform(0, 100, n), rng.uniform(-40, 40, n) * (rng.random(n) < 0.5),
@@ -406,7 +489,7 @@ def report(lib: C.CDLL, coef: np.ndarray, n: int = 4000, seed: int = 1) -> None:
     inside, outside = [], []
     for p in paints:
         st, _, reached = from_paint(lib, p)
-        base, rough, f0 = graph_params(lib, coef, p)
+        base, rough, f0 = graph_params(lib, fit, p)
         _, got = to_paint(lib, base, rough, 1.5, f0 / 0.04)
         got_v = np.array([got.L, got.a, got.b, got.c, got.d])
         if st >= 0:
@@ -436,8 +519,14 @@ def main(argv: Sequence[str]) -> int:
         rows = training_set(lib)
         if cache is not None:
             np.save(cache, rows)
-    coef = fit(rows)
-    text = document(coef)
+    faces = boundary_paints(lib)
+    reach = features(rows[rows[:, 3] >= 0, 0], rows[rows[:, 3] >= 0, 1], rows[rows[:, 3] >= 0, 2])
+    xs = np.concatenate([reach[:, 0], faces[0][:, 0], faces[1][:, 0]])
+    dark = faces[2]
+    y_dark = np.linalg.lstsq(monomials(dark[:, [0, 2]], BOUND_DEGREE), dark[:, 1], rcond=None)[0][:, None]
+    fit = Fit(fit_inverse(rows), *fit_bounds(faces[0], faces[1]), (float(xs.min()), float(xs.max())),
+              y_dark, float(dark[:, 0].max()))
+    text = document(fit)
     if "--check" in argv:
         same = OUT.exists() and OUT.read_text() == text
         print("pgloss_bridge.mtlx is " + ("up to date" if same else "OUT OF DATE: rerun materialx/bridge_graph.py"))
@@ -445,7 +534,7 @@ def main(argv: Sequence[str]) -> int:
     OUT.write_text(text)
     print(f"wrote {OUT.relative_to(ROOT)}: degree {DEGREE}, {len(exponents())} terms, "
           f"{int((rows[:, 3] >= 0).sum())} reachable paints of {len(rows)} fitted")
-    report(lib, coef)
+    report(lib, fit)
     return 0
 
 

@@ -8,7 +8,10 @@ import numpy as np
 
 # The paint that the graph's parameters read as, against the requested reachable paint: the
 # measured maxima over random reachable paints (docs/materialx.md), rounded up.
-TOL_L, TOL_AB, TOL_C, TOL_D, TOL_D_TRUSTED = 0.75, 0.5, 0.008, 0.035, 0.015
+TOL_L, TOL_AB, TOL_C, TOL_D, TOL_D_TRUSTED = 0.75, 0.5, 0.01, 0.035, 0.015
+# Out of reach, the median distance of the paint read from the graph's parameters to the C
+# bridge's nearest reachable paint (measured 0.10 / 0.004 / 0.007), with room for the sample.
+OUT_L, OUT_C, OUT_D = 0.5, 0.015, 0.03
 # The Fig. 14 red paint of materialx/examples/pgloss_bridge_paint.mtlx.
 FIG14_RED = (35.0, 45.0, 25.0, 0.06, 0.95)
 
@@ -64,6 +67,9 @@ def check_against_c(bg, paints: np.ndarray, got: np.ndarray, min_reachable: int 
             reached_err.append(np.abs(read_v - [reached.L, reached.a, reached.b, reached.c, reached.d]))
     assert len(param_err) >= min_reachable, len(param_err)
     pe, re_ = np.array(param_err), np.array(reached_err)
+    # Out of reach: near the C bridge's nearest reachable paint (docs/materialx.md states the spread).
+    med = np.median(re_, axis=0)
+    assert med[0] <= OUT_L and med[3] <= OUT_C and med[4] <= OUT_D, med
     return (f"{len(pe)} reachable paints: max relative |dF0| {pe[:, 0].max():.3f}, |droughness| {pe[:, 1].max():.3f}; "
             f"{len(re_)} out of reach, against the C bridge's nearest reachable paint: median |dL*| "
             f"{np.median(re_[:, 0]):.2f}, |dc| {np.median(re_[:, 3]):.3f}, |dd| {np.median(re_[:, 4]):.3f}")
