@@ -486,17 +486,25 @@ def report(lib: C.CDLL, fit: Fit, n: int = 4000, seed: int = 1) -> None:
     paints = np.stack([rng.uniform(0, 100, n), rng.uniform(-40, 40, n) * (rng.random(n) < 0.5),
                        rng.uniform(-40, 40, n) * (rng.random(n) < 0.5), rng.uniform(0, 0.5, n),
                        rng.uniform(0.6, 0.99, n)], -1)
-    inside, outside = [], []
+    inside, outside, params = [], [], []
     for p in paints:
-        st, _, reached = from_paint(lib, p)
+        st, want, reached = from_paint(lib, p)
         base, rough, f0 = graph_params(lib, fit, p)
         _, got = to_paint(lib, base, rough, 1.5, f0 / 0.04)
         got_v = np.array([got.L, got.a, got.b, got.c, got.d])
         if st >= 0:
             inside.append((p[4], *np.abs(got_v - p)))
+            params.append((abs(f0 / (want.specular * 0.04) - 1), abs(rough / want.roughness - 1),
+                           abs(base[1] - want.base_color[1])))
         elif st in REACH_STATUSES:
             want = np.array([reached.L, reached.a, reached.b, reached.c, reached.d])
             outside.append((p[4], *np.abs(got_v - want)))
+    q = np.array(params)
+    print(f"parameters at the reachable paints against pgloss_bridge_from_perceptual: relative |dF0| median "
+          f"{np.median(q[:, 0]):.4f} p99 {np.percentile(q[:, 0], 99):.4f} max {q[:, 0].max():.4f}; relative "
+          f"|droughness| median {np.median(q[:, 1]):.4f} p99 {np.percentile(q[:, 1], 99):.4f} max {q[:, 1].max():.4f}; "
+          f"|dG| of the base colour median {np.median(q[:, 2]):.4f} p99 {np.percentile(q[:, 2], 99):.4f} "
+          f"max {q[:, 2].max():.4f}")
     for name, rows in (("reachable", inside), ("out of reach (vs the C bridge's nearest reachable paint)", outside)):
         e = np.array(rows)
         for label, m in (("all d", np.ones(len(e), bool)), ("d >= 0.8", e[:, 0] >= 0.8)):
