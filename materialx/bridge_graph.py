@@ -395,72 +395,52 @@ def document(fit: Fit) -> str:
     <output name="f0" type="float" nodename="f0_clamped" />
   </nodegraph>
 
-  <!-- Node: <pgloss_open_pbr_surface> - OpenPBR Surface from a paint: base_weight 1, specular_ior 1.5,
-       specular_weight = F0 / 0.04 (OpenPBR spec, "Specular": the weight scales F0 of the IOR). -->
-  <nodedef name="ND_pgloss_open_pbr_surface" node="pgloss_open_pbr_surface" nodegroup="pbr"
-           doc="OpenPBR Surface with the parameters of the gloss bridge for a paint (L*, a*, b*, c, d).">
-{PERCEPTUAL_INPUTS}
-    <input name="geometry_normal" type="vector3" defaultgeomprop="Nworld" uiname="Normal" />
-    <output name="out" type="surfaceshader" />
-  </nodedef>
-
-  <nodegraph name="NG_pgloss_open_pbr_surface" nodedef="ND_pgloss_open_pbr_surface">
-{_bridge_call()}
-    <multiply name="specular_weight" type="float">
-      <input name="in1" type="float" nodename="bridge" output="f0" />
-      <input name="in2" type="float" value="25.0" />
-    </multiply>
-    <open_pbr_surface name="surface" type="surfaceshader">
-      <input name="base_weight" type="float" value="1.0" />
-      <input name="base_color" type="color3" nodename="bridge" output="base_color" />
-      <input name="specular_weight" type="float" nodename="specular_weight" />
-      <input name="specular_roughness" type="float" nodename="bridge" output="roughness" />
-      <input name="specular_ior" type="float" value="1.5" />
-      <input name="geometry_normal" type="vector3" interfacename="geometry_normal" />
-    </open_pbr_surface>
-    <output name="out" type="surfaceshader" nodename="surface" />
-  </nodegraph>
-
-  <!-- Node: <pgloss_standard_surface> - Standard Surface from a paint: base 1, specular 1, and F0 carried
-       by specular_IOR = (1 + sqrt(F0)) / (1 - sqrt(F0)) (Standard Surface spec, "Specular"). -->
-  <nodedef name="ND_pgloss_standard_surface" node="pgloss_standard_surface" nodegroup="pbr"
-           doc="Autodesk Standard Surface with the parameters of the gloss bridge for a paint (L*, a*, b*, c, d).">
-{PERCEPTUAL_INPUTS}
-    <input name="normal" type="vector3" defaultgeomprop="Nworld" uiname="Normal" />
-    <output name="out" type="surfaceshader" />
-  </nodedef>
-
-  <nodegraph name="NG_pgloss_standard_surface" nodedef="ND_pgloss_standard_surface">
-{_bridge_call()}
-    <sqrt name="sqrt_f0" type="float">
-      <input name="in" type="float" nodename="bridge" output="f0" />
-    </sqrt>
-    <add name="ior_num" type="float">
-      <input name="in1" type="float" value="1.0" />
-      <input name="in2" type="float" nodename="sqrt_f0" />
-    </add>
-    <subtract name="ior_den" type="float">
-      <input name="in1" type="float" value="1.0" />
-      <input name="in2" type="float" nodename="sqrt_f0" />
-    </subtract>
-    <divide name="specular_IOR" type="float">
-      <input name="in1" type="float" nodename="ior_num" />
-      <input name="in2" type="float" nodename="ior_den" />
-    </divide>
-    <standard_surface name="surface" type="surfaceshader">
-      <input name="base" type="float" value="1.0" />
-      <input name="base_color" type="color3" nodename="bridge" output="base_color" />
-      <input name="specular" type="float" value="1.0" />
-      <input name="specular_roughness" type="float" nodename="bridge" output="roughness" />
-      <input name="specular_IOR" type="float" nodename="specular_IOR" />
-      <input name="normal" type="vector3" interfacename="normal" />
-    </standard_surface>
-    <output name="out" type="surfaceshader" nodename="surface" />
-  </nodegraph>
-
+{_surface("pgloss_open_pbr_surface", "OpenPBR Surface", "open_pbr_surface", "geometry_normal", OPENPBR_NOTE,
+           OPENPBR_CONVERSION, OPENPBR_INPUTS)}
+{_surface("pgloss_standard_surface", "Autodesk Standard Surface", "standard_surface", "normal", STANDARD_NOTE,
+           STANDARD_CONVERSION, STANDARD_INPUTS)}
 </materialx>
 """
     return head + body + tail
+
+
+OPENPBR_NOTE = ("base_weight 1, specular_ior 1.5, specular_weight = F0 / 0.04 (OpenPBR spec, \"Specular\": "
+                "the weight scales F0 of the IOR)")
+OPENPBR_CONVERSION = [("multiply", "specular_weight", (("in1", "#bridge.f0"), ("in2", 25.0)))]
+OPENPBR_INPUTS = (("base_weight", 1.0), ("specular_weight", "#specular_weight"), ("specular_ior", 1.5))
+STANDARD_NOTE = ("base 1, specular 1, and F0 carried by specular_IOR = (1 + sqrt(F0)) / (1 - sqrt(F0)) "
+                 "(Standard Surface spec, \"Specular\")")
+STANDARD_CONVERSION = [("sqrt", "sqrt_f0", (("in", "#bridge.f0"),)),
+                       ("add", "ior_num", (("in1", 1.0), ("in2", "#sqrt_f0"))),
+                       ("subtract", "ior_den", (("in1", 1.0), ("in2", "#sqrt_f0"))),
+                       ("divide", "specular_IOR", (("in1", "#ior_num"), ("in2", "#ior_den")))]
+STANDARD_INPUTS = (("base", 1.0), ("specular", 1.0), ("specular_IOR", "#specular_IOR"))
+
+
+def _surface(node: str, title: str, surface: str, normal: str, note: str, conversion, inputs) -> str:
+    """A surface node from a paint: the bridge node, the target's F0 convention, the target's
+    surface node with the bridge's base colour and roughness."""
+    g = Graph()
+    for kind, name, ins in conversion:
+        g.node(kind, "float", name, **{k: ("float", v) for k, v in ins})
+    g.node(surface, "surfaceshader", "surface", base_color=("color3", "#bridge.base_color"),
+           specular_roughness=("float", "#bridge.roughness"), **{k: ("float", v) for k, v in inputs},
+           **{normal: ("vector3", "@" + normal)})
+    body = "\n".join(g.lines)
+    return f"""  <!-- Node: <{node}> - {title} from a paint: {note}. -->
+  <nodedef name="ND_{node}" node="{node}" nodegroup="pbr"
+           doc="{title} with the parameters of the gloss bridge for a paint (L*, a*, b*, c, d).">
+{PERCEPTUAL_INPUTS}
+    <input name="{normal}" type="vector3" defaultgeomprop="Nworld" uiname="Normal" />
+    <output name="out" type="surfaceshader" />
+  </nodedef>
+
+  <nodegraph name="NG_{node}" nodedef="ND_{node}">
+{_bridge_call()}
+{body}
+    <output name="out" type="surfaceshader" nodename="surface" />
+  </nodegraph>
+"""
 
 
 def _bridge_call() -> str:

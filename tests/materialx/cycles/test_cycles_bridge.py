@@ -45,15 +45,8 @@ def _render_paints(osl: Path, paints: np.ndarray, work: Path) -> np.ndarray:
     """One camera-facing unit plane per paint, its material the shader with the paint's inputs,
     rendered as emission (1 sample, box pixel filter): the output's value per paint."""
     n = len(paints)
-    sc = oslrt.reset_scene()
-    sc.cycles.samples = 1
-    sc.cycles.use_adaptive_sampling = False
-    sc.cycles.use_denoising = False
-    sc.cycles.pixel_filter_type = "BOX"
-    sc.cycles.filter_width = 0.01
-    sc.cycles.max_bounces = 0
-    sc.render.resolution_x, sc.render.resolution_y = n, 4
-    mat0, nt0, script0, out0 = oslrt.osl_material("paint", osl)
+    sc = oslrt.emission_scene(n, 4)
+    mat0 = oslrt.osl_material("paint", osl)[0]
     for i, p in enumerate(paints):
         mesh = bpy.data.meshes.new(f"plane{i}")
         x0 = i - n / 2
@@ -67,20 +60,7 @@ def _render_paints(osl: Path, paints: np.ndarray, work: Path) -> np.ndarray:
             script.inputs[f"BR_{key}"].default_value = float(v)
         mat.node_tree.links.new(script.outputs[0], out.inputs["Surface"])
         mesh.materials.append(mat)
-    cam = bpy.data.cameras.new("cam")
-    cam.type = "ORTHO"
-    cam.ortho_scale = float(n)
-    cam_obj = bpy.data.objects.new("cam", cam)
-    sc.collection.objects.link(cam_obj)
-    cam_obj.location = (0.0, 0.0, 10.0)
-    sc.camera = cam_obj
-    sc.world = bpy.data.worlds.new("black")
-    sc.world.color = (0.0, 0.0, 0.0)
-    path = work / f"{osl.stem}.exr"
-    sc.render.filepath = str(path)
-    bpy.ops.render.render(write_still=True)
-    px = np.asarray(oslrt.oiio.ImageBuf(str(path)).get_pixels(oslrt.oiio.FLOAT))
-    return px[1, :, :3].astype(float)
+    return oslrt.render_exr(sc, work / f"{osl.stem}.exr")[1].astype(float)
 
 
 def test_bridge_outputs_in_cycles_against_the_c_bridge(tmp_path: Path) -> None:
