@@ -319,7 +319,8 @@ def bridge_graph(fit: Fit) -> List[str]:
     z = g.node("divide", "float", "z", in1=("float", g.node("subtract", "float", in1=("float", g.node(
         "ln", "float", in_=("float", one_minus_d))), in2=("float", LN_A_CENTRE))), in2=("float", LN_A_HALF))
     g.comment("Onto (about) the reachable set, as the C bridge's nearest reachable paint: L* into its interval, then "
-              "d, c, d between the fitted faces of the targets' box (F0 and alpha at their limits).")
+              "d, c, d between the fitted faces of the targets' box (F0 and alpha at their limits), "
+              "c below the face beta = 0 for dark paints.")
     x = g.node("clamp", "float", "x_reachable", in_=("float", x), low=("float", fit.x_range[0]),
                high=("float", fit.x_range[1]))
     z = _clamp_between(g, z, _poly(g, fit.z_bounds, (x, y), BOUND_DEGREE), "z_between_alpha_faces")
@@ -372,8 +373,9 @@ def document(fit: Fit) -> str:
   them renders in any MaterialX renderer. A paint (L*, a*, b*, c, d) drives OpenPBR Surface
   and Autodesk Standard Surface with the parameters that the bridge's gloss meter reads as that
   paint. The table inversion of the C bridge is a fitted polynomial here: docs/materialx.md
-  states its error against the C bridge. Out-of-reach paints get the parameters clamped into
-  the targets' box (a shader cannot report the C bridge's status).
+  states its error against the C bridge. An out-of-reach paint is moved onto (about) the
+  reachable set first, as the C bridge's nearest reachable paint, and the parameters are kept
+  in the targets' box; a shader cannot report the C bridge's status.
 -->
 <materialx version="1.39">
 

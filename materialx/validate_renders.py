@@ -1,12 +1,13 @@
 # SPDX-FileCopyrightText: 2026 The pgloss authors
 # SPDX-License-Identifier: Apache-2.0
 """The bridge's MaterialX nodes measured in a renderer: each paper paint (Fig. 4's 27, Fig. 12's
-triplet) as <pgloss_open_pbr_surface> / <pgloss_standard_surface> (materialx/pgloss/
+triplet; and two coloured paints at one gloss, the sample's Fig. 14 red and a light blue) as <pgloss_open_pbr_surface> / <pgloss_standard_surface> (materialx/pgloss/
 pgloss_bridge.mtlx), ShaderGen's OSL rendered in Cycles in the stimulus scene, and (c, d) read
 back by the image gloss meter (pgloss.image_meter, ρd known from L*), as examples/bridge/
 validate.py does for the C bridge's parameters. Prints a Markdown table.
 
     nice .venv-bridge/bin/python materialx/validate_renders.py [--spp 256] [--targets openpbr,standard_surface]
+        [--paints all|paper|colour]
 
 (.venv-bridge and .venv-bpy: scripts/test-bridge.sh; the meter's basis is cached under --work.)
 """
@@ -29,6 +30,22 @@ import pgloss  # noqa: E402
 from pgloss import bridge  # noqa: E402
 
 NODES = {"openpbr": "pgloss_open_pbr_surface", "standard_surface": "pgloss_standard_surface"}
+#: Coloured paints of one gloss (label, L*, a*, b*, c, d): the Fig. 14 red of materialx/examples
+#: and a light blue; the meter reads luminance, with ρd the luminance of L*.
+COLOURED = [("red L*35 a*45 b*25", 35.0, 45.0, 25.0, 0.06, 0.95),
+            ("light blue L*70 a*-5 b*-30", 70.0, -5.0, -30.0, 0.06, 0.95)]
+
+
+def paints(which: str):
+    """(label, ρd, paint (L*, a*, b*, c, d)) of validate.py's 30 paper paints and/or COLOURED."""
+    out = []
+    if which in ("all", "paper"):
+        for label, rd, rs, a in v.paints("all"):
+            L, c, d = (float(x) for x in pgloss.gloss_from_physical(rd, rs, a))
+            out.append((label, rd, (L, 0.0, 0.0, c, d)))
+    if which in ("all", "colour"):
+        out += [(label, float(pgloss.luminance_from_lightness(p[0])), p) for label, *p in COLOURED]
+    return out
 
 
 def osl_of_paint(node: str, paint, folder: Path) -> Path:
@@ -73,6 +90,7 @@ def main() -> int:
     ap.add_argument("--basis-spp", type=int, default=1024)
     ap.add_argument("--alphas", type=int, default=21)
     ap.add_argument("--targets", default="openpbr,standard_surface")
+    ap.add_argument("--paints", choices=("all", "paper", "colour"), default="all")
     ap.add_argument("--tracer", type=Path, default=Path(os.environ.get(
         "PGLOSS_TRACER", "build-tracer-test/examples/tracer/pgloss-tracer")))
     ap.add_argument("--bpy-python", type=Path, default=Path(".venv-bpy/bin/python"))
@@ -82,17 +100,16 @@ def main() -> int:
     args.alphas = tuple(float(a) for a in np.geomspace(0.01, 0.3, args.alphas))
     r = v.Renderers(args.tracer, args.work, args.threads, args.bpy_python)
     meter = v.Meter(args)
-    ps = v.paints("all")
+    ps = paints(args.paints)
     print(f"Paints mapped by the MaterialX nodes (not the C bridge), ShaderGen OSL in Cycles at {args.spp} spp, "
           f"read by the image gloss meter (basis {args.basis_spp} spp). Pass: |Δc| ≤ {v.TOL_C}, |Δd| ≤ {v.TOL_D}.\n")
     for target in args.targets.split(","):
         jobs, meta = [], []
-        for i, (label, rd, rs, a) in enumerate(ps):
-            L, c, d = (float(x) for x in pgloss.gloss_from_physical(rd, rs, a))
-            st = int(np.asarray(bridge.from_paint(target, [L, 0.0, 0.0, c, d], errors="status").status))
-            osl = osl_of_paint(NODES[target], (L, 0.0, 0.0, c, d), args.work / "osl")
+        for i, (label, rd, paint) in enumerate(ps):
+            st = int(np.asarray(bridge.from_paint(target, list(paint), errors="status").status))
+            osl = osl_of_paint(NODES[target], paint, args.work / "osl")
             jobs.append(v.Job({"type": "osl", "file": str(osl), "output": "out"}, args.spp, 6000 + i))
-            meta.append((label, rd, c, d, st))
+            meta.append((label, rd, paint[3], paint[4], st))
         rows, npass, nreach, worst = [], 0, 0, [0.0, 0.0]
         for (label, rd, c, d, st), img in zip(meta, r.images("cycles", jobs)):
             f = meter.read(img, rd)["primary"]
