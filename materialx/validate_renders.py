@@ -14,9 +14,7 @@ validate.py does for the C bridge's parameters. Prints a Markdown table.
 from __future__ import annotations
 
 import argparse
-import hashlib
 import os
-import shutil
 import sys
 from pathlib import Path
 
@@ -24,11 +22,13 @@ import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "examples" / "bridge"))
+import materialx_osl  # noqa: E402  (ShaderGen's OSL of a surface node, for Cycles)
 import validate as v  # noqa: E402  (the renderers, the meter, the paints of the bridge's validation)
 
 import pgloss  # noqa: E402
 from pgloss import bridge  # noqa: E402
 
+LIBRARY = ROOT / "materialx" / "pgloss" / "pgloss_bridge.mtlx"
 NODES = {"openpbr": "pgloss_open_pbr_surface", "standard_surface": "pgloss_standard_surface"}
 #: Coloured paints of one gloss (label, L*, a*, b*, c, d): the Fig. 14 red of materialx/examples
 #: and a light blue; the meter reads luminance, with ρd the luminance of L*.
@@ -46,42 +46,6 @@ def paints(which: str):
     if which in ("all", "colour"):
         out += [(label, float(pgloss.luminance_from_lightness(p[0])), p) for label, *p in COLOURED]
     return out
-
-
-def osl_of_paint(node: str, paint, folder: Path) -> Path:
-    """ShaderGen's OSL of a material made of ``node`` at ``paint`` (L*, a*, b*, c, d), with
-    nothing but MaterialX's libraries and pgloss_bridge.mtlx."""
-    import MaterialX as mx  # noqa: PLC0415
-    import MaterialX.PyMaterialXGenOsl as mx_osl  # noqa: PLC0415
-    import MaterialX.PyMaterialXGenShader as mx_gen  # noqa: PLC0415
-
-    key = hashlib.sha256(repr((node, tuple(paint))).encode()).hexdigest()[:12]
-    path = folder / f"{node}_{key}.osl"
-    if path.exists():
-        return path
-    root = Path(mx.__file__).resolve().parent
-    search = mx.FileSearchPath(str(root))
-    search.append(str(root / "libraries"))
-    lib = mx.createDocument()
-    mx.loadLibraries(["libraries"], search, lib)
-    doc = mx.createDocument()
-    mx.readFromXmlFile(doc, str(ROOT / "materialx" / "pgloss" / "pgloss_bridge.mtlx"), search)
-    doc.importLibrary(lib)
-    shader = doc.addNode(node, "paint", "surfaceshader")
-    for name, value in zip(("lightness", "a", "b", "c", "d"), paint):
-        shader.setInputValue(name, float(value))
-    material = doc.addMaterialNode("M_paint", shader)
-    ok, msg = doc.validate()
-    if not ok:
-        raise ValueError(msg)
-    gen = mx_osl.OslShaderGenerator.create()
-    ctx = mx_gen.GenContext(gen)
-    ctx.registerSourceCodeSearchPath(search)
-    folder.mkdir(parents=True, exist_ok=True)
-    for h in (root / "libraries" / "stdlib" / "genosl" / "include").glob("*.h"):
-        shutil.copy(h, folder / h.name)
-    path.write_text(gen.generate("M_paint", material, ctx).getSourceCode(mx_gen.PIXEL_STAGE))
-    return path
 
 
 def main() -> int:
@@ -107,7 +71,8 @@ def main() -> int:
         jobs, meta = [], []
         for i, (label, rd, paint) in enumerate(ps):
             st = int(np.asarray(bridge.from_paint(target, list(paint), errors="status").status))
-            osl = osl_of_paint(NODES[target], paint, args.work / "osl")
+            osl = materialx_osl.osl_shader(NODES[target], dict(zip(("lightness", "a", "b", "c", "d"), paint)),
+                                           args.work / "osl", library=LIBRARY)
             jobs.append(v.Job({"type": "osl", "file": str(osl), "output": "out"}, args.spp, 6000 + i))
             meta.append((label, rd, paint[3], paint[4], st))
         rows, npass, nreach, worst = [], 0, 0, [0.0, 0.0]
