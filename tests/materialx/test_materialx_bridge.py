@@ -4,7 +4,9 @@
 (libpgloss through ctypes: pgloss_bridge_from_perceptual, pgloss_bridge_to_perceptual).
 
 - the nodes validate, and their graphs use MaterialX's standard nodes only: the sample document
-  validates and generates GLSL and OSL with nothing of pgloss's code on the search path;
+  validates and generates code for every ShaderGen target of the package (GLSL, ESSL, Vulkan
+  GLSL, MSL, MDL, Slang, OSL) with nothing of pgloss's code on the search path, and its GLSL and
+  ESSL compile with glslangValidator;
 - the GLSL that ShaderGen makes from <pgloss_bridge_from_perceptual>, run on llvmpipe, gives
   parameters that the C bridge reads back as the requested paint, within the errors stated in
   docs/materialx.md, at the paper's paints and at random reachable ones; out-of-reach and
@@ -12,6 +14,8 @@
 """
 from __future__ import annotations
 
+import shutil
+import subprocess
 import sys
 from pathlib import Path
 
@@ -81,20 +85,40 @@ def test_bridge_nodes_validate_and_use_standard_nodes_only() -> None:
             assert inp.getAttribute("uiname"), (nd, inp.getName())
 
 
-def test_sample_generates_glsl_and_osl_without_pgloss_code() -> None:
+def _generators() -> dict:
+    """Every ShaderGen target of the MaterialX package: GLSL, ESSL, Vulkan GLSL, MSL, MDL, Slang, OSL."""
+    import MaterialX.PyMaterialXGenMdl as mx_mdl  # noqa: PLC0415
+    import MaterialX.PyMaterialXGenMsl as mx_msl  # noqa: PLC0415
+    import MaterialX.PyMaterialXGenSlang as mx_slang  # noqa: PLC0415
+    return {"frag": mx_glsl.GlslShaderGenerator.create(), "essl.frag": mx_glsl.EsslShaderGenerator.create(),
+            "vk.frag": mx_glsl.VkShaderGenerator.create(), "metal": mx_msl.MslShaderGenerator.create(),
+            "mdl": mx_mdl.MdlShaderGenerator.create(), "slang": mx_slang.SlangShaderGenerator.create(),
+            "osl": mx_osl.OslShaderGenerator.create()}
+
+
+def test_sample_generates_for_every_target_without_pgloss_code() -> None:
     doc = load(SAMPLE)  # with its XInclude of the library
     ok, msg = doc.validate()
     assert ok, msg
     OUT.mkdir(parents=True, exist_ok=True)
     materials = [m.getName() for m in doc.getMaterialNodes()]
     assert materials == ["M_fig14_red_openpbr", "M_fig14_red_standard_surface"]
-    for gen, ext in ((mx_glsl.GlslShaderGenerator.create(), "frag"), (mx_osl.OslShaderGenerator.create(), "osl")):
+    glslang = shutil.which("glslangValidator")
+    if glslang is None:
+        pytest.skip("glslangValidator (Debian glslang-tools) is missing")
+    for ext, gen in _generators().items():
         for name in materials:
             ctx = mx_gen.GenContext(gen)
             ctx.registerSourceCodeSearchPath(standard_search_path())
-            src = gen.generate(name, doc.getChild(name), ctx).getSourceCode(mx_gen.PIXEL_STAGE)
-            assert "pgloss_material_init" not in src and "NG_pgloss_bridge_from_perceptual" in src
+            shader = gen.generate(name, doc.getChild(name), ctx)
+            src = shader.getSourceCode(mx_gen.PIXEL_STAGE)
+            assert "pgloss_material_init" not in src and "bridge_from_perceptual" in src, (ext, name)
             (OUT / f"{name}.{ext}").write_text(src)  # the Cycles test renders the .osl
+            if ext in ("frag", "essl.frag"):  # both stages compile (desktop GLSL 4.0, OpenGL ES 3.0)
+                (OUT / f"{name}.{ext[:-4]}vert").write_text(shader.getSourceCode(mx_gen.VERTEX_STAGE))
+                for stage, path in (("frag", OUT / f"{name}.{ext}"), ("vert", OUT / f"{name}.{ext[:-4]}vert")):
+                    r = subprocess.run([glslang, "-S", stage, str(path)], capture_output=True, text=True)
+                    assert r.returncode == 0, (path, r.stdout + r.stderr)
 
 
 # ---------------------------------------------------------------- the generated GLSL on llvmpipe
