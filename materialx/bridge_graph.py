@@ -12,12 +12,15 @@ answers at the reachable paints of a grid; docs/materialx.md gives the method an
 
     .venv-materialx/bin/python materialx/bridge_graph.py          # regenerate (about 2 min)
     .venv-materialx/bin/python materialx/bridge_graph.py --check  # the file is up to date
+    .venv-materialx/bin/python materialx/bridge_graph.py --study  # cost against error per degree
     (--rows FILE.npy keeps the C bridge's answers on the grid between runs)
 """
 from __future__ import annotations
 
 import ctypes as C
+import os
 import itertools
+import re
 import sys
 from pathlib import Path
 from typing import List, NamedTuple, Sequence, Tuple
@@ -111,6 +114,7 @@ class Fit(NamedTuple):
     x_range: Tuple[float, float]
     y_dark: np.ndarray
     x_dark: float
+    degree: int = DEGREE
 
 
 def project(fit: Fit, X: np.ndarray) -> np.ndarray:
@@ -132,7 +136,7 @@ def project(fit: Fit, X: np.ndarray) -> np.ndarray:
 def predict(fit: Fit, L, c, d) -> Tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The graph's arithmetic in numpy (double): F0, α, β/Y after the graph's clamps."""
     L, c, d = (np.atleast_1d(np.asarray(v, dtype=float)) for v in (L, c, d))
-    q = monomials(project(fit, features(L, c, d))) @ fit.inverse
+    q = monomials(project(fit, features(L, c, d)), fit.degree) @ fit.inverse
     return (np.clip(np.exp(q[:, 0]), *F0_RANGE), np.clip(np.exp(q[:, 1]), *ALPHA_RANGE), np.maximum(q[:, 2], 0.0))
 
 
@@ -193,12 +197,12 @@ def training_set(lib: C.CDLL) -> np.ndarray:
     return np.array(rows)
 
 
-def fit_inverse(rows: np.ndarray, w_out: float = 0.0) -> np.ndarray:
+def fit_inverse(rows: np.ndarray, w_out: float = 0.0, degree: int = DEGREE) -> np.ndarray:
     """Least squares over the reachable paints (status OK or ALPHA_UNTRUSTED), and with weight
     w_out the out-of-reach ones, whose parameters are those of the nearest reachable paint."""
     w = np.where(rows[:, 3] >= 0, 1.0, np.where(np.isin(rows[:, 3], REACH_STATUSES), w_out, 0.0))
     r, sw = rows[w > 0], np.sqrt(w[w > 0])[:, None]
-    M = monomials(features(r[:, 0], r[:, 1], r[:, 2]))
+    M = monomials(features(r[:, 0], r[:, 1], r[:, 2]), degree)
     Y = np.stack([np.log(r[:, 5]), np.log(r[:, 6]), r[:, 4]], -1)
     return np.linalg.lstsq(M * sw, Y * sw, rcond=None)[0]
 
@@ -309,7 +313,7 @@ def bridge_graph(fit: Fit) -> List[str]:
     rgb = g.node("combine3", "color3", in1=("float", rows[0]), in2=("float", rows[1]), in3=("float", rows[2]))
     rgb = g.node("max", "color3", "rgb", in1=("color3", rgb), in2=("float", 0.0))
 
-    g.comment(f"The fitted inverse of the bridge's tables: (ln F0, ln alpha, beta/Y) = polynomial of degree {DEGREE} "
+    g.comment(f"The fitted inverse of the bridge's tables: (ln F0, ln alpha, beta/Y) = polynomial of degree {fit.degree} "
               "in (x, y, z) = (L*/50 - 1, sqrt(c)/0.35 - 1, (ln(1 - d) + 2.76)/1.84); docs/materialx.md.")
     x = g.node("subtract", "float", "x", in1=("float", g.node("divide", "float", in1=("float", L), in2=("float", 50.0))),
                in2=("float", 1.0))
@@ -329,7 +333,7 @@ def bridge_graph(fit: Fit) -> List[str]:
     y = g.node("ifgreater", "float", "y_below_dark_face", value1=("float", fit.x_dark), value2=("float", x),
                in1=("float", dark), in2=("float", y))
     z = _clamp_between(g, z, _poly(g, fit.z_bounds, (x, y), BOUND_DEGREE), "z_reachable")
-    q = _poly(g, fit.inverse, (x, y, z), DEGREE)
+    q = _poly(g, fit.inverse, (x, y, z), fit.degree)
     g.node("separate3", "multioutput", "q", in_=("vector3", q))
 
     g.comment("Onto the targets' parameter box (pgloss_bridge_range): the nearest reachable F0, alpha, base.")
@@ -462,8 +466,9 @@ def graph_params(lib: C.CDLL, fit: Fit, paint: Sequence[float]) -> Tuple[List[fl
     return [v / top for v in base], float(np.sqrt(alpha)), f0
 
 
-def report(lib: C.CDLL, fit: Fit, n: int = 4000, seed: int = 1) -> None:
-    """The graph's error against the C bridge at random paints (not the fitting grid)."""
+def report(lib: C.CDLL, fit: Fit, n: int = 4000, seed: int = 1, quiet: bool = False) -> np.ndarray:
+    """The graph's error against the C bridge at random paints (not the fitting grid): prints
+    the tables (unless quiet); returns the reachable paints' rows (d, |ΔL*|, |Δa*|, |Δb*|, |Δc|, |Δd|)."""
     rng = np.random.default_rng(seed)
     paints = np.stack([rng.uniform(0, 100, n), rng.uniform(-40, 40, n) * (rng.random(n) < 0.5),
                        rng.uniform(-40, 40, n) * (rng.random(n) < 0.5), rng.uniform(0, 0.5, n),
@@ -481,6 +486,8 @@ def report(lib: C.CDLL, fit: Fit, n: int = 4000, seed: int = 1) -> None:
         elif st in REACH_STATUSES:
             want = np.array([reached.L, reached.a, reached.b, reached.c, reached.d])
             outside.append((p[4], *np.abs(got_v - want)))
+    if quiet:
+        return np.array(inside)
     q = np.array(params)
     print(f"parameters at the reachable paints against pgloss_bridge_from_perceptual: relative |dF0| median "
           f"{np.median(q[:, 0]):.4f} p99 {np.percentile(q[:, 0], 99):.4f} max {q[:, 0].max():.4f}; relative "
@@ -495,6 +502,72 @@ def report(lib: C.CDLL, fit: Fit, n: int = 4000, seed: int = 1) -> None:
             for stat, v in (("median", np.median(q, 0)), ("p95", np.percentile(q, 95, 0)),
                             ("p99", np.percentile(q, 99, 0)), ("max", q.max(0))):
                 print(f"  {stat:6s} " + " ".join(f"{x:8.4f}" for x in v))
+    return np.array(inside)
+
+
+def study(lib: C.CDLL, rows: np.ndarray, fit: Fit) -> None:
+    """Cost against error per degree of the inverse: the graph's nodes, the generated GLSL's size
+    and its compile + link time on llvmpipe (moderngl), against the errors of report()."""
+    import time  # noqa: PLC0415
+    import tempfile  # noqa: PLC0415
+    import MaterialX as mx  # noqa: PLC0415
+    import MaterialX.PyMaterialXGenGlsl as mx_glsl  # noqa: PLC0415
+    import MaterialX.PyMaterialXGenShader as mx_gen  # noqa: PLC0415
+    import moderngl  # noqa: PLC0415
+
+    os.environ["LIBGL_ALWAYS_SOFTWARE"] = "1"
+    os.environ["MESA_SHADER_CACHE_DISABLE"] = "true"  # time the compiler, not its disk cache
+    gl = moderngl.create_context(standalone=True, backend="egl", require=400)
+    root = Path(mx.__file__).resolve().parent
+    search = mx.FileSearchPath(str(root))
+    search.append(str(root / "libraries"))
+    std = mx.createDocument()
+    mx.loadLibraries(["libraries"], search, std)
+
+    def compile_time(text: str | None) -> Tuple[int, float]:
+        """GLSL size (pixel stage) and the best of 3 compile + link times of the
+        pgloss_open_pbr_surface (or, text None, a plain open_pbr_surface) material."""
+        doc = mx.createDocument()
+        if text is not None:
+            with tempfile.NamedTemporaryFile("w", suffix=".mtlx", delete=False) as f:
+                f.write(text)
+            mx.readFromXmlFile(doc, f.name, search)
+        doc.importLibrary(std)
+        node = doc.addNode("open_pbr_surface" if text is None else "pgloss_open_pbr_surface", "SR", "surfaceshader")
+        m = doc.addMaterialNode("M", node)
+        gen = mx_glsl.GlslShaderGenerator.create()
+        ctx = mx_gen.GenContext(gen)
+        ctx.registerSourceCodeSearchPath(search)
+        shader = gen.generate("M", m, ctx)
+        src, vert = shader.getSourceCode(mx_gen.PIXEL_STAGE), shader.getSourceCode(mx_gen.VERTEX_STAGE)
+        fbo = gl.simple_framebuffer((1, 1))
+        fbo.use()
+        times = []
+        for _ in range(3):  # Mesa compiles at the first draw: time program, one draw and its read
+            t = time.perf_counter()
+            prog = gl.program(vertex_shader=vert, fragment_shader=src)
+            vao = gl.vertex_array(prog, [])
+            vao.render(moderngl.POINTS, vertices=1)
+            fbo.read()
+            times.append(time.perf_counter() - t)
+            vao.release()
+            prog.release()
+        return len(src), min(times)
+
+    size0, t0 = compile_time(None)
+    print(f"open_pbr_surface alone: GLSL {size0 / 1000:.0f} kB, compile + link {t0:.2f} s (llvmpipe; load "
+          f"{os.getloadavg()[0]:.1f})")
+    print("| degree | terms | nodes | GLSL kB | compile + link s | p99 |dL*| | p99 |dc| | p99 |dd| | max |dL*| | max |dc| | max |dd| |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    for degree in (4, 5, 6, 7, 8):
+        f = fit._replace(inverse=fit_inverse(rows, degree=degree), degree=degree)
+        text = document(f)
+        size, t = compile_time(text)
+        e = report(lib, f, quiet=True)[:, 1:]
+        nodes = len(re.findall(r"^    <(?!input |output |!--)\w+ name=", text, re.M))
+        p99, mx_ = np.percentile(e, 99, axis=0), e.max(axis=0)
+        print(f"| {degree} | {len(exponents(degree))} | {nodes} | {size / 1000:.0f} | {t:.2f} | {p99[0]:.2f} | "
+              f"{p99[3]:.4f} | {p99[4]:.4f} | {mx_[0]:.2f} | {mx_[3]:.4f} | {mx_[4]:.4f} |", flush=True)
 
 
 def main(argv: Sequence[str]) -> int:
@@ -516,6 +589,9 @@ def main(argv: Sequence[str]) -> int:
     y_dark = np.linalg.lstsq(monomials(dark[:, [0, 2]], BOUND_DEGREE), dark[:, 1], rcond=None)[0][:, None]
     fit = Fit(fit_inverse(rows), *fit_bounds(faces[0], faces[1]), (float(xs.min()), float(xs.max())),
               y_dark, float(dark[:, 0].max()))
+    if "--study" in argv:
+        study(lib, rows, fit)
+        return 0
     text = document(fit)
     if "--check" in argv:
         same = OUT.exists() and OUT.read_text() == text
