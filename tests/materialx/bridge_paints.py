@@ -17,8 +17,8 @@ FIG14_RED = (35.0, 45.0, 25.0, 0.06, 0.95)
 
 
 def paper_paints() -> list:
-    """Fig. 4's 27 Ward paints and Fig. 12's triplet as (L*, 0, 0, c, d) (eqs. 3, 4, 6), and the
-    two Fig. 14 mugs."""
+    """Fig. 4's 27 Ward paints and Fig. 12's triplet as (L*, 0, 0, c, d) (eqs. 3, 4, 6), the
+    sample's Fig. 14 red paint and a light blue one of the same gloss."""
     def gloss(rd: float, rs: float, alpha: float) -> tuple:
         return (116 * rd ** (1 / 3) - 16, 0.0, 0.0, (rs + rd / 2) ** (1 / 3) - (rd / 2) ** (1 / 3), 1 - alpha)
     out = [gloss(rd, rs, a) for rd in (0.767, 0.193, 0.03) for rs in (0.033, 0.066, 0.099) for a in (0.04, 0.07, 0.1)]
