@@ -4,8 +4,10 @@
 # The MaterialX library (materialx/pgloss): validation, ShaderGen (GLSL, OSL) with the PyPI
 # MaterialX package pinned in tests/materialx/requirements.txt, glslangValidator on the generated
 # GLSL, the generated GLSL on llvmpipe (moderngl) against the C core, and the generated OSL in
-# Cycles (the bpy 5.0.1 venv of scripts/test-osl.sh) against osl/pgloss_material.osl. Nothing is skipped: with PGLOSS_REQUIRE_ALL=1 (the default here, and what CI
-# sets) a skipped test is a failure.
+# Cycles (the bpy 5.0.1 venv of scripts/test-osl.sh) against osl/pgloss_material.osl; the gloss
+# bridge's nodes (materialx/pgloss/pgloss_bridge.mtlx) as generated GLSL on llvmpipe and generated
+# OSL in Cycles against the C bridge (docs/materialx.md). Nothing is skipped: with
+# PGLOSS_REQUIRE_ALL=1 (the default here, and what CI sets) a skipped test is a failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/step.sh

@@ -15,20 +15,24 @@ import json
 import shutil
 import sys
 from pathlib import Path
+from typing import Optional
 
 NODES = ("open_pbr_surface", "standard_surface")
 
 
-def osl_shader(node: str, inputs: dict, folder: Path) -> Path:
+def osl_shader(node: str, inputs: dict, folder: Path, library: Optional[Path] = None) -> Path:
     """Writes (once per node and inputs) the OSL of a material made of ``node`` with ``inputs``
-    (MaterialX input names; a number for a color3 input is grey); returns its path."""
+    (MaterialX input names; a number for a color3 input is grey); returns its path. With
+    ``library``, a .mtlx of node definitions read into the document first (e.g. materialx/pgloss/
+    pgloss_bridge.mtlx), ``node`` may be any surface node it defines."""
     import MaterialX as mx  # noqa: PLC0415
     import MaterialX.PyMaterialXGenOsl as mx_osl  # noqa: PLC0415
     import MaterialX.PyMaterialXGenShader as mx_gen  # noqa: PLC0415
 
-    if node not in NODES:
+    if node not in NODES and library is None:
         raise ValueError(f"node must be one of {', '.join(NODES)}, not {node!r}")
-    key = hashlib.sha256(json.dumps([node, inputs, mx.getVersionString()], sort_keys=True).encode()).hexdigest()[:12]
+    payload = [node, inputs, mx.getVersionString()] + ([library.read_text()] if library is not None else [])
+    key = hashlib.sha256(json.dumps(payload, sort_keys=True).encode()).hexdigest()[:12]
     folder.mkdir(parents=True, exist_ok=True)
     path = folder / f"{node}_{key}.osl"
     if path.exists():
@@ -39,9 +43,13 @@ def osl_shader(node: str, inputs: dict, folder: Path) -> Path:
     lib = mx.createDocument()
     mx.loadLibraries(["libraries"], search, lib)
     doc = mx.createDocument()
+    if library is not None:
+        mx.readFromXmlFile(doc, str(library), search)
     doc.importLibrary(lib)
     shader = doc.addNode(node, "paint", "surfaceshader")
-    nodedef = lib.getNodeDef(f"ND_{node}_surfaceshader")
+    nodedef = doc.getNodeDef(f"ND_{node}_surfaceshader") or doc.getNodeDef(f"ND_{node}")
+    if nodedef is None:
+        raise ValueError(f"no node definition of {node!r}")
     for name, value in inputs.items():
         spec = nodedef.getActiveInput(name)
         if spec is None:

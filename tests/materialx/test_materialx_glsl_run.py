@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import ctypes as C
 import math
-import os
 import sys
 from pathlib import Path
 
@@ -111,19 +110,6 @@ CASES = {
     "acescg": ("pgloss_surface", {"lightness": 60.0, "a": -30.0, "b": 20.0, "c": 0.04, "d": 0.9, "color_space": 1},
                lambda: _perceptual_physical((60.0, -30.0, 20.0, 0.04, 0.9), 1)),
 }
-
-
-@pytest.fixture(scope="module")
-def gl():
-    os.environ["LIBGL_ALWAYS_SOFTWARE"] = "1"
-    os.environ.setdefault("GALLIUM_DRIVER", "llvmpipe")
-    try:
-        ctx = moderngl.create_context(standalone=True, backend="egl", require=400)
-    except Exception as e:  # noqa: BLE001
-        pytest.skip(f"no OpenGL context through EGL: {e}")
-    assert "llvmpipe" in ctx.info["GL_RENDERER"], ctx.info["GL_RENDERER"]
-    yield ctx
-    ctx.release()
 
 
 @pytest.mark.parametrize("name", list(CASES))

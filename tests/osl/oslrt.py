@@ -88,15 +88,10 @@ def osl_material(name: str, osl_path: Path):
     return mat, nt, script, out
 
 
-def render_shader(osl_path: Path, width: int, height: int, out_exr: Path, wire=None) -> np.ndarray:
-    """Renders the shader as emission on a camera-filling plane; returns float32 [H, W, 3].
-
-    ``width`` must be even and >= ``height`` >= 4 (Blender's smallest height), so that the
-    orthographic scale is the width and the plane's edges fall on pixel edges.
-    ``wire(node_tree, script_node, output_node)``, if given, links the script's outputs to the
-    material output itself (e.g. a pattern shader through an Emission node).
-    """
-    assert width % 2 == 0 and width >= height >= 4
+def emission_scene(width: int, height: int) -> bpy.types.Scene:
+    """A reset scene for emission renders: 1 sample, box pixel filter, no bounces, fixed seed,
+    ``width`` x ``height`` pixels seen by an orthographic camera of scale ``width`` at z = 10
+    looking down -z (one pixel per unit), black world."""
     sc = reset_scene()
     sc.cycles.samples = 1
     sc.cycles.use_adaptive_sampling = False
@@ -107,7 +102,44 @@ def render_shader(osl_path: Path, width: int, height: int, out_exr: Path, wire=N
     sc.cycles.seed = 0
     sc.render.resolution_x = width
     sc.render.resolution_y = height
+    cam = bpy.data.cameras.new("cam")
+    cam.type = "ORTHO"
+    cam.ortho_scale = float(width)
+    cam_obj = bpy.data.objects.new("cam", cam)
+    sc.collection.objects.link(cam_obj)
+    cam_obj.location = (0.0, 0.0, 10.0)
+    sc.camera = cam_obj
+    world = bpy.data.worlds.new("world")
+    world.color = (0.0, 0.0, 0.0)
+    sc.world = world
+    return sc
 
+
+def render_exr(sc: bpy.types.Scene, out_exr: Path) -> np.ndarray:
+    """Renders ``sc`` to the EXR ``out_exr``; returns its RGB, float32 [H, W, 3]."""
+    out_exr.parent.mkdir(parents=True, exist_ok=True)
+    if out_exr.exists():
+        out_exr.unlink()
+    sc.render.filepath = str(out_exr)
+    bpy.ops.render.render(write_still=True)
+    buf = oiio.ImageBuf(str(out_exr))
+    spec = buf.spec()
+    if (spec.width, spec.height) != (sc.render.resolution_x, sc.render.resolution_y) or spec.format != oiio.FLOAT:
+        raise RuntimeError(f"unexpected EXR {spec.width}x{spec.height} {spec.format}")
+    px = np.asarray(buf.get_pixels(oiio.FLOAT), dtype=np.float32)
+    return px[:, :, :3].copy()
+
+
+def render_shader(osl_path: Path, width: int, height: int, out_exr: Path, wire=None) -> np.ndarray:
+    """Renders the shader as emission on a camera-filling plane; returns float32 [H, W, 3].
+
+    ``width`` must be even and >= ``height`` >= 4 (Blender's smallest height), so that the
+    orthographic scale is the width and the plane's edges fall on pixel edges.
+    ``wire(node_tree, script_node, output_node)``, if given, links the script's outputs to the
+    material output itself (e.g. a pattern shader through an Emission node).
+    """
+    assert width % 2 == 0 and width >= height >= 4
+    sc = emission_scene(width, height)
     mesh = bpy.data.meshes.new("plane")
     w2, h2 = width / 2, height / 2
     mesh.from_pydata([(-w2, -h2, 0), (w2, -h2, 0), (w2, h2, 0), (-w2, h2, 0)], [], [(0, 1, 2, 3)])
@@ -120,29 +152,7 @@ def render_shader(osl_path: Path, width: int, height: int, out_exr: Path, wire=N
     else:
         wire(nt, script, out)
     mesh.materials.append(mat)
-
-    cam = bpy.data.cameras.new("cam")
-    cam.type = "ORTHO"
-    cam.ortho_scale = float(width)
-    cam_obj = bpy.data.objects.new("cam", cam)
-    sc.collection.objects.link(cam_obj)
-    cam_obj.location = (0.0, 0.0, 10.0)
-    sc.camera = cam_obj
-    world = bpy.data.worlds.new("world")
-    world.color = (0.0, 0.0, 0.0)
-    sc.world = world
-
-    out_exr.parent.mkdir(parents=True, exist_ok=True)
-    if out_exr.exists():
-        out_exr.unlink()
-    sc.render.filepath = str(out_exr)
-    bpy.ops.render.render(write_still=True)
-    buf = oiio.ImageBuf(str(out_exr))
-    spec = buf.spec()
-    if (spec.width, spec.height) != (width, height) or spec.format != oiio.FLOAT:
-        raise RuntimeError(f"unexpected EXR {spec.width}x{spec.height} {spec.format}")
-    px = np.asarray(buf.get_pixels(oiio.FLOAT), dtype=np.float32)
-    return px[:, :, :3].copy()
+    return render_exr(sc, out_exr)
 
 
 def furnace_setup(sc: bpy.types.Scene, samples: int, size: int, segments: int = 128, rings: int = 64):
