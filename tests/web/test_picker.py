@@ -118,6 +118,31 @@ def set_control(page: Page, key: str, value: float) -> None:
     page.fill(f"#num-{key}", repr(value))  # fires `input`, as typing does
 
 
+# ---- (a) the WebAssembly core in the browser meets the shared vectors ----------------------
+
+def test_shared_vectors_in_the_browser(browser: Browser, base_url: str) -> None:
+    """Every case of tests/vectors' double-precision files, the gloss bridge's (bridge.json) and
+    the glossmeter's (glossmeter.json) included, on the module the page loads, in Chromium:
+    tests/web/vectors-check.mjs, the checks vectors.mjs runs under Node."""
+    files = ["lightness", "gloss", "color", "validity", "perceptual_material", "color_space", "bridge",
+             "glossmeter"]
+    docs = {f: json.loads((ROOT / f"tests/vectors/{f}.json").read_text(encoding="utf-8")) for f in files}
+    cases = sum(len(d["cases"]) for d in docs.values())
+    page = open_page(browser, f"{base_url}/index.html?autorun=0&size=64x48")
+    res = page.evaluate("""async ([src, docs]) => {
+        const url = URL.createObjectURL(new Blob([src], { type: 'text/javascript' }));
+        const { ALL_FILES, checkVectors } = await import(url);
+        const { loadPgloss } = await import(new URL('pgloss-wasm.js', location.href).href);
+        const pg = await loadPgloss(new URL('pgloss.wasm', location.href));
+        const log = [];
+        const r = checkVectors(pg, docs, (line) => log.push(line));
+        return { ...r, files: ALL_FILES, log };
+    }""", [(ROOT / "tests/web/vectors-check.mjs").read_text(encoding="utf-8"), docs])
+    print(f"\n  chromium: {res['summary']}")
+    assert sorted(res["files"]) == sorted(files)
+    assert res["total"] == cases and res["failed"] == 0, res["log"][:20]
+
+
 # ---- (b) the displayed numbers are the binding's ------------------------------------------
 
 def test_readout_equals_python_binding(browser: Browser, base_url: str) -> None:
@@ -160,6 +185,247 @@ def test_readout_equals_python_binding(browser: Browser, base_url: str) -> None:
     assert not page.errors, page.errors  # type: ignore[attr-defined]
     print(f"\n(b) {len(PAINTS)} paints: ρd, ρs, α, status and reason equal the Python binding "
           f"(statuses {sorted(seen_status)})")
+
+
+TARGET_IDS = ["openpbr", "standard_surface", "gltf", "gltf_core", "principled", "roughplastic_ggx",
+              "roughplastic_beckmann"]
+READ_TARGET = """() => {
+    const v = (id) => { const d = document.getElementById(id).dataset.value; return d === undefined ? null : JSON.parse(d); };
+    const meter = (who) => Object.fromEntries([['GLOSS_60', 'gloss60'], ['HAZE_20', 'haze'], ['DOI_30', 'doi']]
+        .map(([k, id]) => [k, v(`meter-${who}-${id}`)]));
+    return {
+        hidden: document.getElementById('target-readout').hidden,
+        status: document.getElementById('target-status').textContent,
+        reason: document.getElementById('target-reason').textContent,
+        named: Object.fromEntries([...document.querySelectorAll('#target-params td')]
+            .map((td) => [td.dataset.name, JSON.parse(td.dataset.value)])),
+        reachedShown: !document.getElementById('target-reached-row').hidden,
+        reached: v('target-reached'),
+        ward: meter('ward'), target: meter('target'),
+    };
+}"""
+
+
+def _same(got: Any, want: Any) -> bool:
+    if isinstance(want, list):
+        return isinstance(got, list) and len(got) == len(want) and all(_same(g, w) for g, w in zip(got, want))
+    if isinstance(want, (bool, str)) or want is None:
+        return got == want
+    return isinstance(got, (int, float)) and close(float(got), float(want))
+
+
+def _meter_close(got: Dict[str, Any], want: Dict[str, Dict[str, float]]) -> bool:
+    """The same quadrature at the same tolerance: equal within the two error estimates (wasi-libc's
+    and glibc's libm may differ in the last bits, which can move a panel's order)."""
+    return all(got[k] is not None and abs(got[k] - w["value"]) <= 2 * w["error"] + 1e-9 * abs(w["value"])
+               for k, w in want.items())
+
+
+def test_targets_read_out_the_binding(browser: Browser, base_url: str) -> None:
+    """For each paint and each gloss-bridge target: the target's parameters under its own names,
+    the bridge's status and reason, the nearest reachable paint when out of reach (never a silent
+    clamp), and the glossmeter's 60° gloss, haze and DOI of the Ward paint and of the target's
+    material, all equal to the Python binding's (the native C core)."""
+    page = open_page(browser, f"{base_url}/index.html?autorun=0&size=64x48")
+    want = python_expected(PAINTS)
+    seen: set = set()
+    for paint, exp in zip(PAINTS, want):
+        for k in ("L", "a", "b", "c", "d"):
+            set_control(page, k, paint[k])
+        page.select_option("#target", "ward")
+        got = page.evaluate(READ_TARGET)
+        assert got["hidden"]
+        if exp["readings"] is None:
+            assert all(v is None for v in got["ward"].values()), (paint, got["ward"])
+        else:
+            assert _meter_close(got["ward"], exp["readings"]), (paint, got["ward"], exp["readings"])
+        for t in TARGET_IDS:
+            page.select_option("#target", t)
+            got = page.evaluate(READ_TARGET)
+            e = exp["targets"][t]
+            label = (paint, t)
+            seen.add(e["status"])
+            assert not got["hidden"] and got["status"] == e["status"] and got["reason"] == e["reason"], (label, got, e)
+            if e["named"] is None:
+                assert got["named"] == {} and not got["reachedShown"], label
+                assert all(v is None for v in got["target"].values()), label
+                continue
+            assert got["named"].keys() == e["named"].keys(), (label, got["named"], e["named"])
+            assert all(_same(got["named"][k], w) for k, w in e["named"].items()), (label, got["named"], e["named"])
+            out_of_reach = e["status"].startswith("PGLOSS_ERR_BRIDGE_")
+            assert got["reachedShown"] == out_of_reach, label
+            if out_of_reach:
+                assert all(abs(g - w) <= 1e-9 * max(1.0, abs(w)) for g, w in
+                           zip([got["reached"][k] for k in ("L", "a", "b", "c", "d")], e["reached"])), (label, got, e)
+            assert _meter_close(got["target"], e["readings"]), (label, got["target"], e["readings"])
+            assert "target=" + t in page.evaluate("location.href")
+    # The paints reach every kind of answer: reachable, out of reach, outside the model.
+    assert "PGLOSS_OK" in seen and "PGLOSS_ERR_BRIDGE_SPECULAR" in seen and "PGLOSS_ERR_ENVELOPE" in seen, seen
+
+
+def test_paint_from_gloss_units_and_finish(browser: Browser, base_url: str) -> None:
+    """A 60° gloss in GU (with d as set) and a named finish set c and d as the binding's
+    from_gloss_units and finish do; a reading no paint gives (NO_FIT: 0 GU, below the diffuse's
+    own reading) sets the nearest paint and says so; one beyond the envelope sets the paint with
+    its status (ENVELOPE), as the sliders would."""
+    page = open_page(browser, f"{base_url}/index.html?autorun=0&size=64x48")
+    colour = {"L": 35.0, "a": 45.0, "b": 25.0, "d": 0.95}
+    for k, v in colour.items():
+        set_control(page, k, v)
+    spec = {"gloss_units": [[35.0, 45.0, 25.0, 12.0, 0.95], [35.0, 45.0, 25.0, 0.0, 0.95],
+                            [35.0, 45.0, 25.0, 400.0, 0.95]],
+            "finishes": [["satin", 35.0, 45.0, 25.0], ["semi-gloss", 35.0, 45.0, 25.0]]}
+    py = os.environ.get("PGLOSS_WEB_PY", str(ROOT / ".venv-py/bin/python"))
+    want = json.loads(subprocess.run([py, str(ROOT / "tests/web/expected_python.py")], input=json.dumps(spec),
+                                     capture_output=True, text=True, check=True, cwd="/").stdout)
+    state = lambda: page.evaluate("({...window.picker.state})")  # noqa: E731
+    for (_, _, _, g60, d), w in zip(spec["gloss_units"], want["gloss_units"]):
+        set_control(page, "d", d)
+        page.fill("#gu60", repr(g60))
+        page.click("#gu-set")
+        st = state()
+        assert page.inner_text("#entry-name") == w["status"], (g60, w)
+        assert close(st["c"], w["c"]) and close(st["d"], w["d"]), (g60, st, w)
+        if w["status"] == "PGLOSS_ERR_NO_FIT":
+            assert "nearest paint" in page.inner_text("#entry-reason")
+    assert [w["status"] for w in want["gloss_units"]] == ["PGLOSS_OK", "PGLOSS_ERR_NO_FIT", "PGLOSS_ERR_ENVELOPE"]
+    for (name, *_), w in zip(spec["finishes"], want["finishes"]):
+        page.select_option("#finish", name)
+        st = state()
+        assert close(st["c"], w["c"]) and close(st["d"], w["d"]), (name, st, w)
+        assert page.inner_text("#entry-name") == w["status"]
+        assert ("not met" in page.inner_text("#finish-span")) == (not w["sheen_ok"])
+
+
+THREE = ROOT / "tests/web/node_modules/three"  # npm ci --prefix tests/web (scripts/test-web.sh)
+EXPORT_PY = os.environ.get("PGLOSS_WEB_EXPORT_PY", str(ROOT / ".venv-web-export/bin/python"))
+EXPORTS = [("gltf", "gltf"), ("gltf", "gltf_core"), ("materialx", "openpbr"), ("materialx", "standard_surface"),
+           ("blender", "principled"), ("mitsuba", "roughplastic_ggx"), ("mitsuba", "roughplastic_beckmann")]
+
+
+def _rel(a: float, b: float, r: float) -> bool:
+    return abs(a - b) <= r * max(abs(a), abs(b), 1e-30)
+
+
+def _three_page(browser: Browser, base_url: str) -> Page:
+    """A page with an import map to three.js (the npm package, served by a route: no CDN)."""
+    if not (THREE / "examples/jsm/loaders/GLTFLoader.js").is_file():
+        pytest.fail(f"no three.js at {THREE} (npm ci --prefix tests/web; scripts/test-web.sh does)")
+    page = browser.new_page()
+    html = ('<!DOCTYPE html><script type="importmap">{"imports": {"three": "/__three/build/three.module.js", '
+            '"three/addons/": "/__three/examples/jsm/"}}</script><p>three</p>')
+
+    def serve(route: Any) -> None:
+        rel = route.request.url.split("/__three/", 1)[1].split("?")[0]
+        if rel == "index.html":
+            route.fulfill(body=html, content_type="text/html")
+            return
+        f = (THREE / rel).resolve()
+        if THREE.resolve() not in f.parents or not f.is_file():
+            route.fulfill(status=404, body="")
+            return
+        route.fulfill(body=f.read_bytes(), content_type="text/javascript")
+
+    page.route(f"{base_url}/__three/**", serve)
+    page.goto(f"{base_url}/__three/index.html")
+    return page
+
+
+def test_target_exports_load_in_their_own_libraries(browser: Browser, base_url: str) -> None:
+    """Each bridge target's export, for a reachable paint and one out of glTF core's reach: the
+    glTF material loads in three.js's GLTFLoader (MeshPhysicalMaterial with the extensions' ior
+    and specularIntensity where present), the MaterialX document passes MaterialX's own
+    validation against the open_pbr_surface / standard_surface nodedefs, the Mitsuba <bsdf> loads
+    with mitsuba.load_string, and the Blender lines set the Principled inputs; every value each
+    library reads back is the binding's parameter to the export's 9 digits (MaterialX and Mitsuba
+    hold float32)."""
+    paints = [PAINTS[0], PAINTS[1]]
+    want = python_expected(paints)
+    page = open_page(browser, f"{base_url}/index.html?autorun=0&size=64x48")
+    texts: List[Tuple[int, str, str, str]] = []
+    for i, paint in enumerate(paints):
+        for k in ("L", "a", "b", "c", "d"):
+            set_control(page, k, paint[k])
+        for kind, target in EXPORTS:
+            page.select_option("#target", target)
+            page.check(f"input[name=export][value={kind}]")
+            texts.append((i, kind, target, page.input_value("#export")))
+    statuses = {want[i]["targets"][t]["status"] for i, _, t, _ in texts}
+    assert "PGLOSS_OK" in statuses and "PGLOSS_ERR_BRIDGE_SPECULAR" in statuses, statuses
+    for i, kind, target, text in texts:  # the status and reason travel with every export
+        e = want[i]["targets"][target]
+        assert e["status"] in text and (e["status"] == "PGLOSS_OK" or e["reason"] in text), (kind, target, text)
+
+    # glTF → three.js GLTFLoader
+    gltf = [(i, t, json.loads(x)) for i, k, t, x in texts if k == "gltf"]
+    three = _three_page(browser, base_url)
+    got = three.evaluate("""async (docs) => {
+        const { GLTFLoader } = await import('three/addons/loaders/GLTFLoader.js');
+        const out = [];
+        for (const d of docs) {
+            const gltf = await new GLTFLoader().parseAsync(JSON.stringify(d), '');
+            const m = await gltf.parser.getDependency('material', 0);
+            out.push({ type: m.type, color: m.color.toArray(), roughness: m.roughness, metalness: m.metalness,
+                       ior: m.ior ?? null, specularIntensity: m.specularIntensity ?? null });
+        }
+        return out;
+    }""", [d for _, _, d in gltf])
+    for (i, t, doc), m in zip(gltf, got):
+        n = want[i]["targets"][t]["named"]
+        ext = doc["materials"][0].get("extensions", {})
+        label = (i, t, m)
+        assert m["metalness"] == 0 and _rel(m["roughness"], n["roughnessFactor"], 1e-8), label
+        assert all(_rel(g, w, 1e-8) for g, w in zip(m["color"], n["baseColorFactor"][:3])), label
+        assert set(ext) == ({"KHR_materials_ior"} if n["ior"] != 1.5 else set()) | \
+            ({"KHR_materials_specular"} if n["specularFactor"] != 1 else set()), label
+        if ext:
+            assert m["type"] == "MeshPhysicalMaterial" and _rel(m["ior"], n["ior"], 1e-8), label
+            assert _rel(m["specularIntensity"], n["specularFactor"], 1e-8), label
+        else:
+            assert m["type"] == "MeshStandardMaterial" and t == "gltf_core", label
+    three.close()
+
+    # MaterialX and Mitsuba 3 → their Python packages; one deliberately broken document first,
+    # so that a validator that accepts anything fails this test.
+    mtlx = next(x for _, k, _, x in texts if k == "materialx")
+    broken = mtlx.replace('name="base_color" type="color3"', 'name="base_color" type="float"', 1)
+    assert broken != mtlx
+    items = [{"kind": k, "text": x} for _, k, _, x in texts if k in ("materialx", "mitsuba")]
+    if not Path(EXPORT_PY).is_file():
+        pytest.fail(f"no Python with MaterialX and mitsuba at {EXPORT_PY} (scripts/test-web.sh makes .venv-web-export)")
+    r = subprocess.run([EXPORT_PY, str(ROOT / "tests/web/validate_exports.py")],
+                       input=json.dumps([{"kind": "materialx", "text": broken}] + items),
+                       capture_output=True, text=True, cwd="/", timeout=300)
+    assert r.returncode == 0, r.stderr[-3000:]
+    results = json.loads(r.stdout)
+    assert not results[0]["ok"], "MaterialX accepted base_color typed float"
+    checked = [(i, k, t) for i, k, t, _ in texts if k in ("materialx", "mitsuba")]
+    for (i, kind, target), res in zip(checked, results[1:]):
+        n, v = want[i]["targets"][target]["named"], res["values"]
+        label = (i, target, res)
+        assert res["ok"], label
+        if kind == "materialx":
+            assert v["node"] == ("open_pbr_surface" if target == "openpbr" else "standard_surface"), label
+            for key, w in n.items():
+                if isinstance(w, list):
+                    assert all(_rel(g, x, 1e-6) for g, x in zip(v[key], w)), (key, label)
+                else:
+                    assert _rel(float(v[key]), float(w), 1e-6), (key, label)
+        else:
+            assert _rel(v["alpha"], n["alpha"], 1e-6) and _rel(v["eta"], n["int_ior"] / n["ext_ior"], 1e-6), label
+            assert all(_rel(g, x, 1e-6) for g, x in zip(v["diffuse_reflectance.value"], n["diffuse_reflectance"])), label
+
+    # Blender: the lines that set the Principled BSDF's inputs
+    for i, kind, target, text in texts:
+        if kind != "blender":
+            continue
+        n = want[i]["targets"][target]["named"]
+        sets = dict(re.findall(r'^bsdf\.inputs\["([^"]+)"\]\.default_value = (.+)$', text, re.M))
+        assert set(sets) == {"Base Color", "Metallic", "Roughness", "IOR", "Specular IOR Level"}, text
+        colour = [float(x) for x in sets["Base Color"].strip("()").split(",")]
+        assert colour[3] == 1 and all(_rel(g, w, 1e-8) for g, w in zip(colour, n["Base Color"])), text
+        for key in ("Metallic", "Roughness", "IOR", "Specular IOR Level"):
+            assert _rel(float(sets[key]), float(n[key]), 1e-8), (key, text)
 
 
 def test_envelope_mark(browser: Browser, base_url: str) -> None:
