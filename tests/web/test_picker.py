@@ -775,8 +775,13 @@ def test_screenshot(browser: Browser, base_url: str) -> None:
     page.check("input[name=view][value=match]")
     page.wait_for_function("window.picker.tracer.count >= 48", timeout=240_000)
     page.locator("#view-panel").screenshot(path=str(OUT / "picker-match.png"))
+    # A target out of the paint's reach (glTF core: F0 fixed at 0.04), with the glTF export.
+    page.check("input[name=view][value=single]")
+    page.select_option("#target", "gltf_core")
+    page.check("input[name=export][value=gltf]")
+    page.locator("#controls").screenshot(path=str(OUT / "picker-target.png"))
     assert (OUT / "picker.png").stat().st_size > 10_000
-    print(f"\n(e) screenshots: {OUT / 'picker.png'}, {OUT / 'picker-match.png'}")
+    print(f"\n(e) screenshots: {OUT / 'picker.png'}, {OUT / 'picker-match.png'}, {OUT / 'picker-target.png'}")
 
 
 # ---- defects found by a new user (each test failed before its fix) ------------------------

@@ -234,6 +234,7 @@ function showReadout(m) {
 function showTarget(m) {
   const t = m.target;
   $('target-readout').hidden = !t;
+  $('view-what').hidden = !t;
   $('meter-target-head').textContent = t ? t.def.label : 'target';
   if (!t) return;
   $('target-title').textContent = t.def.label;
