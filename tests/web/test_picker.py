@@ -279,6 +279,10 @@ def test_paint_from_gloss_units_and_finish(browser: Browser, base_url: str) -> N
     want = json.loads(subprocess.run([py, str(ROOT / "tests/web/expected_python.py")], input=json.dumps(spec),
                                      capture_output=True, text=True, check=True, cwd="/").stdout)
     state = lambda: page.evaluate("({...window.picker.state})")  # noqa: E731
+    before = state()
+    page.fill("#gu60", "")  # an empty box is not 0 GU: the paint stays, the page says why
+    page.click("#gu-set")
+    assert state() == before and "Enter a number" in page.inner_text("#entry-reason")
     for (_, _, _, g60, d), w in zip(spec["gloss_units"], want["gloss_units"]):
         set_control(page, "d", d)
         page.fill("#gu60", repr(g60))

@@ -299,6 +299,15 @@ function applyEntry(r, extra) {
 }
 function enterGlossUnits() {
   const q = model.perceptual, second = $('gu-second').value;
+  const missing = [['gu60', '60° gloss'], ...(second === 'none' ? [] : [['gu-second-value', 'second reading']])]
+    .filter(([id]) => $(id).value.trim() === '' || !Number.isFinite(Number($(id).value)));
+  if (missing.length) {  // an empty box is not 0 GU: nothing is set
+    $('entry-name').textContent = 'no paint set';
+    $('entry-name').className = 'bad';
+    delete $('entry-name').dataset.value;
+    $('entry-reason').textContent = `Enter a number for the ${missing.map(([, n]) => n).join(' and the ')}.`;
+    return;
+  }
   const x = second === 'none' ? q.d : Number($('gu-second-value').value);
   const r = pg.paintFromGlossUnits(q.L, q.a, q.b, 0, Number($('gu60').value), second, x);
   $('finish').value = '';
