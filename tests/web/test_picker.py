@@ -229,6 +229,7 @@ def test_targets_read_out_the_binding(browser: Browser, base_url: str) -> None:
     page = open_page(browser, f"{base_url}/index.html?autorun=0&size=64x48")
     want = python_expected(PAINTS)
     seen: set = set()
+    worst = {"params": 0.0, "readings": 0.0}
     for paint, exp in zip(PAINTS, want):
         for k in ("L", "a", "b", "c", "d"):
             set_control(page, k, paint[k])
@@ -252,13 +253,21 @@ def test_targets_read_out_the_binding(browser: Browser, base_url: str) -> None:
                 continue
             assert got["named"].keys() == e["named"].keys(), (label, got["named"], e["named"])
             assert all(_same(got["named"][k], w) for k, w in e["named"].items()), (label, got["named"], e["named"])
+            for k, w in e["named"].items():
+                for g, x in zip(np.ravel(got["named"][k]), np.ravel(w)):
+                    if isinstance(x, (int, float)) and not isinstance(x, bool) and x != 0:
+                        worst["params"] = max(worst["params"], abs(float(g) - float(x)) / abs(float(x)))
             out_of_reach = e["status"].startswith("PGLOSS_ERR_BRIDGE_")
             assert got["reachedShown"] == out_of_reach, label
             if out_of_reach:
                 assert all(abs(g - w) <= 1e-9 * max(1.0, abs(w)) for g, w in
                            zip([got["reached"][k] for k in ("L", "a", "b", "c", "d")], e["reached"])), (label, got, e)
             assert _meter_close(got["target"], e["readings"]), (label, got["target"], e["readings"])
+            for k, w in e["readings"].items():
+                worst["readings"] = max(worst["readings"], abs(got["target"][k] - w["value"]) / max(abs(w["value"]), 1e-30))
             assert "target=" + t in page.evaluate("location.href")
+    print(f"\n  targets: WebAssembly vs the native core, worst relative difference: parameters "
+          f"{worst['params']:.1e}, glossmeter readings {worst['readings']:.1e}")
     # The paints reach every kind of answer: reachable, out of reach, outside the model.
     assert "PGLOSS_OK" in seen and "PGLOSS_ERR_BRIDGE_SPECULAR" in seen and "PGLOSS_ERR_ENVELOPE" in seen, seen
 
