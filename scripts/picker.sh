@@ -13,7 +13,7 @@ source scripts/step.sh
 bash scripts/bootstrap.sh apt clang lld llvm wasi-libc libclang-rt-14-dev-wasm32 python3
 step "configure (build-web/wasm)" cmake -S web/picker/wasm -B build-web/wasm -G Ninja \
   -DCMAKE_TOOLCHAIN_FILE="$PWD/cmake/wasm32-wasi.cmake"
-step "build pgloss.wasm" cmake --build build-web/wasm -j2
+step "build pgloss.wasm" cmake --build build-web/wasm -j "${CMAKE_BUILD_PARALLEL_LEVEL:-2}"
 site=build-web/site
 rm -rf "$site"
 mkdir -p "$site"

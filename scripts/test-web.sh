@@ -6,7 +6,10 @@
 #   2. the page in Debian's headless Chromium (WebGL2 on SwiftShader) driven by Playwright for
 #      Python (tests/web/test_picker.py): read-outs equal the Python binding, the render agrees
 #      with pgloss-tracer per region within its measured noise, URL-hash state, export, screenshots
-#      in out/web/.
+#      in out/web/; the shared vectors again in Chromium, the gloss-bridge targets' read-outs and
+#      glossmeter readings against the binding, paint entry by gloss units and finish, and the
+#      targets' exports read by their own libraries: glTF by three.js's GLTFLoader (npm, tests/web),
+#      MaterialX by MaterialX's validation and Mitsuba 3 by mitsuba.load_string (PyPI, .venv-web-export).
 # Sets up its own packages and the venv .venv-web (pinned; Playwright uses the system Chromium,
 # no browser download). Quick when run again. Nothing is skipped: with PGLOSS_REQUIRE_ALL=1
 # (CI, scripts/test.sh) a skipped test is a failure.
@@ -16,7 +19,7 @@ source scripts/step.sh
 export PGLOSS_REQUIRE_ALL="${PGLOSS_REQUIRE_ALL:-1}"
 start=$SECONDS
 bash scripts/bootstrap.sh apt clang lld llvm wasi-libc libclang-rt-14-dev-wasm32 nodejs chromium \
-  python3 python3-venv openimageio-tools
+  python3 python3-venv openimageio-tools libllvm19
 # What the reference render and the expected values need: the tracer's packages and the binding.
 bash scripts/bootstrap.sh apt g++ pkg-config libembree-dev libopenimageio-dev libopencolorio-dev \
   libglm-dev fonts-dejavu-core libgtest-dev
@@ -36,6 +39,27 @@ step "build pgloss-tracer" cmake --build build-tracer-test --target pgloss-trace
 
 venv=.venv-web
 bash scripts/venv-web.sh
+
+# three.js for the glTF export's test (tests/web/package-lock.json; npm ci: exactly the lockfile).
+command -v npm >/dev/null || bash scripts/bootstrap.sh apt npm
+stamp=$(sha256sum tests/web/package-lock.json | cut -c1-16)
+if [[ "$(cat tests/web/node_modules/.pgloss-lock 2>/dev/null)" != "$stamp" ]]; then
+  step "npm ci (tests/web: three.js)" npm ci --prefix tests/web --ignore-scripts --no-audit --no-fund
+  echo "$stamp" >tests/web/node_modules/.pgloss-lock
+fi
+# MaterialX and Mitsuba 3 for the MaterialX and Mitsuba exports' tests (the versions test-bridge.sh pins).
+xvenv=.venv-web-export
+xpins=(MaterialX==1.39.5 mitsuba==3.9.1 drjit==1.5.0 numpy==2.4.6)
+if [[ ! -x $xvenv/bin/python ]] || [[ "$(cat "$xvenv/.pgloss-pins" 2>/dev/null)" != "${xpins[*]}" ]]; then
+  rm -rf "$xvenv"
+  /usr/bin/python3 -m venv "$xvenv"
+  step "pip install ($xvenv)" "$xvenv/bin/pip" install --disable-pip-version-check "${xpins[@]}"
+  echo "${xpins[*]}" >"$xvenv/.pgloss-pins"
+fi
+# Dr.Jit loads the first libLLVM it finds; clang's LLVM 14 aborts it ("Cannot select: fminimum").
+llvm=$(ls /usr/lib/x86_64-linux-gnu/libLLVM-19.so /usr/lib/llvm-19/lib/libLLVM-19.so 2>/dev/null | head -1 || true)
+[[ -n $llvm ]] || { echo "test-web: libLLVM-19.so not found (libllvm19)"; exit 1; }
+export DRJIT_LIBLLVM_PATH=$llvm PGLOSS_WEB_EXPORT_PY="$PWD/$xvenv/bin/python"
 
 echo "== pytest tests/web (headless Chromium $(chromium --version 2>/dev/null | awk '{print $2}'), SwiftShader)"
 export PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1

@@ -118,6 +118,31 @@ def set_control(page: Page, key: str, value: float) -> None:
     page.fill(f"#num-{key}", repr(value))  # fires `input`, as typing does
 
 
+# ---- (a) the WebAssembly core in the browser meets the shared vectors ----------------------
+
+def test_shared_vectors_in_the_browser(browser: Browser, base_url: str) -> None:
+    """Every case of tests/vectors' double-precision files, the gloss bridge's (bridge.json) and
+    the glossmeter's (glossmeter.json) included, on the module the page loads, in Chromium:
+    tests/web/vectors-check.mjs, the checks vectors.mjs runs under Node."""
+    files = ["lightness", "gloss", "color", "validity", "perceptual_material", "color_space", "bridge",
+             "glossmeter"]
+    docs = {f: json.loads((ROOT / f"tests/vectors/{f}.json").read_text(encoding="utf-8")) for f in files}
+    cases = sum(len(d["cases"]) for d in docs.values())
+    page = open_page(browser, f"{base_url}/index.html?autorun=0&size=64x48")
+    res = page.evaluate("""async ([src, docs]) => {
+        const url = URL.createObjectURL(new Blob([src], { type: 'text/javascript' }));
+        const { ALL_FILES, checkVectors } = await import(url);
+        const { loadPgloss } = await import(new URL('pgloss-wasm.js', location.href).href);
+        const pg = await loadPgloss(new URL('pgloss.wasm', location.href));
+        const log = [];
+        const r = checkVectors(pg, docs, (line) => log.push(line));
+        return { ...r, files: ALL_FILES, log };
+    }""", [(ROOT / "tests/web/vectors-check.mjs").read_text(encoding="utf-8"), docs])
+    print(f"\n  chromium: {res['summary']}")
+    assert sorted(res["files"]) == sorted(files)
+    assert res["total"] == cases and res["failed"] == 0, res["log"][:20]
+
+
 # ---- (b) the displayed numbers are the binding's ------------------------------------------
 
 def test_readout_equals_python_binding(browser: Browser, base_url: str) -> None:
@@ -160,6 +185,370 @@ def test_readout_equals_python_binding(browser: Browser, base_url: str) -> None:
     assert not page.errors, page.errors  # type: ignore[attr-defined]
     print(f"\n(b) {len(PAINTS)} paints: ρd, ρs, α, status and reason equal the Python binding "
           f"(statuses {sorted(seen_status)})")
+
+
+TARGET_IDS = ["openpbr", "standard_surface", "gltf", "gltf_core", "principled", "roughplastic_ggx",
+              "roughplastic_beckmann"]
+READ_TARGET = """() => {
+    const v = (id) => { const d = document.getElementById(id).dataset.value; return d === undefined ? null : JSON.parse(d); };
+    const meter = (who) => Object.fromEntries([['GLOSS_60', 'gloss60'], ['HAZE_20', 'haze'], ['DOI_30', 'doi']]
+        .map(([k, id]) => [k, v(`meter-${who}-${id}`)]));
+    return {
+        hidden: document.getElementById('target-readout').hidden,
+        status: document.getElementById('target-status').textContent,
+        reason: document.getElementById('target-reason').textContent,
+        named: Object.fromEntries([...document.querySelectorAll('#target-params td')]
+            .map((td) => [td.dataset.name, JSON.parse(td.dataset.value)])),
+        reachedShown: !document.getElementById('target-reached-row').hidden,
+        reached: v('target-reached'),
+        ward: meter('ward'), target: meter('target'),
+    };
+}"""
+
+
+def _same(got: Any, want: Any) -> bool:
+    if isinstance(want, list):
+        return isinstance(got, list) and len(got) == len(want) and all(_same(g, w) for g, w in zip(got, want))
+    if isinstance(want, (bool, str)) or want is None:
+        return got == want
+    return isinstance(got, (int, float)) and close(float(got), float(want))
+
+
+def _meter_close(got: Dict[str, Any], want: Dict[str, Dict[str, float]]) -> bool:
+    """The same quadrature at the same tolerance: equal within the two error estimates (wasi-libc's
+    and glibc's libm may differ in the last bits, which can move a panel's order)."""
+    return all(got[k] is not None and abs(got[k] - w["value"]) <= 2 * w["error"] + 1e-9 * abs(w["value"])
+               for k, w in want.items())
+
+
+def test_targets_read_out_the_binding(browser: Browser, base_url: str) -> None:
+    """For each paint and each gloss-bridge target: the target's parameters under its own names,
+    the bridge's status and reason, the nearest reachable paint when out of reach (never a silent
+    clamp), and the glossmeter's 60° gloss, haze and DOI of the Ward paint and of the target's
+    material, all equal to the Python binding's (the native C core)."""
+    page = open_page(browser, f"{base_url}/index.html?autorun=0&size=64x48")
+    want = python_expected(PAINTS)
+    seen: set = set()
+    worst = {"params": 0.0, "readings": 0.0}
+    for paint, exp in zip(PAINTS, want):
+        for k in ("L", "a", "b", "c", "d"):
+            set_control(page, k, paint[k])
+        page.select_option("#target", "ward")
+        got = page.evaluate(READ_TARGET)
+        assert got["hidden"]
+        if exp["readings"] is None:
+            assert all(v is None for v in got["ward"].values()), (paint, got["ward"])
+        else:
+            assert _meter_close(got["ward"], exp["readings"]), (paint, got["ward"], exp["readings"])
+        for t in TARGET_IDS:
+            page.select_option("#target", t)
+            got = page.evaluate(READ_TARGET)
+            e = exp["targets"][t]
+            label = (paint, t)
+            seen.add(e["status"])
+            assert not got["hidden"] and got["status"] == e["status"] and got["reason"] == e["reason"], (label, got, e)
+            if e["named"] is None:
+                assert got["named"] == {} and not got["reachedShown"], label
+                assert all(v is None for v in got["target"].values()), label
+                continue
+            assert got["named"].keys() == e["named"].keys(), (label, got["named"], e["named"])
+            assert all(_same(got["named"][k], w) for k, w in e["named"].items()), (label, got["named"], e["named"])
+            for k, w in e["named"].items():
+                for g, x in zip(np.ravel(got["named"][k]), np.ravel(w)):
+                    if isinstance(x, (int, float)) and not isinstance(x, bool) and x != 0:
+                        worst["params"] = max(worst["params"], abs(float(g) - float(x)) / abs(float(x)))
+            out_of_reach = e["status"].startswith("PGLOSS_ERR_BRIDGE_")
+            assert got["reachedShown"] == out_of_reach, label
+            if out_of_reach:
+                assert all(abs(g - w) <= 1e-9 * max(1.0, abs(w)) for g, w in
+                           zip([got["reached"][k] for k in ("L", "a", "b", "c", "d")], e["reached"])), (label, got, e)
+            assert _meter_close(got["target"], e["readings"]), (label, got["target"], e["readings"])
+            for k, w in e["readings"].items():
+                worst["readings"] = max(worst["readings"], abs(got["target"][k] - w["value"]) / max(abs(w["value"]), 1e-30))
+            assert "target=" + t in page.evaluate("location.href")
+    print(f"\n  targets: WebAssembly vs the native core, worst relative difference: parameters "
+          f"{worst['params']:.1e}, glossmeter readings {worst['readings']:.1e}")
+    # The paints reach every kind of answer: reachable, out of reach, outside the model.
+    assert "PGLOSS_OK" in seen and "PGLOSS_ERR_BRIDGE_SPECULAR" in seen and "PGLOSS_ERR_ENVELOPE" in seen, seen
+
+
+def test_paint_from_gloss_units_and_finish(browser: Browser, base_url: str) -> None:
+    """A 60° gloss in GU (with d as set) and a named finish set c and d as the binding's
+    from_gloss_units and finish do; a reading no paint gives (NO_FIT: 0 GU, below the diffuse's
+    own reading) sets the nearest paint and says so; one beyond the envelope sets the paint with
+    its status (ENVELOPE), as the sliders would."""
+    page = open_page(browser, f"{base_url}/index.html?autorun=0&size=64x48")
+    colour = {"L": 35.0, "a": 45.0, "b": 25.0, "d": 0.95}
+    for k, v in colour.items():
+        set_control(page, k, v)
+    spec = {"gloss_units": [[35.0, 45.0, 25.0, 12.0, 0.95], [35.0, 45.0, 25.0, 0.0, 0.95],
+                            [35.0, 45.0, 25.0, 400.0, 0.95]],
+            "finishes": [["satin", 35.0, 45.0, 25.0], ["semi-gloss", 35.0, 45.0, 25.0]]}
+    py = os.environ.get("PGLOSS_WEB_PY", str(ROOT / ".venv-py/bin/python"))
+    want = json.loads(subprocess.run([py, str(ROOT / "tests/web/expected_python.py")], input=json.dumps(spec),
+                                     capture_output=True, text=True, check=True, cwd="/").stdout)
+    state = lambda: page.evaluate("({...window.picker.state})")  # noqa: E731
+    before = state()
+    page.fill("#gu60", "")  # an empty box is not 0 GU: the paint stays, the page says why
+    page.click("#gu-set")
+    assert state() == before and "Enter a number" in page.inner_text("#entry-reason")
+    for (_, _, _, g60, d), w in zip(spec["gloss_units"], want["gloss_units"]):
+        set_control(page, "d", d)
+        page.fill("#gu60", repr(g60))
+        page.click("#gu-set")
+        st = state()
+        assert page.inner_text("#entry-name") == w["status"], (g60, w)
+        assert close(st["c"], w["c"]) and close(st["d"], w["d"]), (g60, st, w)
+        if w["status"] == "PGLOSS_ERR_NO_FIT":
+            assert "nearest paint" in page.inner_text("#entry-reason")
+    assert [w["status"] for w in want["gloss_units"]] == ["PGLOSS_OK", "PGLOSS_ERR_NO_FIT", "PGLOSS_ERR_ENVELOPE"]
+    for (name, *_), w in zip(spec["finishes"], want["finishes"]):
+        page.select_option("#finish", name)
+        st = state()
+        assert close(st["c"], w["c"]) and close(st["d"], w["d"]), (name, st, w)
+        assert page.inner_text("#entry-name") == w["status"]
+        assert ("not met" in page.inner_text("#finish-span")) == (not w["sheen_ok"])
+
+
+THREE = ROOT / "tests/web/node_modules/three"  # npm ci --prefix tests/web (scripts/test-web.sh)
+EXPORT_PY = os.environ.get("PGLOSS_WEB_EXPORT_PY", str(ROOT / ".venv-web-export/bin/python"))
+EXPORTS = [("gltf", "gltf"), ("gltf", "gltf_core"), ("materialx", "openpbr"), ("materialx", "standard_surface"),
+           ("blender", "principled"), ("mitsuba", "roughplastic_ggx"), ("mitsuba", "roughplastic_beckmann")]
+
+
+def _rel(a: float, b: float, r: float) -> bool:
+    return abs(a - b) <= r * max(abs(a), abs(b), 1e-30)
+
+
+def _three_page(browser: Browser, base_url: str) -> Page:
+    """A page with an import map to three.js (the npm package, served by a route: no CDN)."""
+    if not (THREE / "examples/jsm/loaders/GLTFLoader.js").is_file():
+        pytest.fail(f"no three.js at {THREE} (npm ci --prefix tests/web; scripts/test-web.sh does)")
+    page = browser.new_page()
+    html = ('<!DOCTYPE html><script type="importmap">{"imports": {"three": "/__three/build/three.module.js", '
+            '"three/addons/": "/__three/examples/jsm/"}}</script><p>three</p>')
+
+    def serve(route: Any) -> None:
+        rel = route.request.url.split("/__three/", 1)[1].split("?")[0]
+        if rel == "index.html":
+            route.fulfill(body=html, content_type="text/html")
+            return
+        f = (THREE / rel).resolve()
+        if THREE.resolve() not in f.parents or not f.is_file():
+            route.fulfill(status=404, body="")
+            return
+        route.fulfill(body=f.read_bytes(), content_type="text/javascript")
+
+    page.route(f"{base_url}/__three/**", serve)
+    page.goto(f"{base_url}/__three/index.html")
+    return page
+
+
+def test_target_exports_load_in_their_own_libraries(browser: Browser, base_url: str) -> None:
+    """Each bridge target's export, for a reachable paint and one out of glTF core's reach: the
+    glTF material loads in three.js's GLTFLoader (MeshPhysicalMaterial with the extensions' ior
+    and specularIntensity where present), the MaterialX document passes MaterialX's own
+    validation against the open_pbr_surface / standard_surface nodedefs, the Mitsuba <bsdf> loads
+    with mitsuba.load_string, and the Blender lines set the Principled inputs; every value each
+    library reads back is the binding's parameter to the export's 9 digits (MaterialX and Mitsuba
+    hold float32)."""
+    paints = [PAINTS[0], PAINTS[1]]
+    want = python_expected(paints)
+    page = open_page(browser, f"{base_url}/index.html?autorun=0&size=64x48")
+    texts: List[Tuple[int, str, str, str]] = []
+    for i, paint in enumerate(paints):
+        for k in ("L", "a", "b", "c", "d"):
+            set_control(page, k, paint[k])
+        for kind, target in EXPORTS:
+            page.select_option("#target", target)
+            page.check(f"input[name=export][value={kind}]")
+            texts.append((i, kind, target, page.input_value("#export")))
+    statuses = {want[i]["targets"][t]["status"] for i, _, t, _ in texts}
+    assert "PGLOSS_OK" in statuses and "PGLOSS_ERR_BRIDGE_SPECULAR" in statuses, statuses
+    for i, kind, target, text in texts:  # the status and reason travel with every export
+        e = want[i]["targets"][target]
+        assert e["status"] in text and (e["status"] == "PGLOSS_OK" or e["reason"] in text), (kind, target, text)
+
+    # glTF → three.js GLTFLoader
+    gltf = [(i, t, json.loads(x)) for i, k, t, x in texts if k == "gltf"]
+    three = _three_page(browser, base_url)
+    got = three.evaluate("""async (docs) => {
+        const { GLTFLoader } = await import('three/addons/loaders/GLTFLoader.js');
+        const out = [];
+        for (const d of docs) {
+            const gltf = await new GLTFLoader().parseAsync(JSON.stringify(d), '');
+            const m = await gltf.parser.getDependency('material', 0);
+            out.push({ type: m.type, color: m.color.toArray(), roughness: m.roughness, metalness: m.metalness,
+                       ior: m.ior ?? null, specularIntensity: m.specularIntensity ?? null });
+        }
+        return out;
+    }""", [d for _, _, d in gltf])
+    for (i, t, doc), m in zip(gltf, got):
+        n = want[i]["targets"][t]["named"]
+        ext = doc["materials"][0].get("extensions", {})
+        label = (i, t, m)
+        assert m["metalness"] == 0 and _rel(m["roughness"], n["roughnessFactor"], 1e-8), label
+        assert all(_rel(g, w, 1e-8) for g, w in zip(m["color"], n["baseColorFactor"][:3])), label
+        assert set(ext) == ({"KHR_materials_ior"} if n["ior"] != 1.5 else set()) | \
+            ({"KHR_materials_specular"} if n["specularFactor"] != 1 else set()), label
+        if ext:
+            assert m["type"] == "MeshPhysicalMaterial" and _rel(m["ior"], n["ior"], 1e-8), label
+            assert _rel(m["specularIntensity"], n["specularFactor"], 1e-8), label
+        else:
+            assert m["type"] == "MeshStandardMaterial" and t == "gltf_core", label
+    three.close()
+
+    # MaterialX and Mitsuba 3 → their Python packages; one deliberately broken document first,
+    # so that a validator that accepts anything fails this test.
+    mtlx = next(x for _, k, _, x in texts if k == "materialx")
+    broken = mtlx.replace('name="base_color" type="color3"', 'name="base_color" type="float"', 1)
+    assert broken != mtlx
+    items = [{"kind": k, "text": x} for _, k, _, x in texts if k in ("materialx", "mitsuba")]
+    if not Path(EXPORT_PY).is_file():
+        pytest.fail(f"no Python with MaterialX and mitsuba at {EXPORT_PY} (scripts/test-web.sh makes .venv-web-export)")
+    r = subprocess.run([EXPORT_PY, str(ROOT / "tests/web/validate_exports.py")],
+                       input=json.dumps([{"kind": "materialx", "text": broken}] + items),
+                       capture_output=True, text=True, cwd="/", timeout=300)
+    assert r.returncode == 0, r.stderr[-3000:]
+    results = json.loads(r.stdout)
+    assert not results[0]["ok"], "MaterialX accepted base_color typed float"
+    checked = [(i, k, t) for i, k, t, _ in texts if k in ("materialx", "mitsuba")]
+    for (i, kind, target), res in zip(checked, results[1:]):
+        n, v = want[i]["targets"][target]["named"], res["values"]
+        label = (i, target, res)
+        assert res["ok"], label
+        if kind == "materialx":
+            assert v["node"] == ("open_pbr_surface" if target == "openpbr" else "standard_surface"), label
+            for key, w in n.items():
+                if isinstance(w, list):
+                    assert all(_rel(g, x, 1e-6) for g, x in zip(v[key], w)), (key, label)
+                else:
+                    assert _rel(float(v[key]), float(w), 1e-6), (key, label)
+        else:
+            assert _rel(v["alpha"], n["alpha"], 1e-6) and _rel(v["eta"], n["int_ior"] / n["ext_ior"], 1e-6), label
+            assert all(_rel(g, x, 1e-6) for g, x in zip(v["diffuse_reflectance.value"], n["diffuse_reflectance"])), label
+
+    # Blender: the lines that set the Principled BSDF's inputs
+    for i, kind, target, text in texts:
+        if kind != "blender":
+            continue
+        n = want[i]["targets"][target]["named"]
+        sets = dict(re.findall(r'^bsdf\.inputs\["([^"]+)"\]\.default_value = (.+)$', text, re.M))
+        assert set(sets) == {"Base Color", "Metallic", "Roughness", "IOR", "Specular IOR Level"}, text
+        colour = [float(x) for x in sets["Base Color"].strip("()").split(",")]
+        assert colour[3] == 1 and all(_rel(g, w, 1e-8) for g, w in zip(colour, n["Base Color"])), text
+        for key in ("Metallic", "Roughness", "IOR", "Specular IOR Level"):
+            assert _rel(float(sets[key]), float(n[key]), 1e-8), (key, text)
+
+
+# ---- the bridge targets' specular lobe in GLSL (web/picker/microfacet.glsl) ---------------
+
+def _mf_reference(model: int, eta: float, a: float, wo: np.ndarray, wi: np.ndarray) -> np.ndarray:
+    """D G F / (4 μi μo) in double from the published forms, written here in angles (not the
+    shader's component form): GGX D and G1 (Walter et al. 2007, eqs. 33, 34), height-correlated
+    Smith G2 = 1/(1 + Λ(i) + Λ(o)) (Heitz 2014, eq. 99), Beckmann D and the rational G1 (Walter
+    eqs. 25, 27), the exact unpolarised dielectric Fresnel term (Walter eq. 22)."""
+    wo = wo / np.linalg.norm(wo, axis=1)[:, None]
+    wi = wi / np.linalg.norm(wi, axis=1)[:, None]
+    h = wo + wi
+    h /= np.linalg.norm(h, axis=1)[:, None]
+    ch, co, ci = h[:, 2], wo[:, 2], wi[:, 2]
+    tan2 = lambda c: np.sin(np.arccos(np.clip(c, -1, 1))) ** 2 / c ** 2  # noqa: E731
+    if model == 3:
+        D = np.exp(-tan2(ch) / a ** 2) / (np.pi * a ** 2 * ch ** 4)
+
+        def g1(c: np.ndarray) -> np.ndarray:
+            t = np.sqrt(tan2(c))
+            x = np.divide(1.0, a * t, out=np.full_like(t, np.inf), where=t > 0)
+            return np.where(x >= 1.6, 1.0, (3.535 * x + 2.181 * x ** 2) / (1 + 2.276 * x + 2.577 * x ** 2))
+
+        G = g1(ci) * g1(co)
+    else:
+        D = a ** 2 / (np.pi * ch ** 4 * (a ** 2 + tan2(ch)) ** 2)
+        lam = lambda c: (-1 + np.sqrt(1 + a ** 2 * tan2(c))) / 2  # noqa: E731
+        G = 1 / ((1 + lam(ci)) * (1 + lam(co))) if model == 2 else 1 / (1 + lam(ci) + lam(co))
+    c = np.sum(wo * h, axis=1)
+    g = np.sqrt(eta ** 2 - 1 + c ** 2)
+    F = 0.5 * (g - c) ** 2 / (g + c) ** 2 * (1 + ((c * (g + c) - 1) / (c * (g - c) + 1)) ** 2)
+    return D * G * F / (4 * ci * co)
+
+
+def test_microfacet_glsl_matches_the_reference(browser: Browser, base_url: str) -> None:
+    """web/picker/microfacet.glsl in WebGL2 (Chromium, SwiftShader; float32) against the double
+    reference above: 4 models × 4 roughnesses × 3 F0, random directions and directions near the
+    mirror, on float32 inputs. Measured worst relative error is printed; the bound 2e-4 is float32's
+    rounding through D's (a² + tan²)² and the Fresnel term, with margin."""
+    rng = np.random.default_rng(7)
+    rows = []
+    for model in range(4):
+        for a in (0.01, 0.05, 0.2, 0.6):
+            for f0 in (0.02, 0.04, 0.1):
+                eta = (1 + np.sqrt(f0)) / (1 - np.sqrt(f0))
+                n = 24
+                wo = rng.normal(size=(n, 3))
+                wo[:, 2] = np.abs(wo[:, 2]) + 0.1
+                wi = rng.normal(size=(n, 3))
+                wi[:, 2] = np.abs(wi[:, 2]) + 0.1
+                # near the mirror: wi = reflect(wo) tilted by about α
+                m = n // 2
+                wi[:m] = np.c_[-wo[:m, 0], -wo[:m, 1], wo[:m, 2]] + a * rng.normal(size=(m, 3)) * np.linalg.norm(wo[:m], axis=1)[:, None]
+                wi[:m, 2] = np.abs(wi[:m, 2]) + 0.05
+                wo = (wo / np.linalg.norm(wo, axis=1)[:, None]).astype(np.float32)
+                wi = (wi / np.linalg.norm(wi, axis=1)[:, None]).astype(np.float32)
+                for k in range(n):
+                    rows.append((model, np.float32(eta), np.float32(a), wo[k], wi[k]))
+    page = open_page(browser, f"{base_url}/index.html?autorun=0&size=64x48")
+    got = page.evaluate("""async (cases) => {
+        const src = await (await fetch('microfacet.glsl')).text();
+        const cv = document.createElement('canvas');
+        const gl = cv.getContext('webgl2');
+        if (!gl.getExtension('EXT_color_buffer_float')) throw new Error('no EXT_color_buffer_float');
+        const n = cases.length;
+        const sh = (type, text) => { const s = gl.createShader(type); gl.shaderSource(s, text); gl.compileShader(s);
+            if (!gl.getShaderParameter(s, gl.COMPILE_STATUS)) throw new Error(gl.getShaderInfoLog(s)); return s; };
+        const prog = gl.createProgram();
+        gl.attachShader(prog, sh(gl.VERTEX_SHADER, '#version 300 es\\nvoid main() { vec2 p = vec2(gl_VertexID & 1, gl_VertexID >> 1) * 4.0 - 1.0; gl_Position = vec4(p, 0, 1); }'));
+        gl.attachShader(prog, sh(gl.FRAGMENT_SHADER, '#version 300 es\\nprecision highp float;\\nprecision highp int;\\n' + src +
+            '\\nuniform highp sampler2D u_in; out vec4 o;\\nvoid main() { int i = int(gl_FragCoord.x);' +
+            ' vec4 a = texelFetch(u_in, ivec2(i, 0), 0), b = texelFetch(u_in, ivec2(i, 1), 0), c = texelFetch(u_in, ivec2(i, 2), 0);' +
+            ' o = vec4(pgloss_mf_specular(int(c.x), c.y, c.z, a.xyz, b.xyz), 0, 0, 1); }'));
+        gl.linkProgram(prog);
+        if (!gl.getProgramParameter(prog, gl.LINK_STATUS)) throw new Error(gl.getProgramInfoLog(prog));
+        const data = new Float32Array(n * 3 * 4);
+        cases.forEach(([m, eta, a, wo, wi], i) => {
+            data.set([...wo, 0], 4 * i); data.set([...wi, 0], 4 * (n + i)); data.set([m, eta, a, 0], 4 * (2 * n + i));
+        });
+        const tex = gl.createTexture();
+        gl.bindTexture(gl.TEXTURE_2D, tex);
+        gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA32F, n, 3, 0, gl.RGBA, gl.FLOAT, data);
+        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
+        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+        const out = gl.createTexture();
+        gl.bindTexture(gl.TEXTURE_2D, out);
+        gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA32F, n, 1, 0, gl.RGBA, gl.FLOAT, null);
+        const fb = gl.createFramebuffer();
+        gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
+        gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, out, 0);
+        gl.viewport(0, 0, n, 1);
+        gl.useProgram(prog);
+        gl.activeTexture(gl.TEXTURE0);
+        gl.bindTexture(gl.TEXTURE_2D, tex);
+        gl.uniform1i(gl.getUniformLocation(prog, 'u_in'), 0);
+        gl.drawArrays(gl.TRIANGLES, 0, 3);
+        const px = new Float32Array(4 * n);
+        gl.readPixels(0, 0, n, 1, gl.RGBA, gl.FLOAT, px);
+        return Array.from({ length: n }, (_, i) => px[4 * i]);
+    }""", [[int(m), float(eta), float(a), [float(x) for x in wo], [float(x) for x in wi]] for m, eta, a, wo, wi in rows])
+    got = np.asarray(got)
+    worst = {}
+    for model in range(4):
+        idx = [i for i, r in enumerate(rows) if r[0] == model]
+        ref = np.concatenate([_mf_reference(model, float(rows[i][1]), float(rows[i][2]),
+                                            rows[i][3][None].astype(np.float64), rows[i][4][None].astype(np.float64)) for i in idx])
+        rel = np.abs(got[idx] - ref) / np.maximum(ref, 1e-30)
+        worst[model] = float(rel.max())
+        assert np.all(np.isfinite(got[idx])) and np.all(rel <= 2e-4), (model, float(rel.max()), int(np.argmax(rel)))
+    print(f"\n  microfacet.glsl vs reference ({len(rows)} cases): worst relative error per model {worst}")
 
 
 def test_envelope_mark(browser: Browser, base_url: str) -> None:
@@ -399,8 +788,13 @@ def test_screenshot(browser: Browser, base_url: str) -> None:
     page.check("input[name=view][value=match]")
     page.wait_for_function("window.picker.tracer.count >= 48", timeout=240_000)
     page.locator("#view-panel").screenshot(path=str(OUT / "picker-match.png"))
+    # A target out of the paint's reach (glTF core: F0 fixed at 0.04), with the glTF export.
+    page.check("input[name=view][value=single]")
+    page.select_option("#target", "gltf_core")
+    page.check("input[name=export][value=gltf]")
+    page.locator("#controls").screenshot(path=str(OUT / "picker-target.png"))
     assert (OUT / "picker.png").stat().st_size > 10_000
-    print(f"\n(e) screenshots: {OUT / 'picker.png'}, {OUT / 'picker-match.png'}")
+    print(f"\n(e) screenshots: {OUT / 'picker.png'}, {OUT / 'picker-match.png'}, {OUT / 'picker-target.png'}")
 
 
 # ---- defects found by a new user (each test failed before its fix) ------------------------

@@ -52,13 +52,27 @@ export async function loadPgloss(source = new URL('./pgloss.wasm', import.meta.u
 // Layout of the public structs on wasm32 (checked against the module at load time).
 const PHYS = { size: 56, rho_d: 0, rho_s: 24, alpha_x: 32, alpha_y: 40, normalization: 48 };
 const PERC = { size: 40, fields: ['L', 'a', 'b', 'c', 'd'] };
+const BRIDGE = { size: 48, base_color: 0, roughness: 24, ior: 32, specular: 40 };
+const READINGS = { size: 112 };  // pgloss_glossmeter_readings: 7 × {value, error}
+const FINISH = { size: 48, name: 0, level: 4, gloss_60_min: 8, source: 40 };
+
+// The bridge's targets (pgloss_bridge_target) and the glossmeter's kinds (pgloss_glossmeter_kind),
+// in enum order, under the names of their C enumerators without the prefix.
+export const BRIDGE_TARGETS = ['openpbr', 'standard_surface', 'gltf', 'gltf_core', 'principled',
+  'roughplastic_ggx', 'roughplastic_beckmann'];
+export const GLOSSMETER_KINDS = ['GLOSS_20', 'GLOSS_60', 'GLOSS_85', 'HAZE_20', 'HAZE_INDEX', 'DOI_30',
+  'CONTRAST_60'];
+// pgloss_gloss_second: which reading accompanies the 60° gloss.
+export const GLOSS_SECOND = { none: 0, gloss_20: 1, haze_20: 2, doi_30: 3 };
 
 export class Pgloss {
   constructor(instance) {
     this.x = instance.exports;
     const lay = (i) => this.x.pgloss_wasm_layout(i) >>> 0;
-    const got = [lay(0), lay(1), lay(2), lay(3), lay(4), lay(5), lay(6)];
-    const want = [PHYS.size, PHYS.rho_s, PHYS.alpha_x, PHYS.alpha_y, PHYS.normalization, PERC.size, 4];
+    const got = Array.from({ length: 16 }, (_, i) => lay(i));
+    const want = [PHYS.size, PHYS.rho_s, PHYS.alpha_x, PHYS.alpha_y, PHYS.normalization, PERC.size, 4,
+      BRIDGE.size, BRIDGE.roughness, BRIDGE.ior, BRIDGE.specular, READINGS.size,
+      FINISH.size, FINISH.level, FINISH.gloss_60_min, FINISH.source];
     if (got.join() !== want.join()) throw new Error(`pgloss.wasm struct layout ${got} is not the loader's ${want}`);
     this.scratchSize = 16384;  // bytes: room for a 1000-point isogloss contour
     this.scratch = this.x.malloc(this.scratchSize);
@@ -226,4 +240,154 @@ export class Pgloss {
   rgbFromLabEx(lab, space, nulls) { return this._vec3('pgloss_rgb_from_lab_ex', 'lab', lab, 'rgb', 3, nulls, space); }
   labFromRgbEx(rgb, space, nulls) { return this._vec3('pgloss_lab_from_rgb_ex', 'rgb', rgb, 'lab', 3, nulls, space); }
   luminanceEx(rgb, space, nulls) { return this._vec3('pgloss_luminance_ex', 'rgb', rgb, 'Y', 1, nulls, space); }
+
+  // --- bridge.h ---------------------------------------------------------------------------
+  // target: a pgloss_bridge_target number or its short name (BRIDGE_TARGETS).
+  _target(t) {
+    if (typeof t === 'number') return t;
+    const i = BRIDGE_TARGETS.indexOf(t);
+    return i >= 0 ? i : 99;  // an unknown name reaches the core as an unknown target: ARGUMENT
+  }
+  _writeBridge(ptr, p) {
+    const f = this.f64;
+    f.set(p.base_color.map(Number), (ptr + BRIDGE.base_color) / 8);
+    f[(ptr + BRIDGE.roughness) / 8] = p.roughness;
+    f[(ptr + BRIDGE.ior) / 8] = p.ior;
+    f[(ptr + BRIDGE.specular) / 8] = p.specular;
+  }
+  _readBridge(ptr) {
+    const f = this.f64;
+    return {
+      base_color: Array.from(f.subarray(ptr / 8, ptr / 8 + 3)), roughness: f[(ptr + BRIDGE.roughness) / 8],
+      ior: f[(ptr + BRIDGE.ior) / 8], specular: f[(ptr + BRIDGE.specular) / 8],
+    };
+  }
+  bridgeTargetName(t) { return this.cstring(this.x.pgloss_bridge_target_name(this._target(t))); }
+  // Paint → the target's parameters (`params`) and the paint they reach (`reached`: the paint, or
+  // the nearest reachable one when the status is BRIDGE_BASE / _SPECULAR / _ROUGHNESS).
+  bridgeFromPerceptual(target, q) {
+    const alloc = this._arena();
+    const pq = alloc(PERC.size), pp = alloc(BRIDGE.size), pr = alloc(PERC.size);
+    this._writePerceptual(pq, q);
+    const st = this.x.pgloss_bridge_from_perceptual(this._target(target), pq, pp, pr);
+    return this._result(st, { params: this._readBridge(pp), reached: this._readPerceptual(pr) });
+  }
+  bridgeToPerceptual(target, params) {
+    const alloc = this._arena();
+    const pp = alloc(BRIDGE.size), pq = alloc(PERC.size), pres = alloc(8);
+    this._writeBridge(pp, params);
+    const st = this.x.pgloss_bridge_to_perceptual(this._target(target), pp, pq, pres);
+    return this._result(st, { paint: this._readPerceptual(pq), residual: this.f64[pres / 8] });
+  }
+  bridgeModelInputs(target, params) {
+    const alloc = this._arena();
+    const pp = alloc(BRIDGE.size), o = alloc(24);
+    this._writeBridge(pp, params);
+    const st = this.x.pgloss_bridge_model_inputs(this._target(target), pp, o, o + 8, o + 16);
+    const f = this.f64;
+    return this._result(st, { beta: f[o / 8], f0: f[o / 8 + 1], alpha: f[o / 8 + 2] });
+  }
+  bridgeParamsFromModel(target, base_color, f0, alpha) {
+    const alloc = this._arena();
+    const pb = alloc(24), pp = alloc(BRIDGE.size);
+    this.f64.set(base_color.map(Number), pb / 8);
+    const st = this.x.pgloss_bridge_params_from_model(this._target(target), pb, f0, alpha, pp);
+    return this._result(st, { params: this._readBridge(pp) });
+  }
+  bridgeRange(target) {
+    const o = this._arena()(32);
+    const st = this.x.pgloss_bridge_range(this._target(target), o, o + 8, o + 16, o + 24);
+    const f = this.f64;
+    return this._result(st, { f0_min: f[o / 8], f0_max: f[o / 8 + 1], alpha_min: f[o / 8 + 2], alpha_max: f[o / 8 + 3] });
+  }
+
+  // --- glossmeter.h -----------------------------------------------------------------------
+  // kind: a pgloss_glossmeter_kind number or its name (GLOSSMETER_KINDS, with or without PGLOSS_).
+  _kind(k) {
+    if (typeof k === 'number') return k;
+    const i = GLOSSMETER_KINDS.indexOf(String(k).replace(/^PGLOSS_/, ''));
+    return i >= 0 ? i : 99;
+  }
+  _reading(cname, args) {
+    const o = this._arena()(16);
+    const st = this.x[cname](...args, o);
+    return this._result(st, { value: this.f64[o / 8], error: this.f64[o / 8 + 1] });
+  }
+  _readings(ptr) {
+    const f = this.f64;
+    return Object.fromEntries(GLOSSMETER_KINDS.map((k, i) => [k, { value: f[ptr / 8 + 2 * i], error: f[ptr / 8 + 2 * i + 1] }]));
+  }
+  fresnelDielectric(n, c) { return this._scalar('pgloss_fresnel_dielectric', [n, c], ['value']); }
+  glossmeterStandardFlux(kind) { return this._scalar('pgloss_wasm_standard_flux', [this._kind(kind)], ['value']); }
+  // An ideal dielectric mirror of index n, and a perfect diffuser of albedo rho (meter.c).
+  glossmeterReadFresnel(kind, n, tol = 0) { return this._reading('pgloss_wasm_read_fresnel', [this._kind(kind), n, tol]); }
+  glossmeterReadLambert(kind, rho, tol = 0) { return this._reading('pgloss_wasm_read_lambert', [this._kind(kind), rho, tol]); }
+  glossmeterReadPhysical(kind, p, azimuth_deg = 0, tol = 0) {
+    const alloc = this._arena();
+    const pp = alloc(PHYS.size), o = alloc(16);
+    this._writePhysical(pp, p);
+    const st = this.x.pgloss_glossmeter_read_physical(this._kind(kind), pp, azimuth_deg, tol, o);
+    return this._result(st, { value: this.f64[o / 8], error: this.f64[o / 8 + 1] });
+  }
+  // Every reading at once: {readings: {GLOSS_60: {value, error}, …}}.
+  glossmeterReadingsPhysical(p, azimuth_deg = 0, tol = 0) {
+    const alloc = this._arena();
+    const pp = alloc(PHYS.size), o = alloc(READINGS.size);
+    this._writePhysical(pp, p);
+    const st = this.x.pgloss_glossmeter_readings_physical(pp, azimuth_deg, tol, o);
+    return this._result(st, { readings: this._readings(o) });
+  }
+  glossmeterReadingsBridge(target, params, azimuth_deg = 0, tol = 0) {
+    const alloc = this._arena();
+    const pp = alloc(BRIDGE.size), o = alloc(READINGS.size);
+    this._writeBridge(pp, params);
+    const st = this.x.pgloss_glossmeter_readings_bridge(this._target(target), pp, azimuth_deg, tol, o);
+    return this._result(st, { readings: this._readings(o) });
+  }
+  // The Ward paint of colour (L*, a*, b*) whose 60° gloss is gloss_60 GU; `second` (GLOSS_SECOND)
+  // names the other reading, or with `none` d itself (outside (0, 1): the assumed d).
+  paintFromGlossUnits(L, a, b, normalization, gloss_60, second = 'none', d_or_second = 0) {
+    const alloc = this._arena();
+    const pq = alloc(PERC.size), pp = alloc(PHYS.size);
+    const sec = typeof second === 'number' ? second : (GLOSS_SECOND[second] ?? 99);
+    const st = this.x.pgloss_paint_from_gloss_units(L, a, b, normalization, gloss_60, sec, d_or_second, pq, pp);
+    return this._result(st, { q: this._readPerceptual(pq), p: this._readPhysical(pp) });
+  }
+  _finish(ptr) {
+    if (!ptr) return null;
+    const f = this.f64, u32 = new Uint32Array(this.x.memory.buffer);
+    const g = (ptr + FINISH.gloss_60_min) / 8;
+    return {
+      ptr, name: this.cstring(u32[(ptr + FINISH.name) / 4]), level: this.cstring(u32[(ptr + FINISH.level) / 4]),
+      gloss_60_min: f[g], gloss_60_max: f[g + 1], sheen_85_min: f[g + 2], sheen_85_max: f[g + 3],
+      source: this.cstring(u32[(ptr + FINISH.source) / 4]),
+    };
+  }
+  // The MPI finishes G1–G7, in order.
+  finishes() {
+    const out = [];
+    for (let i = 0; ; i++) {
+      const f = this._finish(this.x.pgloss_finish_at(i));
+      if (!f) return out;
+      out.push(f);
+    }
+  }
+  finishFind(name) {
+    const bytes = new TextEncoder().encode(String(name));
+    const p = this._arena()(bytes.length + 1);
+    new Uint8Array(this.x.memory.buffer).set([...bytes, 0], p);
+    return this._finish(this.x.pgloss_finish_find(p));
+  }
+  // A finish's representative paint at a colour, and the (c, d) it spans.
+  finishPaint(name, L, a, b, normalization = 0) {
+    const f = this.finishFind(name);
+    const alloc = this._arena();
+    const pq = alloc(PERC.size), pp = alloc(PHYS.size), pc = alloc(16), pd = alloc(16), ps = alloc(4);
+    const st = this.x.pgloss_finish_paint(f ? f.ptr : 0, L, a, b, normalization, pq, pp, pc, pd, ps);
+    const fl = this.f64;
+    return this._result(st, {
+      finish: f, q: this._readPerceptual(pq), p: this._readPhysical(pp),
+      c_range: [fl[pc / 8], fl[pc / 8 + 1]], d_range: [fl[pd / 8], fl[pd / 8 + 1]], sheen_ok: this.i32[ps / 4] !== 0,
+    });
+  }
 }

@@ -1,15 +1,17 @@
 // SPDX-FileCopyrightText: 2026 The pgloss authors
 // SPDX-License-Identifier: Apache-2.0
 // picker.js — the colour/gloss picker of Fig. 13: controls, read-outs, the c–d plot,
-// match-gloss view, export and URL-hash state. Every conversion (eqs. 3–8, Lab → RGB,
-// validity, envelope, matching, isogloss contours) is a call into libpgloss (pgloss.wasm);
-// this file only moves numbers between the controls, the C core and the renderer.
+// match-gloss view, render targets, glossmeter readings, export and URL-hash state. Every
+// conversion (eqs. 3–8, Lab → RGB, validity, envelope, matching, isogloss contours, the gloss
+// bridge to each target, the glossmeter, gloss units and finishes) is a call into libpgloss
+// (pgloss.wasm); this file only moves numbers between the controls, the C core and the renderer.
 //
 // Query options (for tests and slow GPUs): ?autorun=0 (no render loop: call
 // picker.tracer.step()), ?size=WxH (canvas size of the single view), ?maxspp=N.
 import { loadPgloss } from './pgloss-wasm.js';
 import { parseStimulusScene } from './scene.js';
 import { Tracer } from './render.js';
+import { TARGETS, targetOf, namedParams, gltfDocument, materialxDocument, blenderValues, mitsubaBsdf } from './targets.js';
 
 const $ = (id) => document.getElementById(id);
 const query = new URLSearchParams(location.search);
@@ -24,7 +26,11 @@ const PERCEPTUAL_KEYS = ['L', 'a', 'b', 'c', 'd'];
 const PHYSICAL_KEYS = ['rd_r', 'rd_g', 'rd_b', 'rho_s', 'alpha'];
 // The default paint: the stimulus scene's grey (ρd .193, ρs .066, α .07) ≈ Fig. 11's reference.
 const DEFAULT = { mode: 'perceptual', view: 'single', L: 51.04, a: 0, b: 0, c: 0.087, d: 0.93,
-  rd_r: 0.193, rd_g: 0.193, rd_b: 0.193, rho_s: 0.066, alpha: 0.07, export: 'json' };
+  rd_r: 0.193, rd_g: 0.193, rd_b: 0.193, rho_s: 0.066, alpha: 0.07, export: 'json', target: 'ward' };
+// The bridge's out-of-reach statuses: the parameters written are the nearest reachable paint's.
+const REACH = ['PGLOSS_ERR_BRIDGE_BASE', 'PGLOSS_ERR_BRIDGE_SPECULAR', 'PGLOSS_ERR_BRIDGE_ROUGHNESS'];
+// The glossmeter's quadrature tolerance for the read-outs (relative; 4 digits are shown).
+const METER_TOL = 1e-5;
 
 let pg;            // the C core
 let tracer = null; // null when WebGL2 is missing (the page still converts)
@@ -79,7 +85,41 @@ function convert() {
   const phys = pg.checkPhysical({ ...m.physical });
   m.renderable = ![-2, -3, -4].includes(phys.status);
   m.physicalCheck = phys;
+  m.target = state.target === 'ward' ? null : bridgeOf(m.perceptual, state.target);
+  m.meter = meterReadings(m);
   return m;
+}
+
+// The paint in a bridge target: its parameters, the status and the core's reason. Out of the
+// target's reach the core writes the nearest reachable paint's parameters (`reached`); for a
+// paint outside the model (ENVELOPE, GAMUT, …) it writes nothing usable: params null.
+function bridgeOf(q, id) {
+  const def = targetOf(id);
+  const r = pg.bridgeFromPerceptual(def.bridge, q);
+  const written = r.status >= 0 || REACH.includes(r.name);
+  return { def, status: r.status, name: r.name, reason: pg.statusString(r.status), requested: { ...q },
+    params: written ? r.params : null, reached: written ? r.reached : null };
+}
+
+// The virtual glossmeter (glossmeter.h) on the Ward paint and on the target's material,
+// recomputed only when the material changes (a reading takes tens of milliseconds).
+const meterCache = new Map();
+function cachedReadings(key, fn) {
+  if (!meterCache.has(key)) {
+    if (meterCache.size > 64) meterCache.clear();
+    meterCache.set(key, fn());
+  }
+  return meterCache.get(key);
+}
+function meterReadings(m) {
+  const p = m.physical;
+  // Every paint the view renders is measured, one beyond the envelope too (flagged by its status).
+  const ward = m.renderable
+    ? cachedReadings(JSON.stringify(['ward', p]), () => pg.glossmeterReadingsPhysical({ ...p }, 0, METER_TOL)) : null;
+  const t = m.target;
+  const target = t && t.params
+    ? cachedReadings(JSON.stringify([t.def.bridge, t.params]), () => pg.glossmeterReadingsBridge(t.def.bridge, t.params, 0, METER_TOL)) : null;
+  return { ward, target };
 }
 
 // Fig. 12: top row, the paint's physical ρs and α on white, grey and black; bottom row,
@@ -106,6 +146,7 @@ function writeHash() {
   h.set('mode', state.mode);
   for (const k of keys) h.set(k, exact(state[k]));
   h.set('view', state.view);
+  h.set('target', state.target);
   const s = `#${h.toString()}`;
   if (location.hash !== s) history.replaceState(null, '', s);
 }
@@ -113,6 +154,7 @@ function readHash() {
   const h = new URLSearchParams(location.hash.slice(1));
   if (h.get('mode') === 'physical' || h.get('mode') === 'perceptual') state.mode = h.get('mode');
   if (h.get('view') === 'match' || h.get('view') === 'single') state.view = h.get('view');
+  if (targetOf(h.get('target'))) state.target = h.get('target');
   for (const k of [...PERCEPTUAL_KEYS, ...PHYSICAL_KEYS]) {
     if (h.has(k) && h.get(k).trim() !== '' && Number.isFinite(Number(h.get(k)))) state[k] = Number(h.get(k));
   }
@@ -177,6 +219,9 @@ function showReadout(m) {
   $('out-reason').textContent = m.reason;  // pgloss_status_string, as the library words it
   $('out-reason').className = statusClass(m.status);
 
+  showTarget(m);
+  showMeter(m);
+
   // The envelope on the c slider.
   const mark = $('envelope-mark'), rng = $('rng-c');
   const lo = Number(rng.min), hi = Number(rng.max);
@@ -184,6 +229,101 @@ function showReadout(m) {
   mark.style.left = `calc(${(pos * 100).toFixed(3)}% - 1px)`;
   mark.classList.toggle('off', !(m.envelope <= hi));
   mark.title = `envelope at L* ${fmt(q.L, 4)}: c ≤ ${fmt(m.envelope, 4)}${m.envelope > hi ? ' (beyond the slider)' : ''}`;
+}
+
+function showTarget(m) {
+  const t = m.target;
+  $('target-readout').hidden = !t;
+  $('view-what').hidden = !t;
+  $('meter-target-head').textContent = t ? t.def.label : 'target';
+  if (!t) return;
+  $('target-title').textContent = t.def.label;
+  const rows = $('target-params');
+  rows.innerHTML = '';
+  const named = t.params ? namedParams(t.def, t.params) : {};
+  for (const [k, v] of Object.entries(named)) {
+    const tr = document.createElement('tr'), th = document.createElement('th'), td = document.createElement('td');
+    th.textContent = k;
+    td.textContent = Array.isArray(v) ? v.map((x) => fmt(x)).join(', ') : typeof v === 'number' ? fmt(v) : String(v);
+    td.dataset.value = JSON.stringify(v);
+    td.dataset.name = k;
+    tr.append(th, td);
+    rows.appendChild(tr);
+  }
+  const st = $('target-status');
+  st.textContent = t.name;
+  st.className = statusClass(t.status);
+  st.dataset.value = t.status;
+  $('target-reason').textContent = t.reason;
+  $('target-reason').className = statusClass(t.status);
+  // Out of reach: the parameters above are the nearest reachable paint's; never a silent clamp.
+  const out = t.status < 0 && t.reached;
+  $('target-reached-row').hidden = !out;
+  if (out) {
+    const r = t.reached;
+    setText('target-reached', `L* ${fmt(r.L)}, a* ${fmt(r.a)}, b* ${fmt(r.b)}, c ${fmt(r.c)}, d ${fmt(r.d)}`, r);
+  }
+}
+
+function showMeter(m) {
+  const cells = [['gloss60', 'GLOSS_60'], ['haze', 'HAZE_20'], ['doi', 'DOI_30']];
+  for (const [who, r] of [['ward', m.meter.ward], ['target', m.meter.target]]) {
+    for (const [id, kind] of cells) {
+      const el = $(`meter-${who}-${id}`);
+      if (!r) { setText(`meter-${who}-${id}`, '—', null); el.title = ''; continue; }
+      if (r.status < 0) { setText(`meter-${who}-${id}`, r.name, null); el.title = pg.statusString(r.status); continue; }
+      setText(`meter-${who}-${id}`, fmt(r.readings[kind].value, 4), r.readings[kind].value);
+      el.title = `± ${fmt(r.readings[kind].error, 2)} (quadrature)`;
+    }
+  }
+}
+
+// ---- paint entry by gloss units or finish ----------------------------------------------
+function showEntry(r, extra = '') {
+  $('entry-name').textContent = r.name;
+  $('entry-name').className = statusClass(r.status);
+  $('entry-name').dataset.value = r.status;
+  $('entry-reason').textContent = r.status === 0 ? extra : `${pg.statusString(r.status)}${extra ? ` ${extra}` : ''}`;
+}
+// Sets c and d of the current colour from a result of pgloss_paint_from_gloss_units or
+// pgloss_finish_paint. NO_FIT: the core wrote the nearest paint, which is set and said so.
+function applyEntry(r, extra) {
+  const usable = r.status >= 0 || r.name === 'PGLOSS_ERR_NO_FIT' || r.name === 'PGLOSS_ERR_ENVELOPE';
+  const nearest = r.name === 'PGLOSS_ERR_NO_FIT' ? ` Set to the nearest paint: c ${fmt(r.q.c)}, d ${fmt(r.q.d)}.` : '';
+  showEntry(r, `${extra}${nearest}`);
+  if (!usable) return;
+  if (state.mode !== 'perceptual') { syncFromModelForModeSwitch('perceptual'); applyModeUI(); }
+  state.c = r.q.c;
+  state.d = r.q.d;
+  update({ all: true });
+}
+function enterGlossUnits() {
+  const q = model.perceptual, second = $('gu-second').value;
+  const missing = [['gu60', '60° gloss'], ...(second === 'none' ? [] : [['gu-second-value', 'second reading']])]
+    .filter(([id]) => $(id).value.trim() === '' || !Number.isFinite(Number($(id).value)));
+  if (missing.length) {  // an empty box is not 0 GU: nothing is set
+    $('entry-name').textContent = 'no paint set';
+    $('entry-name').className = 'bad';
+    delete $('entry-name').dataset.value;
+    $('entry-reason').textContent = `Enter a number for the ${missing.map(([, n]) => n).join(' and the ')}.`;
+    return;
+  }
+  const x = second === 'none' ? q.d : Number($('gu-second-value').value);
+  const r = pg.paintFromGlossUnits(q.L, q.a, q.b, 0, Number($('gu60').value), second, x);
+  $('finish').value = '';
+  $('finish-span').textContent = '';
+  applyEntry(r, '');
+}
+function enterFinish() {
+  const name = $('finish').value;
+  if (!name) return;
+  const q = model.perceptual;
+  const r = pg.finishPaint(name, q.L, q.a, q.b, 0);
+  const f = r.finish;
+  const range = (lo, hi) => (Number.isFinite(lo) ? (Number.isFinite(hi) ? `${lo}–${hi}` : `≥ ${lo}`) : `≤ ${hi}`);
+  $('finish-span').textContent = f ? `${f.level}: 60° ${range(f.gloss_60_min, f.gloss_60_max)} GU → c ${fmt(r.c_range[0], 3)}–${fmt(r.c_range[1], 3)}, ` +
+    `d ${fmt(r.d_range[0], 3)}–${fmt(r.d_range[1], 3)}; 85° sheen ${range(f.sheen_85_min, f.sheen_85_max)} GU ${r.sheen_ok ? 'met' : 'not met (a Ward paint reads little at 85°)'}` : '';
+  applyEntry(r, '');
 }
 
 // ---- the c–d plot -----------------------------------------------------------------------
@@ -281,6 +421,7 @@ function exportText(m, kind) {
       `param color rho_d ${rd.map((x) => fmt(x)).join(' ')} ;`, `param float rho_s ${fmt(p.rho_s)} ;`,
       `param float alpha ${fmt(p.alpha)} ;`].join('\n');
   }
+  if (kind === 'gltf' || kind === 'materialx' || kind === 'blender' || kind === 'mitsuba') return targetExport(m, kind);
   return [`// glsl/pgloss.glsl (after #include "pgloss.glsl")`,
     `pgloss_perceptual q = pgloss_perceptual(${[q.L, q.a, q.b, q.c, q.d].map(glslFloat).join(', ')});`,
     `pgloss_physical p;`,
@@ -289,6 +430,26 @@ function exportText(m, kind) {
     `// pgloss_physical p = pgloss_physical(vec3(${rd.map(glslFloat).join(', ')}), ${glslFloat(p.rho_s)}, ${glslFloat(p.alpha)}, ${glslFloat(p.alpha)}, PGLOSS_NORM_WARD);`,
     `pgloss_material m;`,
     `st = pgloss_material_init(m, p);`].join('\n');
+}
+
+// The exports of the bridge's targets: the chosen target where it is of the format's kind,
+// else the format's default target (glTF with extensions, OpenPBR, Mitsuba GGX).
+const EXPORT_TARGETS = { gltf: ['gltf', 'gltf_core'], materialx: ['openpbr', 'standard_surface'],
+  blender: ['principled'], mitsuba: ['roughplastic_ggx', 'roughplastic_beckmann'] };
+function targetExport(m, kind) {
+  const ids = EXPORT_TARGETS[kind];
+  const id = ids.includes(state.target) ? state.target : ids[0];
+  const t = bridgeOf(m.perceptual, id);
+  const comment = kind === 'gltf' || kind === 'blender' ? '#' : '<!--';
+  if (!t.params) {
+    const line = `${t.def.label}: no parameters — ${t.name}: ${t.reason}`;
+    return kind === 'gltf' ? JSON.stringify({ error: { status: t.name, reason: t.reason, target: id } }, null, 2)
+      : comment === '#' ? `# ${line}` : `<!-- ${line.replace(/--/g, '- -')} -->`;
+  }
+  if (kind === 'gltf') return gltfDocument(t.params, t);
+  if (kind === 'materialx') return materialxDocument(id === 'openpbr' ? 'open_pbr_surface' : 'standard_surface', t.params, t);
+  if (kind === 'blender') return blenderValues(t.params, t);
+  return mitsubaBsdf(id === 'roughplastic_ggx' ? 'ggx' : 'beckmann', t.params, t);
 }
 
 // ---- render loop ------------------------------------------------------------------------
@@ -383,6 +544,7 @@ function applyModeUI() {
   $('physical-controls').hidden = state.mode !== 'physical';
   document.querySelector(`input[name=mode][value=${state.mode}]`).checked = true;
   document.querySelector(`input[name=view][value=${state.view}]`).checked = true;
+  $('target').value = state.target;
 }
 
 async function fetchText(url) {
@@ -407,6 +569,14 @@ async function main() {
   $('copy').addEventListener('click', () => navigator.clipboard?.writeText($('export').value));
   $('link').addEventListener('click', () => navigator.clipboard?.writeText(location.href));
   $('plot').addEventListener('click', pickFromPlot);
+  const sel = $('target');
+  for (const t of TARGETS) sel.add(new Option(t.label, t.id));
+  sel.value = state.target;
+  sel.addEventListener('change', () => { state.target = sel.value; update(); });
+  for (const f of pg.finishes()) $('finish').add(new Option(`${f.name} (${f.level})`, f.name));
+  $('finish').addEventListener('change', enterFinish);
+  $('gu-set').addEventListener('click', enterGlossUnits);
+  $('gu-second').addEventListener('change', () => { $('gu-second-value').hidden = $('gu-second').value === 'none'; });
   window.addEventListener('hashchange', () => { readHash(); applyModeUI(); update(); });
   applyModeUI();
   try {

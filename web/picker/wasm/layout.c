@@ -9,7 +9,9 @@
 #include <pgloss/pgloss.h>
 
 /* what: 0 sizeof(pgloss_physical), 1 offsetof rho_s, 2 alpha_x, 3 alpha_y, 4 normalization,
- * 5 sizeof(pgloss_perceptual), 6 sizeof(pgloss_status); anything else: 0. */
+ * 5 sizeof(pgloss_perceptual), 6 sizeof(pgloss_status), 7 sizeof(pgloss_bridge_params),
+ * 8 offsetof roughness, 9 ior, 10 specular, 11 sizeof(pgloss_glossmeter_readings),
+ * 12 sizeof(pgloss_finish), 13 offsetof level, 14 gloss_60_min, 15 source; anything else: 0. */
 size_t pgloss_wasm_layout(int what);
 
 size_t pgloss_wasm_layout(int what) {
@@ -21,6 +23,15 @@ size_t pgloss_wasm_layout(int what) {
     case 4: return offsetof(pgloss_physical, normalization);
     case 5: return sizeof(pgloss_perceptual);
     case 6: return sizeof(pgloss_status);
+    case 7: return sizeof(pgloss_bridge_params);
+    case 8: return offsetof(pgloss_bridge_params, roughness);
+    case 9: return offsetof(pgloss_bridge_params, ior);
+    case 10: return offsetof(pgloss_bridge_params, specular);
+    case 11: return sizeof(pgloss_glossmeter_readings);
+    case 12: return sizeof(pgloss_finish);
+    case 13: return offsetof(pgloss_finish, level);
+    case 14: return offsetof(pgloss_finish, gloss_60_min);
+    case 15: return offsetof(pgloss_finish, source);
     default: return 0;
     }
 }
