@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-FileCopyrightText: 2026 The pgloss authors
 # SPDX-License-Identifier: Apache-2.0
-# The Python package's distributions (issue 18), called by scripts/test-python.sh after the
+# The Python package's distributions, called by scripts/test-python.sh after the
 # venv .venv-py exists:
 #   1. the wheel (`python -m build --wheel`, the venv's pinned scikit-build-core and pybind11,
 #      CMake's build folder build-py/ kept: only what changed recompiles);

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-FileCopyrightText: 2026 The pgloss authors
 # SPDX-License-Identifier: Apache-2.0
-# pgloss as a C/C++ package (issue 13): installs the static and the shared library into
+# pgloss as a C/C++ package: installs the static and the shared library into
 # fresh prefixes (build-package/prefix-*), then builds and runs a C and a C++ consumer
 # (tests/package/) through find_package(pgloss MAJOR.MINOR CONFIG REQUIRED), pkg-config,
 # add_subdirectory and FetchContent (from a tarball of this tree: no network); checks that a

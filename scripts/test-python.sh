@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # SPDX-FileCopyrightText: 2026 The pgloss authors
 # SPDX-License-Identifier: Apache-2.0
-# The Python package's tests (bindings/python, issue 3): set up, `pip install .` at the
+# The Python package's tests (bindings/python): set up, `pip install .` at the
 # repository root into the venv .venv-py, then pytest tests/python — the shared vectors,
 # the binding's behaviour, the figures command, a smoke run of the benchmark and pgloss.psychophysics
 # (scipy: its runtime dependency; scikit-learn: the peer of its tests only; colour-science: the peer of the working-colour-space tests only).
-# Also (issue 18): the C tool `pgloss` built from tools/ (build-py/cli), which tests/python/test_cli.py
+# Also: the C tool `pgloss` built from tools/ (build-py/cli), which tests/python/test_cli.py
 # runs beside `python -m pgloss` (the wheel's copy of it); and the distributions (scripts/check-python-dist.sh:
 # the wheel, `auditwheel show` (manylinux), the sdist and a wheel built from it), whose metadata
 # tests/python/test_package_metadata.py reads.

@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The pgloss authors
 // SPDX-License-Identifier: Apache-2.0
-// One rule at the model's boundaries, the same in every function (issue 17): what one function
+// One rule at the model's boundaries, the same in every function: what one function
 // returns with OK, every other function accepts. Each case here broke that before.
 #include <gtest/gtest.h>
 
@@ -91,7 +91,7 @@ TEST(Boundaries, TinyAlphaGivesADoiThatEq8Accepts) {
 
 // Grazing directions (cosines 1e-20, 1e-25): the float paths squared the half vector before
 // scaling it, so it underflowed; FAST on AVX2 met Inf − Inf and returned FLT_MAX. Every tier and
-// ISA must agree with the double reference there (issue 17, item 10). Narrowed: below ~1e-28
+// ISA must agree with the double reference there. Narrowed: below ~1e-28
 // h/hzc squared is subnormal and the pdf's specular part (< 1e-32 there) loses digits.
 TEST(Boundaries, GrazingMirrorDirectionsAgreeWithTheReference) {
     for (pgloss_normalization norm : {PGLOSS_NORM_WARD, PGLOSS_NORM_WARD_DUR, PGLOSS_NORM_BOUNDED}) {
@@ -126,7 +126,7 @@ TEST(Boundaries, GrazingMirrorDirectionsAgreeWithTheReference) {
 // Grazing, not mirrored: both cosines down to the subnormals (1e-20 … 1e-40), the half vector
 // tilted by tanδ = 0.05 · k from the normal (k = 1, 4, 8: e = exp(−0.25 k²) with α = 0.1). The
 // float paths floored the exponent's h.z at 1.1e-19, so below it tan²δ came out too small and
-// f too large (issue 31: 3.98e10 against the reference's 0.55). Every path, tier and ISA must
+// f too large (3.98e10 against the reference's 0.55). Every path, tier and ISA must
 // agree with the double reference: within 1e-5 of f and of the pdf, the float inputs being the
 // same, but for the pdf's specular part (hhs/hzc, below 1e-30 here), which float computes from
 // subnormals (docs/kernels.md): 1e-33 absolute.
@@ -174,7 +174,7 @@ TEST(Boundaries, GrazingTiltedDirectionsAgreeWithTheReference) {
 
 // brdf.h states f(wo, wi) = f(wi, wo) without condition. The audit found it off by 6e-6 for an
 // anisotropic lobe at cos 1e-8; every path must be exactly reciprocal, grazing and non-unit
-// directions included (issue 17, item 12).
+// directions included.
 TEST(Boundaries, ReciprocityIsExactForAnisotropicLobesAtGrazingAngles) {
     std::mt19937 rng(12);
     std::uniform_real_distribution<float> U(0.0f, 1.0f);

@@ -28,7 +28,7 @@ using namespace pgt;
 namespace {
 
 constexpr double kFamilyAlpha = 0.01;
-constexpr std::size_t kMinSamples = 1000000;  // the minimum, normal build
+constexpr std::size_t kMinSamples = 1000000;  // the required minimum, normal build
 
 // 10^6 in the Release build (asserted); a quarter of that under the sanitizers.
 std::size_t sample_count() { return scaled(kMinSamples, 20000); }
@@ -147,7 +147,7 @@ std::vector<Config> make_configs() {
         c.push_back({name, p, mask, co, phi, batch});
     };
     int k = 0;
-    // Specular only, isotropic: α from 1e-3 to 1, wo from normal to cos θo = 0.05 (the issue's),
+    // Specular only, isotropic: α from 1e-3 to 1, wo from normal to cos θo = 0.05,
     // the three normalisations in turn.
     for (double a : {0.001, 0.01, 0.05, 0.2, 0.5, 1.0})
         for (double co : {1.0, 0.5, 0.05}) {

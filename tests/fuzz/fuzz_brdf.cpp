@@ -115,8 +115,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, size_t size) {
     const double x = exponent(o.v, i.v, m.alpha_x, m.alpha_y);
     const bool regular = regular_material && o.unit && i.unit && o.v.z >= 1e-3f && i.v.z >= 1e-3f && x <= 80;
     // Below cosines of 1e-19 the float exponent squares hx, hy before dividing by hz², so a
-    // half vector within ~1e-19 of the surface in every component loses its exponent (issue 17,
-    // item 10's remaining corner): there only the contracts above are asserted.
+    // half vector within ~1e-19 of the surface in every component loses its exponent: there
+    // only the contracts above are asserted.
     const bool comparable = o.unit && i.unit && o.v.z >= 1e-19f && i.v.z >= 1e-19f;
     std::vector<float> float_ref;  // FLOAT tier of the first ISA, for bit-identity
     for (pgloss_precision tier : {PGLOSS_PRECISION_FLOAT, PGLOSS_PRECISION_FAST, PGLOSS_PRECISION_REFERENCE}) {

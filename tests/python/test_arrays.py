@@ -1,6 +1,6 @@
 # SPDX-FileCopyrightText: 2026 The pgloss authors
 # SPDX-License-Identifier: Apache-2.0
-"""Whole textures (issue 18): arrays of paints, the batched conversions, status arrays,
+"""Whole textures: arrays of paints, the batched conversions, status arrays,
 per-element materials in eval/pdf/eval_pdf/sample, the float64 batch path, ``out=``.
 
 Expected values come from the shared vectors (tests/vectors, an independent mpmath generator)

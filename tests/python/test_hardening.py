@@ -1,6 +1,6 @@
 # SPDX-FileCopyrightText: 2026 The pgloss authors
 # SPDX-License-Identifier: Apache-2.0
-"""Bad input and signals at the Python boundary (issue 17): each case here returned a silent
+"""Bad input and signals at the Python boundary: each case here returned a silent
 inf, dropped a mask without a word, or ignored Ctrl-C before."""
 
 from __future__ import annotations

@@ -1,6 +1,6 @@
 # SPDX-FileCopyrightText: 2026 The pgloss authors
 # SPDX-License-Identifier: Apache-2.0
-"""The built wheel's metadata (issue 18): licence, project URLs, classifiers and a README for
+"""The built wheel's metadata: licence, project URLs, classifiers and a README for
 Python users, read from the METADATA of the wheel that scripts/check-python-dist.sh built
 (PGLOSS_WHEEL) and from the installed distribution (importlib.metadata)."""
 

@@ -2,7 +2,7 @@
 # SPDX-FileCopyrightText: 2026 The pgloss authors
 # SPDX-License-Identifier: Apache-2.0
 # The pgloss-tracer command line under bad arguments, signals and a thread limit: each case
-# states the exit status and the message a user must see (issue 17). Usage: cli_test.sh TRACER SCENE WORKDIR
+# states the exit status and the message a user must see. Usage: cli_test.sh TRACER SCENE WORKDIR
 set -u
 tracer=$1 scene=$2 work=$3
 rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1

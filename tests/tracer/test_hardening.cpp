@@ -3,7 +3,7 @@
 // Bad input and faults in the tracer: every number is checked where it is parsed, a sample that
 // is not finite fails the render instead of being dropped, a cancelled render keeps what it
 // has, outputs are written whole or not at all. Each case here crashed, hung, returned an
-// empty reason or rendered a silent black image before (issue 17's audit).
+// empty reason or rendered a silent black image before.
 #include "image.hpp"
 #include "render.hpp"
 #include "scene.hpp"

@@ -9,7 +9,7 @@ Not a test: it prints a table. The C figure is the batch on the same (n, 3) arra
 the GIL released; no argument checks, no allocation: the outputs are allocated once), timed with
 ``time.perf_counter``. The Python figure is the whole public call ``pgloss.eval(material, wo,
 wi)`` on ``(n, 3)`` float32 arrays: argument checks, broadcasting, the output's allocation and
-the same batch. The target of issue 3 is Python ≤ 1.5 × C. The float64 call (the double batch)
+the same batch. The target is Python ≤ 1.5 × C. The float64 call (the double batch)
 is shown for information. Both run on one thread (``pgloss.set_num_threads(1)``).
 
     python bindings/python/bench/bench_eval.py [--n 1000000] [--repeat 15]

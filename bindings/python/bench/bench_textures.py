@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 # SPDX-FileCopyrightText: 2026 The pgloss authors
 # SPDX-License-Identifier: Apache-2.0
-"""Benchmark (issue 18): whole textures through the Python package, against numpy's bare
+"""Benchmark: whole textures through the Python package, against numpy's bare
 formulas, all in one run. Not a test: it prints a Markdown table.
 
 Rows (median of --repeat runs after a warm-up, time.perf_counter around the public call):
