@@ -87,6 +87,15 @@ PGLOSS_INLINE_FN pgloss_inl_consts pgloss_inl_consts_of(const pgloss_material *m
                                       (active & PGLOSS_LOBE_SPECULAR) != 0);
 }
 
+/* wo and wi as the lobe takes them (lobe.h's unit); false for a zero or non-finite one. The
+ * common case, both near unit, is one test and one branch. */
+PGLOSS_INLINE_FN int pgloss_inl_units(pgloss_vec3 *wo, pgloss_vec3 *wi)
+{
+    if (pgloss_inl_near_unit(wo->x, wo->y, wo->z) & pgloss_inl_near_unit(wi->x, wi->y, wi->z))
+        return 1;
+    return pgloss_inl_unit(&wo->x, &wo->y, &wo->z) & pgloss_inl_unit(&wi->x, &wi->y, &wi->z);
+}
+
 /* ---- the per-shading-point API (contracts: pgloss/brdf.h) --------------------------------- */
 
 PGLOSS_INLINE_FN pgloss_status pgloss_eval_pdf_inline(const pgloss_material *m, pgloss_vec3 wo,
@@ -97,8 +106,7 @@ PGLOSS_INLINE_FN pgloss_status pgloss_eval_pdf_inline(const pgloss_material *m, 
     if (pdf) *pdf = 0.0f;
     if (!m || (!f && !pdf))
         return PGLOSS_ERR_NULL;
-    const int ok_o = pgloss_inl_unit(&wo.x, &wo.y, &wo.z), ok_i = pgloss_inl_unit(&wi.x, &wi.y, &wi.z);
-    if (!(ok_o & ok_i))
+    if (!pgloss_inl_units(&wo, &wi))
         return PGLOSS_ERR_DIRECTION;
     const unsigned active = lobes & m->lobes & PGLOSS_LOBE_ALL;
     const pgloss_inl_consts k = pgloss_inl_consts_of(m, active);

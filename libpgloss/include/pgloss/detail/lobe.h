@@ -150,12 +150,11 @@ PGLOSS_KFN pv_m PGLOSS_K(normalize)(pv_f *x, pv_f *y, pv_f *z)
 }
 
 /* Whether x² + y² + z² is within 2^-20 of 1, as for every unit vector rounded to float (false
- * for NaN and Inf). Such directions enter the lobe as they are. */
+ * for NaN and Inf). Such directions enter the lobe as they are. (l2 − 1 is exact near 1.) */
 PGLOSS_KFN pv_m PGLOSS_K(near_unit)(pv_f x, pv_f y, pv_f z)
 {
     const pv_f l2 = x * x + y * y + z * z;
-    return pv_and(pv_ge(l2, pv_f1(1.0f - 9.5367431640625e-07f)),
-                  pv_le(l2, pv_f1(1.0f + 9.5367431640625e-07f)));
+    return pv_le(pv_abs(l2 - 1.0f), pv_f1(9.5367431640625e-07f));
 }
 
 /* A direction as the lobe takes it: as it is if near-unit, else normalised; false (zeros) for
