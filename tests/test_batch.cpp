@@ -479,7 +479,7 @@ struct Call {
 
 template <class T>
 void strided_layouts_match_columns(pgloss_isa isa) {
-    const size_t n = 300;  // more than one chunk
+    const size_t n = 301;  // more than one chunk, and an odd last one (the rows copies' tails)
     const Tex t(n, true, 17);
     pgloss_material m;
     const pgloss_physical ph = t.phys(3, PGLOSS_NORM_WARD_DUR);

@@ -7,6 +7,7 @@
 #include "batch_internal.h"
 #include "internal.h"
 #include "lobe_d.h"
+#include "rows3.h"
 #include "strided.h"
 
 #define B PGLOSS__BLOCK
@@ -123,11 +124,12 @@ typedef struct chunk {
     void *y[7];                       /* f or wi (3), pdf, weight (3) */
 } chunk;
 
-/* (n, 3) float32 rows: x y z of an element adjacent, one element every 12 bytes. */
-static int rows3_f(const void *const *p, ptrdiff_t stride, size_t size)
+/* (n, 3) rows: x y z of an element adjacent, one element every 3 size bytes. */
+static int rows3(const void *const *p, ptrdiff_t stride, size_t size)
 {
     const char *x = (const char *)p[0];
-    return size == 4 && stride == 12 && (const char *)p[1] == x + 4 && (const char *)p[2] == x + 8;
+    return stride == 3 * (ptrdiff_t)size && (const char *)p[1] == x + size &&
+           (const char *)p[2] == x + 2 * size;
 }
 
 /* Asks for the next chunk's rows [from, min(from + B, n)) (to write: rw 1) while the loops
@@ -137,10 +139,10 @@ static void prefetch_rows(const void *const *ptr, ptrdiff_t stride, size_t size,
                           size_t n, int rw)
 {
 #if defined(__GNUC__) || defined(__clang__)
-    if (from >= n || !rows3_f(ptr, stride, size))
+    if (from >= n || !rows3(ptr, stride, size))
         return;
-    const char *p = (const char *)ptr[0] + 12 * from;
-    const size_t bytes = 12 * (n - from < B ? n - from : B);
+    const char *p = (const char *)ptr[0] + 3 * size * from;
+    const size_t bytes = 3 * size * (n - from < B ? n - from : B);
     for (size_t k = 0; k < bytes; k += 64) {
         if (rw)
             __builtin_prefetch(p + k, 1);
@@ -155,9 +157,12 @@ static void prefetch_rows(const void *const *ptr, ptrdiff_t stride, size_t size,
 static void gather3(const pgloss__loops *L, pgloss_strided3 s, size_t size, size_t base, size_t m,
                     double (*buf)[B], const void **col)
 {
-    if (rows3_f(s.ptr, s.stride, size)) {
-        L->rows_in((const char *)s.ptr[0] + 12 * base, m, (float *)buf[0], (float *)buf[1],
-                   (float *)buf[2]);
+    if (rows3(s.ptr, s.stride, size)) {
+        if (size == 4)
+            L->rows_in((const char *)s.ptr[0] + 12 * base, m, (float *)buf[0], (float *)buf[1],
+                       (float *)buf[2]);
+        else
+            pgloss__rows3d_to_columns((const char *)s.ptr[0] + 24 * base, m, buf[0], buf[1], buf[2]);
         for (int c = 0; c < 3; ++c)
             col[c] = buf[c];
         return;
@@ -186,8 +191,11 @@ static void out3(pgloss_strided3_out s, size_t size, size_t base, double (*buf)[
 static void scatter3(const pgloss__loops *L, pgloss_strided3_out s, size_t size, size_t base,
                      size_t m, void *const *col)
 {
-    if (rows3_f((const void *const *)s.ptr, s.stride, size)) {
-        L->rows_out(col[0], col[1], col[2], m, (char *)s.ptr[0] + 12 * base);
+    if (rows3((const void *const *)s.ptr, s.stride, size)) {
+        if (size == 4)
+            L->rows_out(col[0], col[1], col[2], m, (char *)s.ptr[0] + 12 * base);
+        else
+            pgloss__columns_to_rows3d(col[0], col[1], col[2], m, (char *)s.ptr[0] + 24 * base);
         return;
     }
     for (int c = 0; c < 3; ++c)

@@ -1,11 +1,11 @@
 // SPDX-FileCopyrightText: 2026 The pgloss authors
 // SPDX-License-Identifier: Apache-2.0
-/* (n, 3) float32 rows (x y z x y z …, any alignment) to three contiguous columns and back,
- * for batch_isa.c: numpy's channel-last arrays reach the batches as such rows, and a strided
- * copy of one float at a time costs as much as the lobe. AVX2 (also in the AVX-512 file)
- * de-interleaves 8 rows from 3 loads by blends and one lane permute per column, SSE2 4 rows by
- * shuffles; other targets copy element by element. A pure copy: no value changes. Not
- * installed. */
+/* (n, 3) float32 and float64 rows (x y z x y z …, any alignment) to three contiguous columns
+ * and back, for batch_isa.c and batch.c: numpy's channel-last arrays reach the batches as such
+ * rows, and a strided copy of one value at a time costs as much as the lobe. Float: AVX2 (also
+ * in the AVX-512 file) de-interleaves 8 rows from 3 loads by blends and one lane permute per
+ * column, SSE2 4 rows by shuffles. Double: SSE2, 2 rows from 3 loads by shuffles. Other
+ * targets copy element by element. A pure copy: no value changes. Not installed. */
 #ifndef PGLOSS_ROWS3_H
 #define PGLOSS_ROWS3_H
 
@@ -107,6 +107,51 @@ static inline void pgloss__columns_to_rows3(const float *x, const float *y, cons
         memcpy(p, x + j, 4);
         memcpy(p + 4, y + j, 4);
         memcpy(p + 8, z + j, 4);
+    }
+}
+
+/* Float64 rows [0, n) at `rows` (byte pointer) into x, y, z: rows j, j + 1 are the loads
+ * a = (x0 y0), b = (z0 x1), c = (y1 z1). */
+static inline void pgloss__rows3d_to_columns(const void *rows, size_t n, double *x, double *y,
+                                             double *z)
+{
+    const char *p = (const char *)rows;
+    size_t j = 0;
+#if defined(__SSE2__)
+    for (; j + 2 <= n; j += 2, p += 48) {
+        const __m128d a = _mm_loadu_pd((const double *)p);
+        const __m128d b = _mm_loadu_pd((const double *)(p + 16));
+        const __m128d c = _mm_loadu_pd((const double *)(p + 32));
+        _mm_storeu_pd(x + j, _mm_shuffle_pd(a, b, 2)); /* a0 b1 */
+        _mm_storeu_pd(y + j, _mm_shuffle_pd(a, c, 1)); /* a1 c0 */
+        _mm_storeu_pd(z + j, _mm_shuffle_pd(b, c, 2)); /* b0 c1 */
+    }
+#endif
+    for (; j < n; ++j, p += 24) {
+        memcpy(x + j, p, 8);
+        memcpy(y + j, p + 8, 8);
+        memcpy(z + j, p + 16, 8);
+    }
+}
+
+/* Columns x, y, z [0, n) into float64 rows [0, n) at `rows` (byte pointer). */
+static inline void pgloss__columns_to_rows3d(const double *x, const double *y, const double *z,
+                                             size_t n, void *rows)
+{
+    char *p = (char *)rows;
+    size_t j = 0;
+#if defined(__SSE2__)
+    for (; j + 2 <= n; j += 2, p += 48) {
+        const __m128d vx = _mm_loadu_pd(x + j), vy = _mm_loadu_pd(y + j), vz = _mm_loadu_pd(z + j);
+        _mm_storeu_pd((double *)p, _mm_unpacklo_pd(vx, vy));              /* x0 y0 */
+        _mm_storeu_pd((double *)(p + 16), _mm_shuffle_pd(vz, vx, 2));     /* z0 x1 */
+        _mm_storeu_pd((double *)(p + 32), _mm_unpackhi_pd(vy, vz));       /* y1 z1 */
+    }
+#endif
+    for (; j < n; ++j, p += 24) {
+        memcpy(p, x + j, 8);
+        memcpy(p + 8, y + j, 8);
+        memcpy(p + 16, z + j, 8);
     }
 }
 
