@@ -214,18 +214,20 @@ pgloss_status pgloss_bridge_shading_eval(const pgloss_bridge_shading *t, const d
     if (diffuse) *diffuse = 0;
     if (!t || !wo || !wi || !specular || !diffuse)
         return PGLOSS_ERR_NULL;
-    const double mo = wo[2], mi = wi[2];
-    if (!(mo > 0 && mi > 0))
+    if (!(wo[2] > 0 && wi[2] > 0))
         return PGLOSS_OK;
+    /* Cosines below 1e-12 are taken as 1e-12: the lobe's 1/(4 μi μo) and tan²θh would
+     * overflow or reach 0/0 at grazing, where a unit vector's error is already larger. */
+    const double mo = fmax(wo[2], 1e-12), mi = fmax(wi[2], 1e-12);
     *diffuse = t->diffuse_both ? t->diffuse_scale * lerp_mu(t->diffuse_factor, mi) * lerp_mu(t->diffuse_factor, mo)
                                : t->diffuse_scale * lerp_mu(t->diffuse_factor, mo);
     if (t->alpha < PGLOSS_BRIDGE_ALPHA_MIRROR)
         return PGLOSS_OK;
-    const double h[3] = {wo[0] + wi[0], wo[1] + wi[1], wo[2] + wi[2]};
+    const double h[3] = {wo[0] + wi[0], wo[1] + wi[1], mo + mi};
     const double hl = sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
     /* tan²θh from the components: 1 − cos² would cancel near the mirror direction */
     const double t2 = (h[0] * h[0] + h[1] * h[1]) / (h[2] * h[2]);
-    const double oh = (wo[0] * h[0] + wo[1] * h[1] + wo[2] * h[2]) / hl;
+    const double oh = (wo[0] * h[0] + wo[1] * h[1] + mo * h[2]) / hl;
     *specular = pgloss__mf_DG_d(t->model, mi, mo, t2, t->alpha) * pgloss__fresnel_any_d(oh, t->eta) / (4 * mi * mo) *
                 lerp_mu(t->specular_factor, mo);
     return PGLOSS_OK;
