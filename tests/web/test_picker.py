@@ -1044,3 +1044,67 @@ def test_target_sampling_is_consistent(browser: Browser, base_url: str) -> None:
             assert abs(est - ref) <= 4 * se + 3e-3 * ref, lines[-1]
             assert 0.8 <= pdf_mass <= 1.005, lines[-1]
     print(f"\n  target sampling vs quadrature ({NS * SPP} samples per direction), worst |z| {worst_z:.2f}:\n" + "\n".join(lines))
+
+
+# ---- the target beside the paint, against Mitsuba 3 --------------------------------------------
+
+MITSUBA_SPP = 1024
+TARGET_FRAMES = 128  # × PAGE_SPP: 256 samples per pixel on both tiles (seconds on SwiftShader)
+
+
+def test_target_view_matches_mitsuba(browser: Browser, base_url: str, tmp_path: Path) -> None:
+    """The paint view with a Mitsuba 3 roughplastic target: the right-hand tile (the target's BRDF
+    in the page's tracer) against Mitsuba 3 itself rendering the same scene with its own
+    roughplastic at the parameters the page shows (examples/bridge/harness_mitsuba.py, the tracer's
+    scene in Mitsuba). Mean luminance and channels per region, as test_render_matches_tracer. The
+    σ assumes Mitsuba's per-sample variance is the page's (both: light sampling + BSDF sampling,
+    MIS); 0.5% is added for what the two models share only to their quadratures (t(μ), R_int agree
+    with Mitsuba's to 1e-3, test_bridge_shading) and Mitsuba's float32."""
+    q = RENDER_PAINT
+    hash_ = "#mode=perceptual&" + "&".join(f"{k}={v}" for k, v in q.items()) + "&view=single&target=roughplastic_ggx"
+    page = open_page(browser, f"{base_url}/index.html?autorun=0&size={W}x{H}{hash_}")
+    assert page.inner_text("#target-status") == "PGLOSS_OK"
+    assert "Right: Mitsuba 3 roughplastic (GGX)" in page.inner_text("#view-what")
+    params = page.evaluate("window.picker.model.target.params")
+    bsdf = {"type": "roughplastic", "distribution": "ggx", "alpha": params["roughness"], "int_ior": params["ior"],
+            "diffuse_reflectance": params["base_color"], "nonlinear": False}
+    t0 = time.time()
+    subprocess.run([EXPORT_PY, str(ROOT / "examples/bridge/harness_mitsuba.py"), json.dumps(bsdf), "--out",
+                    str(tmp_path / "mi.exr"), "--spp", str(MITSUBA_SPP), "--size", f"{W}x{H}"], check=True,
+                   capture_output=True)
+    t_mi = time.time() - t0
+    ref = read_exr(tmp_path / "mi.exr")
+    t0 = time.time()
+    res = page.evaluate(f"""() => {{
+        const t = window.picker.tracer;
+        t.reset();
+        for (let i = 0; i < {TARGET_FRAMES}; i++) t.step({PAGE_SPP});
+        const s = t.readSums();
+        return {{w: s.width, h: s.height, n: s.count, sums: Array.from(s.sums)}};
+    }}""")
+    t_page = time.time() - t0
+    assert (res["w"], res["h"]) == (2 * W, H)
+    n = res["n"]
+    sums = np.array(res["sums"], dtype=np.float64).reshape(H, 2 * W, 4)[:, W:]  # the target's tile
+    mean = sums[..., :3] / n
+    lum_w = np.array([0.2126, 0.7152, 0.0722])
+    Y_page, Y_ref = mean @ lum_w, ref @ lum_w
+    var_pix = np.maximum(sums[..., 3] / n - Y_page ** 2, 0) / (n - 1)
+    reg = regions(SCENE.read_text())
+    lines = []
+    sphere = reg == 4
+    bright = sphere & (Y_ref >= np.quantile(Y_ref[sphere], 0.9))  # the highlight: the sphere's top decile
+    for name, m in (("sphere", sphere), ("highlight", bright), ("walls", reg == 1), ("floor", reg == 2)):
+        k = int(m.sum())
+        mp, mr = Y_page[m].mean(), Y_ref[m].mean()
+        se = math.sqrt(var_pix[m].sum()) / k * math.sqrt(1 + n / MITSUBA_SPP)
+        tol = 4 * se + 5e-3 * mr
+        lines.append(f"  {name:9s} {k:5d} px  page {mp:.5f}  Mitsuba {mr:.5f}  diff {(mp - mr) / mr:+.3%}  σ {se / mr:.3%}")
+        for ch in range(3):
+            cp, cr = mean[..., ch][m].mean(), ref[..., ch][m].mean()
+            lines.append(f"            channel {'RGB'[ch]}: page {cp:.5f} Mitsuba {cr:.5f} diff {(cp - cr) / cr:+.3%}")
+            assert abs(cp - cr) <= 5 * se * max(cr / mr, 0.2) + 5e-3 * cr, lines[-1]
+        assert abs(mp - mr) <= tol, lines
+    print(f"\n  target view vs Mitsuba 3 roughplastic (GGX), {W}x{H}: page {n} spp ({t_page:.1f} s, both tiles), "
+          f"Mitsuba {MITSUBA_SPP} spp ({t_mi:.1f} s); params {params}:\n" + "\n".join(lines))
+    assert not page.errors, page.errors  # type: ignore[attr-defined]
