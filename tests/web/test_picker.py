@@ -818,8 +818,16 @@ def test_screenshot(browser: Browser, base_url: str) -> None:
     page.select_option("#target", "gltf_core")
     page.check("input[name=export][value=gltf]")
     page.locator("#controls").screenshot(path=str(OUT / "picker-target.png"))
+    # A reachable target beside the paint (Blender Principled), rendered to the end (maxspp) first:
+    # a frame of the two tiles at many samples per frame outlasts the screenshot's wait.
+    page.close()
+    page = open_page(browser, f"{base_url}/index.html?size=128x96&maxspp=32"
+                     "#mode=perceptual&L=35&a=45&b=25&c=0.06&d=0.95&view=single&target=principled")
+    page.wait_for_function("window.picker.tracer.count >= 32 && window.picker.tracer.tilesX === 2", timeout=240_000)
+    page.locator("#view-panel").screenshot(path=str(OUT / "picker-target-view.png"))
     assert (OUT / "picker.png").stat().st_size > 10_000
-    print(f"\n(e) screenshots: {OUT / 'picker.png'}, {OUT / 'picker-match.png'}, {OUT / 'picker-target.png'}")
+    print(f"\n(e) screenshots: {OUT / 'picker.png'}, {OUT / 'picker-match.png'}, {OUT / 'picker-target.png'}, "
+          f"{OUT / 'picker-target-view.png'}")
 
 
 # ---- defects found by a new user (each test failed before its fix) ------------------------
