@@ -733,6 +733,21 @@ def read_exr(path: Path) -> np.ndarray:
     return img
 
 
+def render_sums(page: Page, frames: int) -> Tuple[np.ndarray, int, float]:
+    """The page's tracer restarted and run for `frames` passes of PAGE_SPP: its running sums
+    (rows, columns, RGB + Σ Y²), the samples per pixel and the seconds it took."""
+    t0 = time.time()
+    res = page.evaluate(f"""() => {{
+        const t = window.picker.tracer;
+        t.reset();
+        for (let i = 0; i < {frames}; i++) t.step({PAGE_SPP});
+        const s = t.readSums();
+        return {{w: s.width, h: s.height, n: s.count, sums: Array.from(s.sums)}};
+    }}""")
+    sums = np.array(res["sums"], dtype=np.float64).reshape(res["h"], res["w"], 4)
+    return sums, int(res["n"]), time.time() - t0
+
+
 def test_render_matches_tracer(browser: Browser, base_url: str, tmp_path: Path) -> None:
     tracer = os.environ.get("PGLOSS_TRACER", str(ROOT / "build-tracer-test/examples/tracer/pgloss-tracer"))
     if not Path(tracer).is_file():
@@ -752,18 +767,8 @@ def test_render_matches_tracer(browser: Browser, base_url: str, tmp_path: Path) 
     hash_ = "#mode=perceptual&" + "&".join(f"{k}={v}" for k, v in q.items()) + "&view=single"
     page = open_page(browser, f"{base_url}/index.html?autorun=0&size={W}x{H}{hash_}")
     assert page.inner_text("#out-status") == "PGLOSS_OK"
-    t0 = time.time()
-    res = page.evaluate(f"""() => {{
-        const t = window.picker.tracer;
-        t.reset();
-        for (let i = 0; i < {PAGE_FRAMES}; i++) t.step({PAGE_SPP});
-        const s = t.readSums();
-        return {{w: s.width, h: s.height, n: s.count, sums: Array.from(s.sums)}};
-    }}""")
-    t_page = time.time() - t0
-    assert (res["w"], res["h"], res["n"]) == (W, H, PAGE_FRAMES * PAGE_SPP)
-    sums = np.array(res["sums"], dtype=np.float64).reshape(H, W, 4)
-    n = res["n"]
+    sums, n, t_page = render_sums(page, PAGE_FRAMES)
+    assert sums.shape == (H, W, 4) and n == PAGE_FRAMES * PAGE_SPP
     mean = sums[..., :3] / n
     lum_w = np.array([0.2126, 0.7152, 0.0722])
     Y_page = mean @ lum_w
@@ -1082,18 +1087,9 @@ def test_target_view_matches_mitsuba(browser: Browser, base_url: str, tmp_path: 
                    capture_output=True)
     t_mi = time.time() - t0
     ref = read_exr(tmp_path / "mi.exr")
-    t0 = time.time()
-    res = page.evaluate(f"""() => {{
-        const t = window.picker.tracer;
-        t.reset();
-        for (let i = 0; i < {TARGET_FRAMES}; i++) t.step({PAGE_SPP});
-        const s = t.readSums();
-        return {{w: s.width, h: s.height, n: s.count, sums: Array.from(s.sums)}};
-    }}""")
-    t_page = time.time() - t0
-    assert (res["w"], res["h"]) == (2 * W, H)
-    n = res["n"]
-    sums = np.array(res["sums"], dtype=np.float64).reshape(H, 2 * W, 4)[:, W:]  # the target's tile
+    sums, n, t_page = render_sums(page, TARGET_FRAMES)
+    assert sums.shape == (H, 2 * W, 4)
+    sums = sums[:, W:]  # the target's tile
     mean = sums[..., :3] / n
     lum_w = np.array([0.2126, 0.7152, 0.0722])
     Y_page, Y_ref = mean @ lum_w, ref @ lum_w
