@@ -455,7 +455,7 @@ GLSL_RUN = """async ({ body, jobs }) => {
     const prog = gl.createProgram();
     gl.attachShader(prog, sh(gl.VERTEX_SHADER, '#version 300 es\\nvoid main() { vec2 p = vec2(gl_VertexID & 1, gl_VertexID >> 1) * 4.0 - 1.0; gl_Position = vec4(p, 0, 1); }'));
     gl.attachShader(prog, sh(gl.FRAGMENT_SHADER, '#version 300 es\\nprecision highp float;\\nprecision highp int;\\n' + src +
-        '\\nuniform highp sampler2D u_in;\\nuniform pgloss_mf_target u_target;\\nout vec4 o;\\n' +
+        '\\nuniform highp sampler2D u_in;\\nuniform pgloss_bridge_shading u_target;\\nout vec4 o;\\n' +
         'void main() { ivec2 px = ivec2(gl_FragCoord.xy); o = vec4(0.0);\\n' + body + '\\n}'));
     gl.linkProgram(prog);
     if (!gl.getProgramParameter(prog, gl.LINK_STATUS)) throw new Error(gl.getProgramInfoLog(prog));
@@ -947,7 +947,7 @@ def test_readme_states_the_wasm_size() -> None:
     assert abs(size - int(m.group(1))) <= 0.1 * size, (m.group(1), size)
 
 
-# ---- the targets' whole BRDF in GLSL (microfacet.glsl's pgloss_mf_target_*) -----------------
+# ---- the targets' whole BRDF in GLSL (microfacet.glsl's pgloss_bridge_shading_*) -----------------
 
 # One parameter set per model (bridge.h's conventions): MaterialX, Principled, roughplastic GGX
 # and Beckmann, a coloured base, the roughness of a glossy paint and of a satin one.
@@ -963,7 +963,7 @@ SHADINGS = """(cases) => cases.map(([t, r, ior, spec]) => {
 
 
 def test_target_brdf_glsl_matches_the_core(browser: Browser, base_url: str) -> None:
-    """pgloss_mf_target_eval (float32, WebGL2 on SwiftShader) against the C core's
+    """GLSL pgloss_bridge_shading_eval (float32, WebGL2 on SwiftShader, f in RGB) against the C core's
     pgloss_bridge_shading_eval in double (WebAssembly) at the same float32 directions: random
     pairs and pairs near the mirror direction, 8 targets. Measured 7e-7 relative; bound 2e-4, the
     float32 allowance of the lobe alone (the test above), which the tables' lerp in μ·63 and the
@@ -985,7 +985,7 @@ def test_target_brdf_glsl_matches_the_core(browser: Browser, base_url: str) -> N
         jobs.append({"inputs": [np.c_[wo, np.zeros(n)].ravel().tolist(), np.c_[wi, np.zeros(n)].ravel().tolist()],
                      "n": n, "height": 1, "shading": s})
     body = """vec3 wo = texelFetch(u_in, ivec2(px.x, 0), 0).xyz, wi = texelFetch(u_in, ivec2(px.x, 1), 0).xyz;
-              o = vec4(pgloss_mf_target_eval(u_target, wo, wi), pgloss_mf_target_pdf(u_target, wo, wi));"""
+              o = vec4(pgloss_bridge_shading_eval(u_target, wo, wi), pgloss_bridge_shading_pdf(u_target, wo, wi));"""
     got = page.evaluate(GLSL_RUN, {"body": body, "jobs": jobs})
     want = page.evaluate("""(cases) => cases.map(([s, wo, wi]) => wo.map((o, k) => {
         const r = window.picker.pg.bridgeShadingEval(s, o, wi[k]);
@@ -1003,7 +1003,7 @@ def test_target_brdf_glsl_matches_the_core(browser: Browser, base_url: str) -> N
 
 
 def test_target_sampling_is_consistent(browser: Browser, base_url: str) -> None:
-    """The target's importance sampling (pgloss_mf_target_sample: visible normals / Beckmann D,
+    """The target's importance sampling (pgloss_bridge_shading_sample: visible normals / Beckmann D,
     cosine, their mixture pdf) against a deterministic quadrature of its BRDF on the hemisphere
     (1024 rings in cos θi × 512 azimuths): the sampled estimate of the directional albedo,
     E[f cos θi / pdf] over 2^17 samples, equals ∫ f cos θi dωi within 4 standard errors plus 0.3%
@@ -1024,7 +1024,7 @@ def test_target_sampling_is_consistent(browser: Browser, base_url: str) -> None:
         for (int j = 0; j < {NP}; ++j) {{
             float ph = 2.0 * PGLOSS_MF_PI * (float(j) + 0.5) / {NP}.0;
             vec3 wi = vec3(si * cos(ph), si * sin(ph), ci);
-            o += vec4(pgloss_mf_target_eval(u_target, wo, wi) * ci, pgloss_mf_target_pdf(u_target, wo, wi)) * dw;
+            o += vec4(pgloss_bridge_shading_eval(u_target, wo, wi) * ci, pgloss_bridge_shading_pdf(u_target, wo, wi)) * dw;
         }}""", "jobs": [{"inputs": [row + [0.0] * 4 * (NT - len(mus))], "n": NT, "height": len(mus), "shading": s}
                         for s in shadings]})
     mc = page.evaluate(GLSL_RUN, {"body": f"""
@@ -1037,7 +1037,7 @@ def test_target_sampling_is_consistent(browser: Browser, base_url: str) -> None:
                 u[k] = float(h >> 8) / 16777216.0;
             }}
             vec3 wi; float pdf;
-            vec3 w = pgloss_mf_target_sample(u_target, wo, u, wi, pdf);
+            vec3 w = pgloss_bridge_shading_sample(u_target, wo, u, wi, pdf);
             o += vec4(w.r, w.r * w.r, w.g, 1.0);
         }}""", "jobs": [{"inputs": [row + [0.0] * 4 * (NS - len(mus))], "n": NS, "height": len(mus), "shading": s}
                         for s in shadings]})

@@ -40,7 +40,7 @@ uniform vec3 u_rho_d[6];
 uniform float u_rho_s[6];
 uniform float u_alpha[6];
 uniform int u_kind[6];        // 0: the Ward paint above; 1: the target's BRDF (u_target)
-uniform pgloss_mf_target u_target;
+uniform pgloss_bridge_shading u_target;
 
 layout(location = 0) out vec4 o_sum;
 
@@ -184,8 +184,8 @@ vec3 trace(vec2 pix, pgloss_material paint, bool target, inout uint rng) {
             vec3 f;
             float pdf_brdf = 0.0, w = 1.0;
             if (tgt) {
-                f = pgloss_mf_target_eval(u_target, wo, wil);
-                pdf_brdf = pgloss_mf_target_pdf(u_target, wo, wil);
+                f = pgloss_bridge_shading_eval(u_target, wo, wil);
+                pdf_brdf = pgloss_bridge_shading_pdf(u_target, wo, wil);
                 w = power_heuristic(pdf_light, pdf_brdf);
             } else if (mis) {
                 pgloss_eval_pdf(m, wo, wil, m.lobes, f, pdf_brdf);
@@ -202,7 +202,7 @@ vec3 trace(vec2 pix, pgloss_material paint, bool target, inout uint rng) {
         vec3 wi_s, weight;
         float pdf_s;
         if (tgt) {
-            weight = pgloss_mf_target_sample(u_target, wo, u, wi_s, pdf_s);
+            weight = pgloss_bridge_shading_sample(u_target, wo, u, wi_s, pdf_s);
         } else {
             pgloss_sample_record rec;
             pgloss_sample(m, wo, u, m.lobes, rec);
