@@ -1112,3 +1112,24 @@ def test_target_view_matches_mitsuba(browser: Browser, base_url: str, tmp_path: 
     print(f"\n  target view vs Mitsuba 3 roughplastic (GGX), {W}x{H}: page {n} spp ({t_page:.1f} s, both tiles), "
           f"Mitsuba {MITSUBA_SPP} spp ({t_mi:.1f} s); params {params}:\n" + "\n".join(lines))
     assert not page.errors, page.errors  # type: ignore[attr-defined]
+
+
+def test_target_view_layout_follows_the_bridge(browser: Browser, base_url: str) -> None:
+    """Ward alone: one tile. A reachable target: the paint and the target side by side. Out of the
+    target's reach: the nearest reachable paint's BRDF, said so. Outside the model (no parameters):
+    the Ward paint alone, with the bridge's status named; never a stale target tile."""
+    page = open_page(browser, f"{base_url}/index.html?autorun=0&size=64x48")
+    tiles = "() => [window.picker.tracer.tilesX, document.getElementById('view').width]"
+    assert page.evaluate(tiles) == [1, 64]
+    page.select_option("#target", "openpbr")
+    assert page.evaluate(tiles) == [2, 128]
+    assert page.inner_text("#view-what").startswith("Left: the Ward paint (eq. 2). Right: OpenPBR Surface")
+    for k, v in (("L", 10.0), ("c", 0.2)):  # a black paint of c 0.2: out of glTF core's reach
+        set_control(page, k, v)
+    page.select_option("#target", "gltf_core")
+    assert page.inner_text("#target-status").startswith("PGLOSS_ERR_BRIDGE_")
+    assert page.evaluate(tiles) == [2, 128] and "the nearest reachable paint's" in page.inner_text("#view-what")
+    set_control(page, "L", 90.0)  # c 0.2 is beyond the envelope at L* 90: no parameters
+    assert page.inner_text("#target-status") == "PGLOSS_ERR_ENVELOPE"
+    assert page.evaluate(tiles) == [1, 64] and "alone" in page.inner_text("#view-what")
+    assert not page.errors, page.errors  # type: ignore[attr-defined]
