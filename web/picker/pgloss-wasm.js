@@ -55,6 +55,9 @@ const PERC = { size: 40, fields: ['L', 'a', 'b', 'c', 'd'] };
 const BRIDGE = { size: 48, base_color: 0, roughness: 24, ior: 32, specular: 40 };
 const READINGS = { size: 112 };  // pgloss_glossmeter_readings: 7 × {value, error}
 const FINISH = { size: 48, name: 0, level: 4, gloss_60_min: 8, source: 40 };
+// pgloss_bridge_shading: model, distribution, diffuse_both (int32), then doubles; 64-node tables.
+const SHADING = { size: 1096, model: 0, distribution: 4, diffuse_both: 8, alpha: 16, f0: 24, eta: 32,
+  base_color: 40, diffuse_scale: 64, specular_factor: 72, diffuse_factor: 584, nmu: 64 };
 
 // The bridge's targets (pgloss_bridge_target) and the glossmeter's kinds (pgloss_glossmeter_kind),
 // in enum order, under the names of their C enumerators without the prefix.
@@ -69,10 +72,11 @@ export class Pgloss {
   constructor(instance) {
     this.x = instance.exports;
     const lay = (i) => this.x.pgloss_wasm_layout(i) >>> 0;
-    const got = Array.from({ length: 16 }, (_, i) => lay(i));
+    const got = Array.from({ length: 22 }, (_, i) => lay(i));
     const want = [PHYS.size, PHYS.rho_s, PHYS.alpha_x, PHYS.alpha_y, PHYS.normalization, PERC.size, 4,
       BRIDGE.size, BRIDGE.roughness, BRIDGE.ior, BRIDGE.specular, READINGS.size,
-      FINISH.size, FINISH.level, FINISH.gloss_60_min, FINISH.source];
+      FINISH.size, FINISH.level, FINISH.gloss_60_min, FINISH.source,
+      SHADING.size, SHADING.alpha, SHADING.base_color, SHADING.diffuse_scale, SHADING.specular_factor, SHADING.diffuse_factor];
     if (got.join() !== want.join()) throw new Error(`pgloss.wasm struct layout ${got} is not the loader's ${want}`);
     this.scratchSize = 16384;  // bytes: room for a 1000-point isogloss contour
     this.scratch = this.x.malloc(this.scratchSize);
@@ -299,6 +303,45 @@ export class Pgloss {
     const st = this.x.pgloss_bridge_range(this._target(target), o, o + 8, o + 16, o + 24);
     const f = this.f64;
     return this._result(st, { f0_min: f[o / 8], f0_max: f[o / 8 + 1], alpha_min: f[o / 8 + 2], alpha_max: f[o / 8 + 3] });
+  }
+
+  // --- bridge_model.h ---------------------------------------------------------------------
+  _readShading(ptr) {
+    const f = this.f64, i = this.i32, d = (o) => f[(ptr + o) / 8], tab = (o) => Array.from(f.subarray((ptr + o) / 8, (ptr + o) / 8 + SHADING.nmu));
+    return {
+      model: i[(ptr + SHADING.model) / 4], distribution: i[(ptr + SHADING.distribution) / 4],
+      diffuse_both: i[(ptr + SHADING.diffuse_both) / 4], alpha: d(SHADING.alpha), f0: d(SHADING.f0), eta: d(SHADING.eta),
+      base_color: Array.from(f.subarray((ptr + SHADING.base_color) / 8, (ptr + SHADING.base_color) / 8 + 3)),
+      diffuse_scale: d(SHADING.diffuse_scale), specular_factor: tab(SHADING.specular_factor), diffuse_factor: tab(SHADING.diffuse_factor),
+    };
+  }
+  _writeShading(ptr, s) {
+    const f = this.f64, i = this.i32;
+    i[(ptr + SHADING.model) / 4] = s.model; i[(ptr + SHADING.distribution) / 4] = s.distribution;
+    i[(ptr + SHADING.diffuse_both) / 4] = s.diffuse_both;
+    for (const k of ['alpha', 'f0', 'eta', 'diffuse_scale']) f[(ptr + SHADING[k]) / 8] = s[k];
+    f.set(s.base_color, (ptr + SHADING.base_color) / 8);
+    f.set(s.specular_factor, (ptr + SHADING.specular_factor) / 8);
+    f.set(s.diffuse_factor, (ptr + SHADING.diffuse_factor) / 8);
+  }
+  // A target's BRDF as the renderer draws it: {shading: {model, distribution, diffuse_both, alpha,
+  // f0, eta, base_color, diffuse_scale, specular_factor[64], diffuse_factor[64]}}.
+  bridgeShading(target, params) {
+    const alloc = this._arena();
+    const pp = alloc(BRIDGE.size), ps = alloc(SHADING.size);
+    this._writeBridge(pp, params);
+    const st = this.x.pgloss_bridge_shading_init(this._target(target), pp, ps);
+    return this._result(st, { shading: this._readShading(ps) });
+  }
+  // f = specular + diffuse · base_color at unit local directions wo, wi (normal +z).
+  bridgeShadingEval(shading, wo, wi) {
+    const alloc = this._arena();
+    const ps = alloc(SHADING.size), po = alloc(24), pi = alloc(24), o = alloc(16);
+    this._writeShading(ps, shading);
+    this.f64.set(wo, po / 8);
+    this.f64.set(wi, pi / 8);
+    const st = this.x.pgloss_bridge_shading_eval(ps, po, pi, o, o + 8);
+    return this._result(st, { specular: this.f64[o / 8], diffuse: this.f64[o / 8 + 1] });
   }
 
   // --- glossmeter.h -----------------------------------------------------------------------

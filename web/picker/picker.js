@@ -86,6 +86,7 @@ function convert() {
   m.renderable = ![-2, -3, -4].includes(phys.status);
   m.physicalCheck = phys;
   m.target = state.target === 'ward' ? null : bridgeOf(m.perceptual, state.target);
+  m.shading = m.target && m.target.params ? shadingOf(m.target) : null;
   m.meter = meterReadings(m);
   return m;
 }
@@ -99,6 +100,19 @@ function bridgeOf(q, id) {
   const written = r.status >= 0 || REACH.includes(r.name);
   return { def, status: r.status, name: r.name, reason: pg.statusString(r.status), requested: { ...q },
     params: written ? r.params : null, reached: written ? r.reached : null };
+}
+
+// The target's BRDF as the tracer renders it (pgloss_bridge_shading_init; tens of milliseconds
+// in WebAssembly, so cached like the meter's readings). Null where the core refuses it.
+const shadingCache = new Map();
+function shadingOf(t) {
+  const key = JSON.stringify([t.def.bridge, t.params]);
+  if (!shadingCache.has(key)) {
+    if (shadingCache.size > 64) shadingCache.clear();
+    const r = pg.bridgeShading(t.def.bridge, t.params);
+    shadingCache.set(key, r.status === 0 ? r.shading : null);
+  }
+  return shadingCache.get(key);
 }
 
 // The virtual glossmeter (glossmeter.h) on the Ward paint and on the target's material,
@@ -479,10 +493,24 @@ function updateRender(m) {
       labels.appendChild(div);
     });
     note.hidden = true;
+    $('view-what').textContent = m.target ? 'The match-gloss view renders Ward paints; the paint view shows the target beside its paint.' : '';
   } else {
     $('match-labels').hidden = true;
-    canvas.width = SIZE[0]; canvas.height = SIZE[1];
-    tracer.setPaints([m.physical], 1, 1);
+    // With a target: the Ward paint (left) beside the target's own BRDF (right), each at full size.
+    const side = m.shading !== null;
+    canvas.width = (side ? 2 : 1) * SIZE[0]; canvas.height = SIZE[1];
+    if (side) {
+      tracer.setTarget(m.shading);
+      tracer.setPaints([m.physical, { target: true }], 2, 1);
+    } else {
+      tracer.setPaints([m.physical], 1, 1);
+    }
+    const what = $('view-what');
+    what.textContent = !m.target ? '' : side
+      ? `Left: the Ward paint (eq. 2). Right: ${m.target.def.label}, its own BRDF (${['GGX', 'Beckmann'][m.shading.distribution]}, ` +
+        `α ${fmt(m.shading.alpha, 4)}, F0 ${fmt(m.shading.f0, 4)}) at the parameters in the table` +
+        `${m.target.status < 0 ? ' — the nearest reachable paint\'s' : ''}.`
+      : `The view renders the Ward paint (eq. 2) alone: ${m.target.def.label} has no parameters for this paint (${m.target.name}).`;
     note.hidden = m.status >= 0;
     note.style.maxWidth = `${Math.max(canvas.width, 240)}px`;
     // The paint's own status, as the status line shows it; the physical check's reason (a
@@ -580,10 +608,10 @@ async function main() {
   window.addEventListener('hashchange', () => { readHash(); applyModeUI(); update(); });
   applyModeUI();
   try {
-    const [pglossGlsl, trace, display, sceneText] = await Promise.all(
-      ['pgloss.glsl', 'trace.frag.glsl', 'display.frag.glsl', 'stimulus.scene'].map((f) => fetchText(new URL(`./${f}`, import.meta.url))));
+    const [pglossGlsl, microfacet, trace, display, sceneText] = await Promise.all(
+      ['pgloss.glsl', 'microfacet.glsl', 'trace.frag.glsl', 'display.frag.glsl', 'stimulus.scene'].map((f) => fetchText(new URL(`./${f}`, import.meta.url))));
     const scene = parseStimulusScene(sceneText);
-    tracer = new Tracer($('view'), { pglossGlsl, trace, display }, scene);
+    tracer = new Tracer($('view'), { pglossGlsl, microfacet, trace, display }, scene);
   } catch (e) {
     const err = $('error');
     err.hidden = false;

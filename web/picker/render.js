@@ -1,9 +1,11 @@
 // SPDX-FileCopyrightText: 2026 The pgloss authors
 // SPDX-License-Identifier: Apache-2.0
 // render.js — the progressive WebGL2 path tracer of the view: trace.frag.glsl (with
-// glsl/pgloss.glsl inserted verbatim) adds samples into RGBA32F targets (ping-pong; needs
-// EXT_color_buffer_float), display.frag.glsl tone-maps the running mean to the canvas.
-// One view, or a grid of up to 6 views (the match-gloss rows of Fig. 12), one paint each.
+// glsl/pgloss.glsl and microfacet.glsl inserted verbatim) adds samples into RGBA32F targets
+// (ping-pong; needs EXT_color_buffer_float), display.frag.glsl tone-maps the running mean to the
+// canvas. One view, or a grid of up to 6 views (the match-gloss rows of Fig. 12, or the Ward
+// paint beside a bridge target's BRDF), one paint each. Every input is a uniform: a new paint
+// or target never recompiles.
 
 const VERT = `#version 300 es
 void main() {  // one triangle covering the viewport
@@ -41,7 +43,7 @@ const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a
 const norm = (a) => { const l = Math.hypot(...a); return a.map((x) => x / l); };
 
 export class Tracer {
-  // sources: {pglossGlsl, trace, display}; scene: parseStimulusScene's result.
+  // sources: {pglossGlsl, microfacet, trace, display}; scene: parseStimulusScene's result.
   constructor(canvas, sources, scene) {
     const gl = canvas.getContext('webgl2', { antialias: false, preserveDrawingBuffer: true });
     if (!gl) throw new Error('WebGL2 is not available in this browser');
@@ -50,7 +52,7 @@ export class Tracer {
     this.canvas = canvas;
     this.scene = scene;
     const header = '#version 300 es\nprecision highp float;\nprecision highp int;\nprecision highp sampler2D;\n';
-    this.trace = program(gl, `${header}${sources.pglossGlsl}\n#line 1 1\n${sources.trace}`, 'trace.frag.glsl');
+    this.trace = program(gl, `${header}${sources.pglossGlsl}\n#line 1 1\n${sources.microfacet}\n#line 1 2\n${sources.trace}`, 'trace.frag.glsl');
     this.display = program(gl, `${header}${sources.display}`, 'display.frag.glsl');
     this.vao = gl.createVertexArray();
     this.tilesX = 1; this.tilesY = 1;
@@ -58,6 +60,7 @@ export class Tracer {
     this.count = 0;
     this.seed = 1;
     this.targets = null;
+    this.shading = null;
   }
 
   _allocate() {
@@ -101,12 +104,25 @@ export class Tracer {
     gl.clear(gl.COLOR_BUFFER_BIT);
   }
 
-  // paints: up to 6 of {rho_d: [r,g,b], rho_s, alpha} (physical, from the C core), in
-  // reading order over a tilesX × tilesY grid.
+  // paints: up to 6 of {rho_d: [r,g,b], rho_s, alpha} (physical, from the C core), or
+  // {target: true} for the bridge target's BRDF (setTarget), in reading order over a
+  // tilesX × tilesY grid.
   setPaints(paints, tilesX = 1, tilesY = 1) {
     if (paints.length < 1 || paints.length > 6 || tilesX * tilesY !== paints.length) throw new Error('setPaints: 1..6 paints filling the grid');
-    this.paints = paints.map((p) => ({ rho_d: p.rho_d.slice(), rho_s: p.rho_s, alpha: p.alpha }));
+    if (paints.some((p) => p.target) && !this.shading) throw new Error('setPaints: a target tile needs setTarget first');
+    this.paints = paints.map((p) => (p.target ? { target: true, rho_d: [0, 0, 0], rho_s: 0, alpha: 1 }
+      : { target: false, rho_d: p.rho_d.slice(), rho_s: p.rho_s, alpha: p.alpha }));
     this.tilesX = tilesX; this.tilesY = tilesY;
+    this.reset();
+  }
+
+  // The bridge target's BRDF: a pgloss_bridge_shading as pgloss-wasm.js's bridgeShading reads it.
+  setTarget(shading) {
+    this.shading = shading ? {
+      model: shading.model, diffuse_both: shading.diffuse_both, alpha: shading.alpha, eta: shading.eta,
+      base_color: shading.base_color.slice(), diffuse_scale: shading.diffuse_scale,
+      specular_factor: Float32Array.from(shading.specular_factor), diffuse_factor: Float32Array.from(shading.diffuse_factor),
+    } : null;
     this.reset();
   }
 
@@ -154,6 +170,18 @@ export class Tracer {
     gl.uniform3fv(loc.u_rho_d, pad(this.paints.map((q) => q.rho_d), 6).flat());
     gl.uniform1fv(loc.u_rho_s, pad(this.paints.map((q) => q.rho_s), 6));
     gl.uniform1fv(loc.u_alpha, pad(this.paints.map((q) => q.alpha), 6));
+    gl.uniform1iv(loc.u_kind, pad(this.paints.map((q) => (q.target ? 1 : 0)), 6));
+    const t = this.shading;
+    if (t) {
+      gl.uniform1i(loc['u_target.model'], t.model);
+      gl.uniform1i(loc['u_target.diffuse_both'], t.diffuse_both);
+      gl.uniform1f(loc['u_target.alpha'], t.alpha);
+      gl.uniform1f(loc['u_target.eta'], t.eta);
+      gl.uniform3fv(loc['u_target.base_color'], t.base_color);
+      gl.uniform1f(loc['u_target.diffuse_scale'], t.diffuse_scale);
+      gl.uniform4fv(loc['u_target.specular_factor'], t.specular_factor);
+      gl.uniform4fv(loc['u_target.diffuse_factor'], t.diffuse_factor);
+    }
     gl.drawArrays(gl.TRIANGLES, 0, 3);
     this.targets.cur = 1 - this.targets.cur;
     this.count += spp;

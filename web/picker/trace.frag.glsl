@@ -6,8 +6,10 @@
 // next-event estimation on the area light plus BRDF sampling (pgloss_sample), combined with
 // the power heuristic (pgloss_eval_pdf) where the surface has a specular lobe, light sampling
 // alone on diffuse-only surfaces, Russian roulette after 3 bounces, max_depth from the scene.
-// Every BRDF value, pdf and sample comes from glsl/pgloss.glsl, which render.js inserts
-// verbatim at the PGLOSS_GLSL line below.
+// Every BRDF value, pdf and sample of the Ward paint comes from glsl/pgloss.glsl; a tile of
+// kind 1 shows the bridge target's BRDF instead (microfacet.glsl, from pgloss_bridge_shading:
+// its lobes sampled by their mixture, the light by area, combined as for the paint). render.js
+// prepends both files verbatim.
 //
 // Output: the running sums of this pixel (ping-pong accumulation in RGBA32F targets):
 // rgb = Σ radiance, a = Σ luminance² (for the noise estimate of the tests).
@@ -37,6 +39,8 @@ uniform float u_eps;          // ray offset (render.cpp: 1e-4 × scene extent)
 uniform vec3 u_rho_d[6];
 uniform float u_rho_s[6];
 uniform float u_alpha[6];
+uniform int u_kind[6];        // 0: the Ward paint above; 1: the target's BRDF (u_target)
+uniform pgloss_bridge_shading u_target;
 
 layout(location = 0) out vec4 o_sum;
 
@@ -133,7 +137,7 @@ vec3 camera_dir(vec2 pix) {  // pix: position in the tile, y down (render.cpp's 
     return normalize(u_cam_f + sx * u_cam_r + sy * u_cam_u);
 }
 
-vec3 trace(vec2 pix, pgloss_material paint, inout uint rng) {
+vec3 trace(vec2 pix, pgloss_material paint, bool target, inout uint rng) {
     vec3 L = vec3(0), beta = vec3(1);
     vec3 o = u_cam_pos, d = camera_dir(pix);
     vec3 ln = normalize(cross(u_light_e1, u_light_e2));
@@ -158,13 +162,14 @@ vec3 trace(vec2 pix, pgloss_material paint, inout uint rng) {
         vec3 hp = o + t * d;
         pgloss_material m;  // (ESSL has no ?: on structs)
         if (kind == HIT_SPHERE) m = paint; else m = checker_at(hp);
-        if (m.lobes == PGLOSS_LOBE_NONE) break;
+        bool tgt = target && kind == HIT_SPHERE;
+        if (!tgt && m.lobes == PGLOSS_LOBE_NONE) break;
         vec3 n = dot(gn, d) < 0.0 ? gn : -gn;  // two-sided: face the viewer
         vec3 ft, fb;
         frame_of(n, ft, fb);
         vec3 wo = vec3(dot(-d, ft), dot(-d, fb), dot(-d, n));
         vec3 p = hp + u_eps * n;
-        bool mis = (m.lobes & PGLOSS_LOBE_SPECULAR) != 0u;
+        bool mis = tgt || (m.lobes & PGLOSS_LOBE_SPECULAR) != 0u;
 
         // Next-event estimation on the light (uniform over its area).
         float u1 = rnd(rng), u2 = rnd(rng);
@@ -178,7 +183,11 @@ vec3 trace(vec2 pix, pgloss_material paint, inout uint rng) {
             float pdf_light = dist2 / (larea * cos_l);
             vec3 f;
             float pdf_brdf = 0.0, w = 1.0;
-            if (mis) {
+            if (tgt) {
+                f = pgloss_bridge_shading_eval(u_target, wo, wil);
+                pdf_brdf = pgloss_bridge_shading_pdf(u_target, wo, wil);
+                w = power_heuristic(pdf_light, pdf_brdf);
+            } else if (mis) {
                 pgloss_eval_pdf(m, wo, wil, m.lobes, f, pdf_brdf);
                 w = power_heuristic(pdf_light, pdf_brdf);
             } else {
@@ -190,15 +199,22 @@ vec3 trace(vec2 pix, pgloss_material paint, inout uint rng) {
 
         // Continue by BRDF sampling.
         vec3 u = vec3(rnd(rng), rnd(rng), rnd(rng));
-        pgloss_sample_record rec;
-        pgloss_sample(m, wo, u, m.lobes, rec);
-        if (!(rec.pdf > 0.0)) break;
-        beta *= rec.weight;
+        vec3 wi_s, weight;
+        float pdf_s;
+        if (tgt) {
+            weight = pgloss_bridge_shading_sample(u_target, wo, u, wi_s, pdf_s);
+        } else {
+            pgloss_sample_record rec;
+            pgloss_sample(m, wo, u, m.lobes, rec);
+            wi_s = rec.wi; weight = rec.weight; pdf_s = rec.pdf;
+        }
+        if (!(pdf_s > 0.0)) break;
+        beta *= weight;
         prev_mis = mis;
         prev_light = !mis;
-        prev_pdf = rec.pdf;
+        prev_pdf = pdf_s;
         o = p;
-        d = normalize(rec.wi.x * ft + rec.wi.y * fb + rec.wi.z * n);
+        d = normalize(wi_s.x * ft + wi_s.y * fb + wi_s.z * n);
         if (depth >= 3) {  // Russian roulette
             float q = min(0.95, max3(beta));
             if (!(rnd(rng) < q)) break;
@@ -219,10 +235,11 @@ void main() {
     vec2 in_tile = from_top - vec2(tile) * u_tile_size;
     int k = clamp(tile.y * u_tiles_x + tile.x, 0, 5);
     pgloss_material paint;
+    bool target = u_kind[k] == 1;
     // A paint the core refuses (negative ρ, α <= 0, not finite) leaves its tile black: its
     // material would be black (pgloss_material_init), which would pass for a render of a black
-    // paint in a lit room.
-    if (pgloss_material_init(paint, pgloss_physical(u_rho_d[k], u_rho_s[k], u_alpha[k], u_alpha[k], PGLOSS_NORM_WARD)) < 0) {
+    // paint in a lit room. (A target tile is set only from a shading model the core accepted.)
+    if (pgloss_material_init(paint, pgloss_physical(u_rho_d[k], u_rho_s[k], u_alpha[k], u_alpha[k], PGLOSS_NORM_WARD)) < 0 && !target) {
         o_sum = vec4(0.0);
         return;
     }
@@ -231,7 +248,7 @@ void main() {
     for (int s = 0; s < u_spp; ++s) {
         uint rng = hash_u(hash_u(hash_u(u_seed) ^ pix) ^ uint(u_sample0 + s));
         vec2 jitter = vec2(rnd(rng), rnd(rng));
-        vec3 c = trace(in_tile + jitter, paint, rng);
+        vec3 c = trace(in_tile + jitter, paint, target, rng);
         if (any(isnan(c)) || any(isinf(c))) c = vec3(0);
         float Y = dot(c, vec3(0.2126, 0.7152, 0.0722));
         sum += vec4(c, Y * Y);

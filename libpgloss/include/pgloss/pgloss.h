@@ -21,5 +21,6 @@
 #include "pgloss/perceptual_batch.h"
 #include "pgloss/glossmeter.h"
 #include "pgloss/bridge.h"
+#include "pgloss/bridge_model.h"
 
 #endif /* PGLOSS_PGLOSS_H */

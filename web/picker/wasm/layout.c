@@ -11,7 +11,9 @@
 /* what: 0 sizeof(pgloss_physical), 1 offsetof rho_s, 2 alpha_x, 3 alpha_y, 4 normalization,
  * 5 sizeof(pgloss_perceptual), 6 sizeof(pgloss_status), 7 sizeof(pgloss_bridge_params),
  * 8 offsetof roughness, 9 ior, 10 specular, 11 sizeof(pgloss_glossmeter_readings),
- * 12 sizeof(pgloss_finish), 13 offsetof level, 14 gloss_60_min, 15 source; anything else: 0. */
+ * 12 sizeof(pgloss_finish), 13 offsetof level, 14 gloss_60_min, 15 source,
+ * 16 sizeof(pgloss_bridge_shading), 17 offsetof alpha, 18 base_color, 19 diffuse_scale,
+ * 20 specular_factor, 21 diffuse_factor; anything else: 0. */
 size_t pgloss_wasm_layout(int what);
 
 size_t pgloss_wasm_layout(int what) {
@@ -32,6 +34,12 @@ size_t pgloss_wasm_layout(int what) {
     case 13: return offsetof(pgloss_finish, level);
     case 14: return offsetof(pgloss_finish, gloss_60_min);
     case 15: return offsetof(pgloss_finish, source);
+    case 16: return sizeof(pgloss_bridge_shading);
+    case 17: return offsetof(pgloss_bridge_shading, alpha);
+    case 18: return offsetof(pgloss_bridge_shading, base_color);
+    case 19: return offsetof(pgloss_bridge_shading, diffuse_scale);
+    case 20: return offsetof(pgloss_bridge_shading, specular_factor);
+    case 21: return offsetof(pgloss_bridge_shading, diffuse_factor);
     default: return 0;
     }
 }
