@@ -28,7 +28,7 @@ echo "== pgloss-tracer (build-tracer-test) and the pgloss tool (build-test; its 
 step "configure (build-tracer-test)" cmake --preset tracer-test
 step "build pgloss-tracer (build-tracer-test)" cmake --build --preset tracer-test --target pgloss-tracer
 step "configure (build-test)" cmake --preset test
-step "build pgloss_cli (build-test)" cmake --build --preset test --target pgloss_cli
+step "build pgloss_cli, pgloss_bridge_tables (build-test)" cmake --build --preset test --target pgloss_cli pgloss_bridge_tables
 
 # Dr.Jit loads the first libLLVM it finds; clang's LLVM 14 aborts it ("Cannot select: fminimum").
 llvm=$(ls /usr/lib/x86_64-linux-gnu/libLLVM-19.so /usr/lib/llvm-19/lib/libLLVM-19.so 2>/dev/null | head -1 || true)
@@ -37,6 +37,7 @@ export DRJIT_LIBLLVM_PATH=$llvm
 start=$SECONDS
 set +e
 PGLOSS_TRACER=$root/build-tracer-test/examples/tracer/pgloss-tracer PGLOSS_TOOL=$root/build-test/tools/pgloss \
+  PGLOSS_BRIDGE_TABLES=$root/build-test/tools/pgloss_bridge_tables \
   "$py" -m pytest -q -s -p no:cacheprovider -rs tests/bridge 2>&1 | grep -v -e 'DeprecationWarning' -e 'use_nodes'
 rc=${PIPESTATUS[0]}
 set -e

@@ -10,6 +10,10 @@
  *   pgloss_bridge_tables OUT.inc          write the tables
  *   pgloss_bridge_tables --check OUT.inc  exit 1 if OUT.inc differs from what would be written
  *   pgloss_bridge_tables --report         print the interpolation errors, the residuals, the control
+ *   pgloss_bridge_tables --eval MODEL ETA ALPHA   the model's BRDF × cos θo per direction pair read
+ *                                         from stdin ("wi.x wi.y wi.z wo.x wo.y wo.z", local frame):
+ *                                         "specular diffuse-per-unit-base"; roughplastic models only
+ *                                         (tests/bridge compares it with Mitsuba's own bsdf.eval)
  *
  * The scene is examples/tracer/scenes/stimulus.scene (numbers below, checked against the file
  * when it is given with --scene). Deterministic: no random numbers, fixed loop order, so the
@@ -720,6 +724,40 @@ static void target_images(int m, double f0, double a, double *Dt, double *St)
     }
 }
 
+/* roughplastic's BRDF × μo at one direction pair (the images' integrand, written per direction for
+ * the comparison with Mitsuba's bsdf.eval, which returns f · cos θo): the specular term of
+ * image_spec and the diffuse of target_images per unit diffuse_reflectance, with diffuse_scale. */
+static void rp_eval(int m, double eta, double a, const double *tm, double rint, const double wi[3],
+                    const double wo[3], double out[2])
+{
+    out[0] = out[1] = 0;
+    if (wi[2] <= 0 || wo[2] <= 0) return;
+    double h[3] = {wi[0] + wo[0], wi[1] + wo[1], wi[2] + wo[2]};
+    const double hn = sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
+    for (int k = 0; k < 3; ++k) h[k] /= hn;
+    const double t2 = (1 - h[2] * h[2]) / (h[2] * h[2]), oh = wo[0] * h[0] + wo[1] * h[1] + wo[2] * h[2];
+    out[0] = pgloss__fresnel_any_d(oh, eta) * pgloss__mf_DG_d(m, wi[2], wo[2], t2, a) / (4 * wi[2]);
+    out[1] = mi_lerp(tm, wi[2]) * mi_lerp(tm, wo[2]) * wo[2] / (PI * eta * eta * (1 - rint));
+}
+
+static int eval_main(const char *model, double eta, double a)
+{
+    int m = !strcmp(model, "roughplastic_ggx") ? M_RP_GGX : !strcmp(model, "roughplastic_beckmann") ? M_RP_BECKMANN : -1;
+    if (m < 0 || !(eta > 1) || !(a > 0)) {
+        fprintf(stderr, "pgloss_bridge_tables --eval: MODEL is roughplastic_ggx or roughplastic_beckmann, ETA > 1, ALPHA > 0\n");
+        return 2;
+    }
+    hring_init();
+    double tm[MI_RES], wi[3], wo[3], v[2];
+    for (int k = 0; k < MI_RES; ++k) tm[k] = rough_interface(m, fmax(1e-6, (double)k / (MI_RES - 1)), a, eta, 1);
+    const double rint = mitsuba_rint(m, f0_of_eta(eta), a);
+    while (scanf("%lf %lf %lf %lf %lf %lf", &wi[0], &wi[1], &wi[2], &wo[0], &wo[1], &wo[2]) == 6) {
+        rp_eval(m, eta, a, tm, rint, wi, wo, v);
+        printf("%.9g %.9g\n", v[0], v[1]);
+    }
+    return 0;
+}
+
 /* ---- The table grid ---- */
 /* √F0 and log α evenly spaced; each axis has one node beyond each end of the range it
  * covers, so that the Catmull-Rom cells inside the range all have their four true nodes
@@ -926,6 +964,7 @@ static size_t read_numbers(const char *path, double **out)
 int main(int argc, char **argv)
 {
     setvbuf(stdout, NULL, _IOLBF, 0);
+    if (argc == 5 && !strcmp(argv[1], "--eval")) return eval_main(argv[2], atof(argv[3]), atof(argv[4]));
     int check = 0, report = 0;
     const char *path = NULL;
     for (int i = 1; i < argc; ++i) {
@@ -934,7 +973,7 @@ int main(int argc, char **argv)
         else path = argv[i];
     }
     if (!path && !report) {
-        fprintf(stderr, "usage: pgloss_bridge_tables [--check] OUT.inc | --report\n");
+        fprintf(stderr, "usage: pgloss_bridge_tables [--check] OUT.inc | --report | --eval MODEL ETA ALPHA\n");
         return 2;
     }
     camera_init();

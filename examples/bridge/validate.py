@@ -67,6 +67,13 @@ def paints(which: str = "all") -> List[Tuple[str, float, float, float]]:
     return [p for p in out if which == "all" or abs(p[1] - 0.193) < 1e-6]
 
 
+def is_white(rho_d: float) -> bool:
+    """The white row (ρd .767: Fig. 4's and Fig. 12's white paints). Its lobe is a small part of
+    a bright sphere's image, so the meter's residual is nearly flat in α there and its reading
+    needs more samples (--white-spp, --white-basis-spp; docs/image-meter.md, "White paints")."""
+    return rho_d > 0.5
+
+
 # ------------------------------------------------------------------------------ the renderers
 @dataclass
 class Job:
@@ -180,7 +187,8 @@ class Meter:
         key = round(rho_d, 9)
         if key not in self.bases:
             a = self.args
-            self.bases[key] = im.render_basis(a.tracer, SCENE, key, spp=a.basis_spp, alphas=a.alphas,
+            spp = a.white_basis_spp if is_white(key) else a.basis_spp
+            self.bases[key] = im.render_basis(a.tracer, SCENE, key, spp=spp, alphas=a.alphas,
                                               threads=a.threads, cache=a.work / "basis", progress=True)
         return self.bases[key]
 
@@ -259,12 +267,14 @@ def control(r: Renderers, meter: Meter, args: argparse.Namespace) -> List[str]:
     if args.quick:
         ps = [p for p in ps if p[3] == 0.07]
     out = ["## 2. The meter's control: Ward renders of known paints read back", "",
-           f"Each paint rendered at {args.spp} spp (seeds other than the basis's) and fitted (ρd known). "
+           f"Each paint rendered at {args.spp} spp (the white row, ρd .767, at {args.white_spp} spp against a "
+           f"{args.white_basis_spp}-spp basis; seeds other than the basis's) and fitted (ρd known). "
            "Pass: |Δc| ≤ 0.0025 and |Δd| ≤ 0.005 (half the target tolerance). The sensitivities are the "
            "largest |Δc|, |Δd| between the primary fit and the ρd-fitted / rim-excluded fits.", ""]
     for renderer, mat in (("tracer", lambda rd, rs, a: {"tracer": im.paint_line(rd, rs, a)}),
                           ("mitsuba", lambda rd, rs, a: {"type": "ward", "rho_d": rd, "rho_s": rs, "alpha": a})):
-        imgs = r.images(renderer, [Job(mat(rd, rs, a), args.spp, 2000 + i) for i, (_, rd, rs, a) in enumerate(ps)])
+        imgs = r.images(renderer, [Job(mat(rd, rs, a), args.white_spp if is_white(rd) else args.spp, 2000 + i)
+                                   for i, (_, rd, rs, a) in enumerate(ps)])
         rows, npass, sens = [], 0, [0.0, 0.0, 0.0, 0.0]
         for (label, rd, rs, a), img in zip(ps, imgs):
             _, c0, d0 = (float(v) for v in pgloss.gloss_from_physical(rd, rs, a))
@@ -289,9 +299,12 @@ def control(r: Renderers, meter: Meter, args: argparse.Namespace) -> List[str]:
 def noise(r: Renderers, meter: Meter, args: argparse.Namespace) -> List[str]:
     """(3) RMS (Δc, Δd) over repeated pgloss-tracer renders of the grey stimulus, per spp."""
     rows = []
-    for rd, rs, a in ((0.193, 0.066, 0.07), (0.193, 0.033, 0.04)):
+    stimuli = [(0.193, 0.066, 0.07), (0.193, 0.033, 0.04)]
+    if args.paints == "all":  # the white and black rows too: the model was fitted on grey paints
+        stimuli += [(0.767, 0.066, 0.07), (0.767, 0.033, 0.04), (0.03, 0.066, 0.07)]
+    for rd, rs, a in stimuli:
         _, c0, d0 = (float(v) for v in pgloss.gloss_from_physical(rd, rs, a))
-        for spp in args.noise_spp:
+        for spp in sorted(set(args.noise_spp) | ({args.white_spp} if is_white(rd) else set())):
             imgs = r.images("tracer", [Job({"tracer": im.paint_line(rd, rs, a)}, spp, 3000 + i)
                                        for i in range(args.noise_reps)])
             fs = [meter.read(img, rd)["primary"] for img in imgs]
@@ -301,8 +314,9 @@ def noise(r: Renderers, meter: Meter, args: argparse.Namespace) -> List[str]:
             rows.append((f"{rd:g}/{rs:g}/{a:g}", spp, args.noise_reps, f"{np.sqrt(np.mean(dc**2)):.5f}", f"{ec:.5f}",
                          f"{dc.mean():+.5f}", f"{np.sqrt(np.mean(dd**2)):.5f}", f"{ed:.5f}", f"{dd.mean():+.5f}"))
     return ["## 3. The noise model", "",
-            "Two grey stimuli rendered by pgloss-tracer with independent seeds and read "
-            f"back against the basis ({args.basis_spp} spp). Model (4,096-spp basis): RMS Δc = √(0.0113²/spp + "
+            f"{'Grey, white and black' if args.paints == 'all' else 'Two grey'} stimuli rendered by pgloss-tracer "
+            f"with independent seeds and read back against the basis ({args.basis_spp} spp; ρd .767: "
+            f"{args.white_basis_spp} spp). Model (4,096-spp basis, fitted on grey paints): RMS Δc = √(0.0113²/spp + "
             "0.00016²), RMS Δd = 0.030/√spp.", "",
             *_table(("paint ρd/ρs/α", "spp", "renders", "RMS Δc", "model", "mean Δc", "RMS Δd", "model", "mean Δd"), rows),
             ""]
@@ -352,10 +366,18 @@ def facts(r: Renderers, meter: Meter, args: argparse.Namespace) -> List[str]:
 
 
 # ----------------------------------------------------------------------------------- the table
+def white_note(args: argparse.Namespace) -> str:
+    """How the white row's reachable paints are rendered and read, where that differs."""
+    if (args.white_spp, args.white_basis_spp) == (args.spp, args.basis_spp):
+        return ""
+    return (f" (the reachable paints of the white row, ρd .767, at {args.white_spp} spp, read against a "
+            f"{args.white_basis_spp}-spp basis)")
+
+
 def validation_table(r: Renderers, meter: Meter, args: argparse.Namespace,
                      progress: Optional[Callable[[List[str]], None]] = None) -> List[str]:
     out = ["Each paint's (L*, c, d) mapped by `pgloss bridge TARGET L 0 0 c d`, rendered in the target's own "
-           f"renderer at {args.spp} spp, read back by the image gloss meter (ρd known from L*). Paints: "
+           f"renderer at {args.spp} spp{white_note(args)}, read back by the image gloss meter (ρd known from L*). Paints: "
            f"{'all 30' if args.paints == 'all' else 'the 10 of ρd .193 (Fig. 4 grey row, Fig. 12 grey)'}. Pass: |Δc| ≤ 0.005 "
            "and |Δd| ≤ 0.01. Paints the mapping reports out of reach are listed with its status and not counted.", ""]
     ps = paints(args.paints)
@@ -365,7 +387,8 @@ def validation_table(r: Renderers, meter: Meter, args: argparse.Namespace,
         for i, (label, rd, rs, a) in enumerate(ps):
             L, c, d = (float(v) for v in pgloss.gloss_from_physical(rd, rs, a))
             params, status = mapped(target, L, c, d, args.tool)
-            jobs.append(Job(make(params, args.work), args.spp, 6000 + i))
+            reach = "bridge" not in status
+            jobs.append(Job(make(params, args.work), args.white_spp if reach and is_white(rd) else args.spp, 6000 + i))
             meta.append((label, rd, c, d, status))
         imgs = r.images(renderer, jobs)
         rows, npass, nreach = [], 0, 0
@@ -407,6 +430,8 @@ def main(argv: Optional[List[str]] = None) -> int:
     ap.add_argument("report", choices=("harnesses", "table", "all"), help="all: the table, then the harnesses")
     ap.add_argument("--spp", type=int, default=1024, help="spp of each validation render (%(default)s)")
     ap.add_argument("--basis-spp", type=int, default=2048, help="spp of the meter's basis renders (%(default)s)")
+    ap.add_argument("--white-spp", type=int, help="spp of the white row's reachable paints in the table (default --spp)")
+    ap.add_argument("--white-basis-spp", type=int, help="spp of the ρd .767 basis (default --basis-spp)")
     ap.add_argument("--lambert-spp", type=int, default=4096, help="total spp per renderer of check 1 (%(default)s)")
     ap.add_argument("--noise-spp", default="256,1024")
     ap.add_argument("--noise-reps", type=int, default=6)
@@ -426,6 +451,8 @@ def main(argv: Optional[List[str]] = None) -> int:
     ap.add_argument("--out", type=Path, help="the Markdown file (default docs/bridge-REPORT.md)")
     args = ap.parse_args(argv)
     args.alphas = tuple(float(a) for a in np.geomspace(0.01, 0.3, args.alphas))
+    args.white_spp = args.white_spp or args.spp
+    args.white_basis_spp = args.white_basis_spp or args.basis_spp
     args.noise_spp = [int(v) for v in args.noise_spp.split(",")]
     args.targets = [t for t in args.targets.split(",") if t]
     for t in args.targets:
