@@ -27,20 +27,25 @@
 
 /* ---- exponential, logarithm, sine and cosine (libm-free, branch-free) ------------------- */
 
-/* exp(x) for x <= 0, within 2 ulp; 0 below ln(FLT_MIN) (no subnormal results). x = n ln2 + r
- * (Cody–Waite), n by the 1.5·2^23 rounding trick, e^r by its degree-7 Taylor polynomial
- * (Estrin's scheme: three steps deep where Horner's are seven). */
+/* exp(x) for x <= 0, within 2 ulp; 0 below ln(FLT_MIN) (no subnormal results) and for NaN.
+ * x = n ln2 + r (Cody–Waite), n by the 1.5·2^23 rounding trick, e^r by its degree-7 Taylor
+ * polynomial (Estrin's scheme: three steps deep where Horner's are seven). */
 PGLOSS_KFN pv_f PGLOSS_K(exp_neg)(pv_f x)
 {
-    const pv_f xc = pv_max(x, pv_f1(-87.33654f));
+    /* In integers, on t = |x| (whose bits order as the floats do): compilers keep integer
+     * selects branch-free, where float ones become branches that mispredict on the specular
+     * lobe's tail. t clamped to -ln(FLT_MIN) (so that n fits), and tiny (t beyond it, or NaN)
+     * as a mask of all ones. */
+    const pv_i tb = pv_bits(x) & 0x7fffffff, lim = pv_i1(1118743631); /* 87.33654f */
+    const pv_f xc = pv_from_bits((tb + lim - pv_imax(tb, lim)) | INT32_MIN); /* −min(t, lim) */
+    const pv_i tiny = (lim - tb) >> 31;
     const pv_f n = (xc * 1.44269504088896341f + 12582912.0f) - 12582912.0f;
     const pv_f r = (xc - n * 0.693145751953125f) - n * 1.428606765330187e-06f;
-    const pv_f scale = pv_from_bits((pv_trunc_i(n) + 127) << 23);
     const pv_f r2 = r * r, r4 = r2 * r2;
     const pv_f p01 = 1.0f + r, p23 = 0.5f + r * (1.0f / 6.0f);
     const pv_f p45 = 1.0f / 24.0f + r * (1.0f / 120.0f), p67 = 1.0f / 720.0f + r * (1.0f / 5040.0f);
     const pv_f p = (p01 + r2 * p23) + r4 * (p45 + r2 * p67);
-    return pv_sel(pv_lt(x, pv_f1(-87.33654f)), pv_f1(0.0f), p * scale);
+    return p * pv_from_bits(((pv_trunc_i(n) + 127) << 23) & ~tiny); /* p in [0.7, 1.5]: +0 */
 }
 
 /* FAST: 2^g for g <= 0; exactly 0 below -126 and for NaN (no subnormal result: it costs a
