@@ -23,7 +23,7 @@ from typing import Any, Dict, List
 import numpy as np
 import pytest
 from playwright.sync_api import Browser
-from test_picker import EXPORT_PY, OUT, ROOT, base_url, browser, open_page  # noqa: F401 (fixtures)
+from test_picker import EXPORT_PY, OUT, ROOT, open_page
 
 TRACER = os.environ.get("PGLOSS_TRACER", str(ROOT / "build-tracer-test/examples/tracer/pgloss-tracer"))
 #: The meter's basis as tests/bridge and tests/blender render it (the same cache and key).
