@@ -10,6 +10,8 @@ Ward paint (the control). Writes the table to out/web/picker-meter.md.
 The frame is the meter's sphere crop (View.crop: 54 × 58 of the 160 × 120 frame), which a
 pinhole renders as its whole frame with the narrower field of view View.crop_fov_deg; the page
 reads stimulus.scene itself, so only the camera's fov is set here, on the page's parsed scene.
+The bounds have teeth: with α 15 % high in every tile (Ward and target), the grey paint's d reads
+0.012–0.013 low, and the test fails.
 """
 from __future__ import annotations
 
@@ -87,7 +89,7 @@ def test_picker_renders_read_back_by_the_image_meter(browser: Browser, base_url:
                   "alphas": BASIS_ALPHAS, "spp": [SPP, len(TARGETS) * SPP], "images": images})
     asked = {p: tuple(_asked(p)) for p in PAINTS}
     lines = [f"Image gloss meter on the picker's WebGL2 renders (SwiftShader) of the stimulus scene's meter crop "
-             f"({W}×{H}), {SPP} spp; basis pgloss-tracer {BASIS_SPP} spp, α {BASIS_ALPHAS[0]:g}–{BASIS_ALPHAS[-1]:g} "
+             f"({W}×{H}), {SPP} spp per render; basis pgloss-tracer {BASIS_SPP} spp, α {BASIS_ALPHAS[0]:g}–{BASIS_ALPHAS[-1]:g} "
              f"({len(BASIS_ALPHAS)} nodes), ρd known. Render noise (RMS, image_meter.expected_noise): "
              + "; ".join(f"{n} spp Δc {nc:.4f}, Δd {nd:.4f}" for n, (nc, nd) in res["noise"].items()) + ". "
              f"Bounds: targets |Δc| ≤ {TOL_C}, |Δd| ≤ {TOL_D}; Ward (control) half of that.", "",
