@@ -13,23 +13,18 @@ import json
 import math
 import os
 import re
-import socket
 import subprocess
-import sys
 import time
 from pathlib import Path
-from typing import Any, Dict, Iterator, List, Tuple
+from typing import Any, Dict, List, Tuple
 
 import numpy as np
 import pytest
-from playwright.sync_api import Browser, Page, sync_playwright
+from playwright.sync_api import Browser, Page
 
 ROOT = Path(__file__).resolve().parents[2]
 SITE = Path(os.environ.get("PGLOSS_WEB_SITE", ROOT / "build-web/site"))
 OUT = ROOT / "out/web"
-CHROMIUM = os.environ.get("PGLOSS_CHROMIUM", "/usr/bin/chromium")
-FLAGS = ["--headless=new", "--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--no-sandbox",
-         "--disable-background-networking", "--disable-component-update"]
 SCENE = ROOT / "examples/tracer/scenes/stimulus.scene"
 
 # Paints set through the controls (L*, a*, b*, c, d): the stimulus grey (≈ Fig. 11's reference),
@@ -43,41 +38,6 @@ PAINTS: List[Dict[str, float]] = [
     {"L": 90.0, "a": 5.0, "b": 10.0, "c": 0.2, "d": 0.96},
     {"L": 50.0, "a": 0.0, "b": -120.0, "c": 0.05, "d": 0.95},
 ]
-
-
-def _free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return int(s.getsockname()[1])
-
-
-@pytest.fixture(scope="session")
-def base_url() -> Iterator[str]:
-    if not (SITE / "pgloss.wasm").is_file():
-        pytest.fail(f"{SITE} has no pgloss.wasm: run scripts/picker.sh --build (scripts/test-web.sh does)")
-    port = _free_port()
-    srv = subprocess.Popen([sys.executable, "-m", "http.server", str(port), "--bind", "127.0.0.1",
-                            "--directory", str(SITE)], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    url = f"http://127.0.0.1:{port}"
-    for _ in range(100):
-        try:
-            socket.create_connection(("127.0.0.1", port), timeout=0.1).close()
-            break
-        except OSError:
-            time.sleep(0.05)
-    yield url
-    srv.terminate()
-    srv.wait(5)
-
-
-@pytest.fixture(scope="session")
-def browser() -> Iterator[Browser]:
-    if not Path(CHROMIUM).is_file():
-        pytest.fail(f"no Chromium at {CHROMIUM} (Debian package chromium; scripts/test-web.sh installs it)")
-    with sync_playwright() as p:
-        b = p.chromium.launch(executable_path=CHROMIUM, args=FLAGS, headless=True)
-        yield b
-        b.close()
 
 
 def open_page(browser: Browser, url: str, viewport: Tuple[int, int] = (1100, 820)) -> Page:
