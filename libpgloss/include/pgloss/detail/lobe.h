@@ -37,7 +37,7 @@ PGLOSS_KFN pv_f PGLOSS_K(exp_neg)(pv_f x)
      * lobe's tail. t clamped to -ln(FLT_MIN) (so that n fits), and tiny (t beyond it, or NaN)
      * as a mask of all ones. */
     const pv_i tb = pv_bits(x) & 0x7fffffff, lim = pv_i1(1118743631); /* 87.33654f */
-    const pv_f xc = pv_from_bits((tb + lim - pv_imax(tb, lim)) | INT32_MIN); /* −min(t, lim) */
+    const pv_f xc = pv_from_bits((tb - pv_imax(tb - lim, pv_i1(0))) | INT32_MIN); /* −min(t, lim) */
     const pv_i tiny = (lim - tb) >> 31;
     const pv_f n = (xc * 1.44269504088896341f + 12582912.0f) - 12582912.0f;
     const pv_f r = (xc - n * 0.693145751953125f) - n * 1.428606765330187e-06f;
