@@ -21,6 +21,27 @@
 #define PGLOSS__ROWS 1
 #endif
 
+/* Rows [j, n) of `size`-byte values, one at a time: the tails the vector loops leave. */
+static inline void pgloss__rows3_tail_in(const char *p, size_t size, size_t j, size_t n, void *x,
+                                         void *y, void *z)
+{
+    for (; j < n; ++j, p += 3 * size) {
+        memcpy((char *)x + j * size, p, size);
+        memcpy((char *)y + j * size, p + size, size);
+        memcpy((char *)z + j * size, p + 2 * size, size);
+    }
+}
+
+static inline void pgloss__rows3_tail_out(const void *x, const void *y, const void *z,
+                                          size_t size, size_t j, size_t n, char *p)
+{
+    for (; j < n; ++j, p += 3 * size) {
+        memcpy(p, (const char *)x + j * size, size);
+        memcpy(p + size, (const char *)y + j * size, size);
+        memcpy(p + 2 * size, (const char *)z + j * size, size);
+    }
+}
+
 /* Rows [0, n) at `rows` (byte pointer) into x, y, z. */
 static inline void pgloss__rows3_to_columns(const void *rows, size_t n, float *x, float *y,
                                             float *z)
@@ -59,11 +80,7 @@ static inline void pgloss__rows3_to_columns(const void *rows, size_t n, float *x
                                             _MM_SHUFFLE(2, 0, 2, 0)));
     }
 #endif
-    for (; j < n; ++j, p += 12) {
-        memcpy(x + j, p, 4);
-        memcpy(y + j, p + 4, 4);
-        memcpy(z + j, p + 8, 4);
-    }
+    pgloss__rows3_tail_in(p, 4, j, n, x, y, z);
 }
 
 /* Columns x, y, z [0, n) into rows [0, n) at `rows` (byte pointer). */
@@ -103,11 +120,7 @@ static inline void pgloss__columns_to_rows3(const float *x, const float *y, cons
                                      _MM_SHUFFLE(2, 0, 2, 0)));
     }
 #endif
-    for (; j < n; ++j, p += 12) {
-        memcpy(p, x + j, 4);
-        memcpy(p + 4, y + j, 4);
-        memcpy(p + 8, z + j, 4);
-    }
+    pgloss__rows3_tail_out(x, y, z, 4, j, n, p);
 }
 
 /* Float64 rows [0, n) at `rows` (byte pointer) into x, y, z: rows j, j + 1 are the loads
@@ -127,11 +140,7 @@ static inline void pgloss__rows3d_to_columns(const void *rows, size_t n, double 
         _mm_storeu_pd(z + j, _mm_shuffle_pd(b, c, 2)); /* b0 c1 */
     }
 #endif
-    for (; j < n; ++j, p += 24) {
-        memcpy(x + j, p, 8);
-        memcpy(y + j, p + 8, 8);
-        memcpy(z + j, p + 16, 8);
-    }
+    pgloss__rows3_tail_in(p, 8, j, n, x, y, z);
 }
 
 /* Columns x, y, z [0, n) into float64 rows [0, n) at `rows` (byte pointer). */
@@ -148,11 +157,7 @@ static inline void pgloss__columns_to_rows3d(const double *x, const double *y, c
         _mm_storeu_pd((double *)(p + 32), _mm_unpackhi_pd(vy, vz));       /* y1 z1 */
     }
 #endif
-    for (; j < n; ++j, p += 24) {
-        memcpy(p, x + j, 8);
-        memcpy(p + 8, y + j, 8);
-        memcpy(p + 16, z + j, 8);
-    }
+    pgloss__rows3_tail_out(x, y, z, 8, j, n, p);
 }
 
 #endif
