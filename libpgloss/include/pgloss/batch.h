@@ -30,11 +30,12 @@
  * PGLOSS_ERR_NORMALIZATION for an unknown ms->normalization. n == 0 is PGLOSS_OK.
  *
  * Accuracy (docs/kernels.md; BENCHMARKS.md measures it): float32 FLOAT agrees with the scalar
- * double reference within a few float ulps times the conditioning of exp and is bit-identical
- * across instruction sets and between one material per element and one per call; FAST trades
- * a few more ulps for speed; REFERENCE runs the scalar functions. float64 runs the double
- * lobe in every tier: within 1e-12 relative of the scalar reference times exp's conditioning
- * (the shared vectors' double tolerance); outputs at most FLT_MAX as in every precision.
+ * double reference within a few float ulps times the conditioning of exp and of the half
+ * vector (docs/kernels.md, step 3), and is bit-identical across instruction sets and between
+ * one material per element and one per call; FAST trades a few more ulps for speed; REFERENCE
+ * runs the scalar functions. float64 runs the double lobe in every tier: within 1e-12
+ * relative of the scalar reference times exp's conditioning (the shared vectors' double
+ * tolerance); outputs at most FLT_MAX as in every precision.
  *
  * Arrays may be of any alignment. Inputs and outputs must not overlap.
  */
