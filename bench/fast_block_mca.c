@@ -27,7 +27,7 @@ void pgloss_mca_eval(const pgloss_material *m, size_t n, const float *ox, const 
     for (size_t j = 0; j + PV_LANES <= n; j += PV_LANES) {
         __asm__ volatile("# LLVM-MCA-BEGIN eval_block");
         pv_f f[3], p;
-        pgloss__v_eval_pdf_unit(&k, PGLOSS_LOBE_ALL, PGLOSS_NORM_WARD, 1, pv_load(ox + j),
+        pgloss__v_eval_pdf_unit(&k, PGLOSS_LOBE_ALL, PGLOSS_NORM_WARD, 1, 0, pv_load(ox + j),
                                 pv_load(oy + j), pv_load(oz + j), pv_load(ix + j), pv_load(iy + j),
                                 pv_load(iz + j), pv_m1(1), f, &p);
         pv_store(fr + j, f[0]);

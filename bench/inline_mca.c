@@ -19,7 +19,7 @@ void mca_eval_pdf(const pgloss_material *m, const pgloss_vec3 *wo, const pgloss_
     __asm__ volatile("# LLVM-MCA-BEGIN eval_pdf");
     const pgloss_inl_consts k = pgloss_inl_consts_of(m, PGLOSS_LOBE_ALL);
     float fv[3];
-    pgloss_inl_eval_pdf_unit(&k, PGLOSS_LOBE_ALL, PGLOSS_NORM_WARD, 0, wo->x, wo->y, wo->z, wi->x,
+    pgloss_inl_eval_pdf_unit(&k, PGLOSS_LOBE_ALL, PGLOSS_NORM_WARD, 0, 1, wo->x, wo->y, wo->z, wi->x,
                              wi->y, wi->z, 1, fv, p);
     f->r = fv[0], f->g = fv[1], f->b = fv[2];
     __asm__ volatile("# LLVM-MCA-END eval_pdf");
@@ -36,7 +36,7 @@ void mca_sample(const pgloss_material *m, const pgloss_vec3 *wo, const float *u,
                                                 pgloss_inl_clamp_u(u[1]), pgloss_inl_clamp_u(u[2]),
                                                 &w.x, &w.y, &w.z);
     float fv[3], p;
-    pgloss_inl_eval_pdf_unit(&k, PGLOSS_LOBE_ALL, PGLOSS_NORM_WARD, 0, wo->x, wo->y, wo->z, w.x,
+    pgloss_inl_eval_pdf_unit(&k, PGLOSS_LOBE_ALL, PGLOSS_NORM_WARD, 0, 1, wo->x, wo->y, wo->z, w.x,
                              w.y, w.z, 1, fv, &p);
     pgloss_inl_weight(oh > 0.0f, w.x, w.y, w.z, &p, &fv[0], &fv[1], &fv[2]);
     s->wi = w, s->pdf = p, s->weight.r = fv[0], s->weight.g = fv[1], s->weight.b = fv[2];

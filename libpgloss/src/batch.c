@@ -154,9 +154,27 @@ static void prefetch_rows(const void *const *ptr, ptrdiff_t stride, size_t size,
 #endif
 }
 
-static void gather3(const pgloss__loops *L, pgloss_strided3 s, size_t size, size_t base, size_t m,
-                    double (*buf)[B], const void **col)
+/* Whether every value of a strided array is where the loops take it (a contiguous, aligned
+ * column); the chunk step of a call all of whose arrays are: one chunk, no per-chunk cost. */
+static int in_place3(const void *const *p, ptrdiff_t stride, size_t size)
 {
+    return pgloss__in_place(p[0], stride, size) && pgloss__in_place(p[1], stride, size) &&
+           pgloss__in_place(p[2], stride, size);
+}
+static int materials_in_place(const pgloss_physical_array *p, size_t size)
+{
+    return !p || (in_place3(p->rho_d.ptr, p->rho_d.stride, size) &&
+                  pgloss__in_place(p->rho_s.ptr, p->rho_s.stride, size) &&
+                  pgloss__in_place(p->alpha_x.ptr, p->alpha_x.stride, size) &&
+                  (!p->alpha_y.ptr || pgloss__in_place(p->alpha_y.ptr, p->alpha_y.stride, size)));
+}
+
+/* The strided arrays pass by pointer: by value, the copies' 16-byte reloads of 8-byte stores
+ * miss store forwarding, which costs a small call more than the copying itself. */
+static void gather3(const pgloss__loops *L, const pgloss_strided3 *sp, size_t size, size_t base,
+                    size_t m, double (*buf)[B], const void **col)
+{
+    const pgloss_strided3 s = *sp;
     if (rows3(s.ptr, s.stride, size)) {
         if (size == 4)
             L->rows_in((const char *)s.ptr[0] + 12 * base, m, (float *)buf[0], (float *)buf[1],
@@ -174,7 +192,7 @@ static void gather3(const pgloss__loops *L, pgloss_strided3 s, size_t size, size
 static void gather_materials(const pgloss__loops *L, const pgloss_physical_array *p, size_t size,
                              size_t base, size_t m, chunk *c)
 {
-    gather3(L, p->rho_d, size, base, m, &c->in[6], c->mat);
+    gather3(L, &p->rho_d, size, base, m, &c->in[6], c->mat);
     c->mat[3] = pgloss__gather(p->rho_s.ptr, p->rho_s.stride, size, base, m, c->in[9]);
     c->mat[4] = pgloss__gather(p->alpha_x.ptr, p->alpha_x.stride, size, base, m, c->in[10]);
     c->mat[5] = p->alpha_y.ptr
@@ -182,15 +200,18 @@ static void gather_materials(const pgloss__loops *L, const pgloss_physical_array
                     : c->mat[4];
 }
 
-static void out3(pgloss_strided3_out s, size_t size, size_t base, double (*buf)[B], void **col)
+static void out3(const pgloss_strided3_out *sp, size_t size, size_t base, double (*buf)[B],
+                 void **col)
 {
+    const pgloss_strided3_out s = *sp;
     for (int c = 0; c < 3; ++c)
         col[c] = pgloss__out(s.ptr[c], s.stride, size, base, buf[c]);
 }
 
-static void scatter3(const pgloss__loops *L, pgloss_strided3_out s, size_t size, size_t base,
-                     size_t m, void *const *col)
+static void scatter3(const pgloss__loops *L, const pgloss_strided3_out *sp, size_t size,
+                     size_t base, size_t m, void *const *col)
 {
+    const pgloss_strided3_out s = *sp;
     if (rows3((const void *const *)s.ptr, s.stride, size)) {
         if (size == 4)
             L->rows_out(col[0], col[1], col[2], m, (char *)s.ptr[0] + 12 * base);
@@ -230,6 +251,24 @@ static pgloss_status material_at(const chunk *c, size_t j, int norm, pgloss_mate
     return pgloss_material_init(out, &p);
 }
 
+/* Whether a material's float f or pdf can exceed FLT_MAX anywhere (then the loops clamp them):
+ * bounds of the lobe's steps with cosines raised to COS_MIN, e <= 1, |ô + î| <= 2 (so
+ * hhs <= 4/hzc², hzc >= 2 COS_MIN), and a margin of 4 for rounding and the FAST estimates. */
+static int may_exceed_flt_max(const pgloss_material *m)
+{
+    const double c = 2.0 * PGLOSS_COS_MIN; /* the least hzc */
+    double n = 1.0 / PGLOSS_COS_MIN;       /* WARD: 1/sqrt(ci' co') */
+    if (m->normalization == PGLOSS_NORM_WARD_DUR)
+        n = n * n;
+    else if (m->normalization == PGLOSS_NORM_BOUNDED)
+        n = 4.0 / (c * c * c * c); /* hhs/hzc² */
+    const double fd = ((double)m->rho_d[0] + m->rho_d[1] + m->rho_d[2]) / 3.14159265358979323846;
+    const double f = fd + (double)m->spec_scale * n;
+    const double pdf = (double)m->pdf_diffuse + 0.31830988618379067154 +
+                       2.0 * (double)m->pdf_scale * 4.0 / (c * c * c);
+    return !(f <= 0.25 * FLT_MAX && pdf <= 0.25 * FLT_MAX);
+}
+
 /* A call's set-up, once: the lobes the loops are specialised on and the normalisation, and
  * for one material in float64 its constants formed again in double (its parameters widened
  * exactly). */
@@ -246,9 +285,11 @@ static void set_up(const pgloss_material *m, const pgloss_physical_array *ms, un
     s->c.active = lobes & PGLOSS_LOBE_ALL;
     if (!m) {
         s->c.norm = (int)ms->normalization;
+        s->c.clamp = 1;
         return;
     }
     s->c.norm = (int)m->normalization;
+    s->c.clamp = may_exceed_flt_max(m);
     if (f64) {
         s->kd = pgloss__consts_d_of(m->rho_d[0], m->rho_d[1], m->rho_d[2], m->rho_s, m->alpha_x,
                                     m->alpha_y, s->c.norm, s->c.active);
@@ -311,13 +352,18 @@ pgloss_status pgloss_eval_pdf_batch(const pgloss_batch_options *options,
     setup s;
     set_up(m, ms, lobes, f64, &s);
     const inputs a = {size, ms, wo, wi, 0};
+    const int whole = in_place3(wo.ptr, wo.stride, size) && in_place3(wi.ptr, wi.stride, size) &&
+                      (!want_f || in_place3((const void *const *)f.ptr, f.stride, size)) &&
+                      (!want_p || pgloss__in_place(pdf.ptr, pdf.stride, size)) &&
+                      materials_in_place(ms, size);
+    const size_t step = whole ? n : B;
     pgloss_status first = PGLOSS_OK;
     chunk c;
-    for (size_t base = 0; base < n; base += B) {
-        const size_t cnt = n - base < B ? n - base : B;
+    for (size_t base = 0; base < n; base += step) {
+        const size_t cnt = n - base < step ? n - base : step;
         size_t bad;
-        gather3(L, wo, size, base, cnt, &c.in[0], c.o);
-        gather3(L, wi, size, base, cnt, &c.in[3], c.x);
+        gather3(L, &wo, size, base, cnt, &c.in[0], c.o);
+        gather3(L, &wi, size, base, cnt, &c.in[3], c.x);
         prefetch_rows(wo.ptr, wo.stride, size, base + cnt, n, 0);
         prefetch_rows(wi.ptr, wi.stride, size, base + cnt, n, 0);
         if (want_f)
@@ -326,7 +372,7 @@ pgloss_status pgloss_eval_pdf_batch(const pgloss_batch_options *options,
             gather_materials(L, ms, size, base, cnt, &c);
         c.y[0] = c.y[1] = c.y[2] = c.y[3] = NULL;
         if (want_f)
-            out3(f, size, base, &c.out[0], c.y);
+            out3(&f, size, base, &c.out[0], c.y);
         if (want_p)
             c.y[3] = pgloss__out(pdf.ptr, pdf.stride, size, base, c.out[3]);
         if (f64) {
@@ -345,7 +391,7 @@ pgloss_status pgloss_eval_pdf_batch(const pgloss_batch_options *options,
             bad = L->eval_pdf[o.precision == PGLOSS_PRECISION_FAST](&s.c, cnt, vo, vi, vf, c.y[3]);
         }
         if (want_f)
-            scatter3(L, f, size, base, cnt, c.y);
+            scatter3(L, &f, size, base, cnt, c.y);
         if (want_p)
             pgloss__scatter(pdf.ptr, pdf.stride, size, base, cnt, c.y[3]);
         first = chunk_done(&a, base, cnt, bad, status, first);
@@ -409,23 +455,29 @@ pgloss_status pgloss_sample_batch(const pgloss_batch_options *options, const pgl
     setup s;
     set_up(m, ms, lobes, f64, &s);
     const inputs a = {size, ms, wo, u, 1};
+    const int whole = in_place3(wo.ptr, wo.stride, size) && in_place3(u.ptr, u.stride, size) &&
+                      in_place3((const void *const *)wi.ptr, wi.stride, size) &&
+                      pgloss__in_place(pdf.ptr, pdf.stride, size) &&
+                      in_place3((const void *const *)weight.ptr, weight.stride, size) &&
+                      materials_in_place(ms, size);
+    const size_t step = whole ? n : B;
     pgloss_status first = PGLOSS_OK;
     chunk c;
-    for (size_t base = 0; base < n; base += B) {
-        const size_t cnt = n - base < B ? n - base : B;
+    for (size_t base = 0; base < n; base += step) {
+        const size_t cnt = n - base < step ? n - base : step;
         size_t bad;
         unsigned char *lb = lobe ? lobe + base : NULL;
-        gather3(L, wo, size, base, cnt, &c.in[0], c.o);
-        gather3(L, u, size, base, cnt, &c.in[3], c.x);
+        gather3(L, &wo, size, base, cnt, &c.in[0], c.o);
+        gather3(L, &u, size, base, cnt, &c.in[3], c.x);
         prefetch_rows(wo.ptr, wo.stride, size, base + cnt, n, 0);
         prefetch_rows(u.ptr, u.stride, size, base + cnt, n, 0);
         prefetch_rows((const void *const *)wi.ptr, wi.stride, size, base + cnt, n, 1);
         prefetch_rows((const void *const *)weight.ptr, weight.stride, size, base + cnt, n, 1);
         if (ms)
             gather_materials(L, ms, size, base, cnt, &c);
-        out3(wi, size, base, &c.out[0], c.y);
+        out3(&wi, size, base, &c.out[0], c.y);
         c.y[3] = pgloss__out(pdf.ptr, pdf.stride, size, base, c.out[3]);
-        out3(weight, size, base, &c.out[4], c.y + 4);
+        out3(&weight, size, base, &c.out[4], c.y + 4);
         if (f64) {
             const pgloss__vec3_d vo = {c.o[0], c.o[1], c.o[2]};
             const pgloss__vec3_out_d vw = {c.y[0], c.y[1], c.y[2]};
@@ -444,9 +496,9 @@ pgloss_status pgloss_sample_batch(const pgloss_batch_options *options, const pgl
             bad = L->sample[o.precision == PGLOSS_PRECISION_FAST](&s.c, cnt, vo, c.x[0], c.x[1],
                                                                    c.x[2], vw, c.y[3], vg, lb);
         }
-        scatter3(L, wi, size, base, cnt, c.y);
+        scatter3(L, &wi, size, base, cnt, c.y);
         pgloss__scatter(pdf.ptr, pdf.stride, size, base, cnt, c.y[3]);
-        scatter3(L, weight, size, base, cnt, c.y + 4);
+        scatter3(L, &weight, size, base, cnt, c.y + 4);
         first = chunk_done(&a, base, cnt, bad, status, first);
     }
     return first;

@@ -69,6 +69,7 @@ typedef struct pgloss__call_f {
     unsigned active;               /* m: lobes & m->lobes; ms: the call's lobes (each element
                                       narrows them to those it has) */
     int norm;
+    int clamp; /* whether outputs can exceed FLT_MAX (per element: always) */
 } pgloss__call_f;
 struct pgloss__consts_d;
 

@@ -131,51 +131,67 @@ PGLOSS_INLINE_FN pv_m load_dir(const float *xs, const float *ys, const float *zs
 
 /* ---- eval / pdf --------------------------------------------------------------------------- */
 
+/* One block: elements [j, j + m), m <= W; returns how many are invalid (the padding is valid). */
+PGLOSS_INLINE_FN size_t eval_block(const pgloss__call_f *c, const V(consts) *k1, const unsigned active,
+                                   const int norm, const int per_element, const int clamp,
+                                   const int want_f, const int want_p, size_t j, size_t m,
+                                   pgloss__vec3_f wo, pgloss__vec3_f wi, pgloss__rgb_out_f f,
+                                   float *pdf)
+{
+    pv_f ox = load_part(wo.x + j, m, 0.0f), oy = load_part(wo.y + j, m, 0.0f);
+    pv_f oz = load_part(wo.z + j, m, 1.0f), ix = load_part(wi.x + j, m, 0.0f);
+    pv_f iy = load_part(wi.y + j, m, 0.0f), iz = load_part(wi.z + j, m, 1.0f);
+    pv_m ok = V(units)(&ox, &oy, &oz, &ix, &iy, &iz);
+    V(consts) k = *k1;
+    if (per_element) {
+        const lane_material l = lane_materials(c->ms, active, norm, j, m);
+        k = l.k;
+        ok = pv_and(ok, l.good);
+    }
+    pv_f fv[3], p;
+    V(eval_pdf_unit)(&k, active, norm, PGLOSS_FAST, clamp, ox, oy, oz, ix, iy, iz, ok, fv, &p);
+    if (want_f) {
+        store_part(f.r + j, m, fv[0]);
+        store_part(f.g + j, m, fv[1]);
+        store_part(f.b + j, m, fv[2]);
+    }
+    if (want_p)
+        store_part(pdf + j, m, p);
+    return (size_t)pv_count(pv_not(ok));
+}
+
+/* Full blocks (m = W, a constant: plain loads and stores), then the last, partial one. */
 PGLOSS_INLINE_FN size_t eval_loop(const pgloss__call_f *c, const unsigned active, const int norm,
-                                  const int per_element, const int want_f, const int want_p,
-                                  size_t n, pgloss__vec3_f wo,
+                                  const int per_element, const int clamp, const int want_f,
+                                  const int want_p, size_t n, pgloss__vec3_f wo,
                                   pgloss__vec3_f wi, pgloss__rgb_out_f f, float *pdf)
 {
     const V(consts) k1 = broadcast(per_element ? &no_material : c->m, active);
-    size_t bad = 0;
-    for (size_t j = 0; j < n; j += W) {
-        const size_t m = n - j < W ? n - j : W;
-        pv_f ox, oy, oz, ix, iy, iz, fv[3], p;
-        pv_m ok = pv_and(load_dir(wo.x, wo.y, wo.z, j, m, &ox, &oy, &oz),
-                         load_dir(wi.x, wi.y, wi.z, j, m, &ix, &iy, &iz));
-        V(consts) k = k1;
-        if (per_element) {
-            const lane_material l = lane_materials(c->ms, active, norm, j, m);
-            k = l.k;
-            ok = pv_and(ok, l.good);
-        }
-        V(eval_pdf_unit)(&k, active, norm, PGLOSS_FAST, ox, oy, oz, ix, iy, iz, ok, fv, &p);
-        if (want_f) {
-            store_part(f.r + j, m, fv[0]);
-            store_part(f.g + j, m, fv[1]);
-            store_part(f.b + j, m, fv[2]);
-        }
-        if (want_p)
-            store_part(pdf + j, m, p);
-        bad += (size_t)pv_count(pv_not(ok)); /* the padding is valid */
-    }
+    size_t bad = 0, j = 0;
+    for (; j + W <= n; j += W)
+        bad += eval_block(c, &k1, active, norm, per_element, clamp, want_f, want_p, j, W, wo, wi,
+                          f, pdf);
+    if (j < n)
+        bad += eval_block(c, &k1, active, norm, per_element, clamp, want_f, want_p, j, n - j, wo,
+                          wi, f, pdf);
     return bad;
 }
 
 /* One out-of-line function per (lobes, normalisation) (PGLOSS__EACH_LOBES), choosing among
- * its six loops; the entry point picks the function. */
+ * its nine loops (per element, or one material whose outputs can or cannot exceed FLT_MAX;
+ * outputs wanted); the entry point picks the function. */
 #define EVAL_FN(A, N) CAT(eval, A, N)
-#define OUT(A, N, E)                                                                               \
-    (wf && wp ? eval_loop(c, A, N, E, 1, 1, n, wo, wi, f, pdf)                                     \
-              : (wf ? eval_loop(c, A, N, E, 1, 0, n, wo, wi, f, pdf)                               \
-                    : eval_loop(c, A, N, E, 0, 1, n, wo, wi, f, pdf)))
+#define OUT(A, N, E, C)                                                                            \
+    (wf && wp ? eval_loop(c, A, N, E, C, 1, 1, n, wo, wi, f, pdf)                                  \
+              : (wf ? eval_loop(c, A, N, E, C, 1, 0, n, wo, wi, f, pdf)                            \
+                    : eval_loop(c, A, N, E, C, 0, 1, n, wo, wi, f, pdf)))
 #define DEFINE_EVAL(A, N)                                                                          \
     static PGLOSS__NOINLINE size_t EVAL_FN(A, N)(const pgloss__call_f *c, size_t n,                \
                                                  pgloss__vec3_f wo, pgloss__vec3_f wi,             \
                                                  pgloss__rgb_out_f f, float *pdf)                  \
     {                                                                                              \
         const int wf = f.r != NULL, wp = pdf != NULL;                                              \
-        return c->ms ? OUT(A, N, 1) : OUT(A, N, 0);                                                \
+        return c->ms ? OUT(A, N, 1, 1) : (c->clamp ? OUT(A, N, 0, 1) : OUT(A, N, 0, 0));           \
     }
 PGLOSS__EACH_LOBES(DEFINE_EVAL)
 #undef DEFINE_EVAL
@@ -238,7 +254,7 @@ PGLOSS_INLINE_FN size_t sample_loop(const pgloss__call_f *c, const unsigned acti
         const pv_f wz = pv_sel(drawn, pv_sel(spec, sz, dz), one);
         const pv_m good = pv_and(drawn, pv_or(pv_not(spec), pv_gt(oh, zero)));
         pv_f f[3], p;
-        V(eval_pdf_unit)(&k, active, norm, PGLOSS_FAST, ox, oy, oz, wx, wy, wz, good, f, &p);
+        V(eval_pdf_unit)(&k, active, norm, PGLOSS_FAST, 1, ox, oy, oz, wx, wy, wz, good, f, &p);
         V(weight)(good, wx, wy, wz, &p, &f[0], &f[1], &f[2]);
         store_part(wi.x + j, m, wx);
         store_part(wi.y + j, m, wy);

@@ -87,15 +87,6 @@ PGLOSS_INLINE_FN pgloss_inl_consts pgloss_inl_consts_of(const pgloss_material *m
                                       (active & PGLOSS_LOBE_SPECULAR) != 0);
 }
 
-/* wo and wi as the lobe takes them (lobe.h's unit); false for a zero or non-finite one. The
- * common case, both near unit, is one test and one branch. */
-PGLOSS_INLINE_FN int pgloss_inl_units(pgloss_vec3 *wo, pgloss_vec3 *wi)
-{
-    if (pgloss_inl_near_unit(wo->x, wo->y, wo->z) & pgloss_inl_near_unit(wi->x, wi->y, wi->z))
-        return 1;
-    return pgloss_inl_unit(&wo->x, &wo->y, &wo->z) & pgloss_inl_unit(&wi->x, &wi->y, &wi->z);
-}
-
 /* ---- the per-shading-point API (contracts: pgloss/brdf.h) --------------------------------- */
 
 PGLOSS_INLINE_FN pgloss_status pgloss_eval_pdf_inline(const pgloss_material *m, pgloss_vec3 wo,
@@ -106,12 +97,12 @@ PGLOSS_INLINE_FN pgloss_status pgloss_eval_pdf_inline(const pgloss_material *m, 
     if (pdf) *pdf = 0.0f;
     if (!m || (!f && !pdf))
         return PGLOSS_ERR_NULL;
-    if (!pgloss_inl_units(&wo, &wi))
+    if (!pgloss_inl_units(&wo.x, &wo.y, &wo.z, &wi.x, &wi.y, &wi.z))
         return PGLOSS_ERR_DIRECTION;
     const unsigned active = lobes & m->lobes & PGLOSS_LOBE_ALL;
     const pgloss_inl_consts k = pgloss_inl_consts_of(m, active);
     float fv[3], p;
-    pgloss_inl_eval_pdf_unit(&k, active, (int)m->normalization, 0, wo.x, wo.y, wo.z, wi.x, wi.y,
+    pgloss_inl_eval_pdf_unit(&k, active, (int)m->normalization, 0, 1, wo.x, wo.y, wo.z, wi.x, wi.y,
                              wi.z, 1, fv, &p);
     if (f) {
         f->r = fv[0];
@@ -176,7 +167,7 @@ PGLOSS_INLINE_FN pgloss_status pgloss_sample_inline(const pgloss_material *m, pg
     if (!good)
         return PGLOSS_OK;
     float fv[3], p;
-    pgloss_inl_eval_pdf_unit(&k, active, (int)m->normalization, 0, wo.x, wo.y, wo.z, w.x, w.y,
+    pgloss_inl_eval_pdf_unit(&k, active, (int)m->normalization, 0, 1, wo.x, wo.y, wo.z, w.x, w.y,
                              w.z, 1, fv, &p);
     pgloss_inl_weight(1, w.x, w.y, w.z, &p, &fv[0], &fv[1], &fv[2]);
     s->pdf = p;

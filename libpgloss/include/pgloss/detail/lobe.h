@@ -177,6 +177,16 @@ PGLOSS_KFN pv_m PGLOSS_K(unit)(pv_f *x, pv_f *y, pv_f *z)
     return pv_or(nu, ok);
 }
 
+/* Two directions as the lobe takes them: one test and one branch where both are near-unit,
+ * as a renderer's are; false where either is zero or not finite. */
+PGLOSS_KFN pv_m PGLOSS_K(units)(pv_f *ox, pv_f *oy, pv_f *oz, pv_f *ix, pv_f *iy, pv_f *iz)
+{
+    const pv_m both = pv_and(PGLOSS_K(near_unit)(*ox, *oy, *oz), PGLOSS_K(near_unit)(*ix, *iy, *iz));
+    if (pv_all(both))
+        return both;
+    return pv_and(PGLOSS_K(unit)(ox, oy, oz), PGLOSS_K(unit)(ix, iy, iz));
+}
+
 /* ---- the material ---------------------------------------------------------------------------- */
 
 /* What pgloss_material_init derives from validated parameters (brdf.h), lane by lane: one
@@ -296,9 +306,11 @@ PGLOSS_KFN pv_f PGLOSS_K(rsqrt)(pv_f x, const int fast)
  *   6. normalisation: WARD 1/sqrt(ci' co') (eq. 2), WARD_DUR its square, BOUNDED hhs/hzc²
  *      with hhs = |ô + î|²/hzc² = |h/hzc|² ro ri; fs = spec_scale e norm
  *   7. Walter 2005's pdf: p_spec = 2 pdf_scale e hhs / hzc; pdf += Ps p_spec
- *   8. outputs at most FLT_MAX, 0 below the horizon */
+ *   8. outputs at most FLT_MAX (clamp: for a material whose outputs can exceed it), 0 below
+ *      the horizon */
 PGLOSS_KFN void PGLOSS_K(eval_pdf_unit)(const PGLOSS_K(consts) *k, const unsigned active,
-                                       const int norm, const int fast, pv_f ox, pv_f oy, pv_f oz,
+                                       const int norm, const int fast, const int clamp,
+                                       pv_f ox, pv_f oy, pv_f oz,
                                        pv_f ix, pv_f iy, pv_f iz, pv_m valid, pv_f f[3],
                                        pv_f *pdf)
 {
@@ -346,7 +358,9 @@ PGLOSS_KFN void PGLOSS_K(eval_pdf_unit)(const PGLOSS_K(consts) *k, const unsigne
             if (norm == PGLOSS_NORM_WARD_DUR)
                 n = n * n;
         }
-        const pv_f fs = pv_min(k->spec_scale * e * n, pv_f1(FLT_MAX));
+        pv_f fs = k->spec_scale * e * n;
+        if (clamp)
+            fs = pv_min(fs, pv_f1(FLT_MAX));
         fr = fr + fs;
         fg = fg + fs;
         fb = fb + fs;
@@ -354,10 +368,16 @@ PGLOSS_KFN void PGLOSS_K(eval_pdf_unit)(const PGLOSS_K(consts) *k, const unsigne
         p = p + (k->pdf_s * e) * (hhs * inv_hzc);
     }
     /* 8. outputs */
-    f[0] = pv_sel(upper, pv_min(fr, pv_f1(FLT_MAX)), pv_f1(0.0f));
-    f[1] = pv_sel(upper, pv_min(fg, pv_f1(FLT_MAX)), pv_f1(0.0f));
-    f[2] = pv_sel(upper, pv_min(fb, pv_f1(FLT_MAX)), pv_f1(0.0f));
-    *pdf = pv_sel(upper, pv_min(p, pv_f1(FLT_MAX)), pv_f1(0.0f));
+    if (clamp) {
+        fr = pv_min(fr, pv_f1(FLT_MAX));
+        fg = pv_min(fg, pv_f1(FLT_MAX));
+        fb = pv_min(fb, pv_f1(FLT_MAX));
+        p = pv_min(p, pv_f1(FLT_MAX));
+    }
+    f[0] = pv_sel(upper, fr, pv_f1(0.0f));
+    f[1] = pv_sel(upper, fg, pv_f1(0.0f));
+    f[2] = pv_sel(upper, fb, pv_f1(0.0f));
+    *pdf = pv_sel(upper, p, pv_f1(0.0f));
 }
 
 /* ---- sampling --------------------------------------------------------------------------------- */
