@@ -55,7 +55,7 @@ static inline __m256 pgloss__load_part8(const float *p, size_t m, float fill)
 #define pv_f_of(a) __builtin_convertvector(a, __m256)
 #define pv_rcp_est _mm256_rcp_ps
 #define pv_rsqrt_est _mm256_rsqrt_ps
-#define PV_RCP_STEPS 2
+#define PV_RCP_STEPS 1
 #define PV_RSQRT_STEPS 1
 #define pv_fma _mm256_fmadd_ps
 #define pv_fnma _mm256_fnmadd_ps

@@ -61,7 +61,7 @@ static inline __m128 pgloss__floor4(__m128 x) /* |x| < 2^31 */
 #define pv_f_of(a) __builtin_convertvector(a, __m128)
 #define pv_rcp_est _mm_rcp_ps
 #define pv_rsqrt_est _mm_rsqrt_ps
-#define PV_RCP_STEPS 2
+#define PV_RCP_STEPS 1
 #define PV_RSQRT_STEPS 1
 #define pv_fma(a, b, c) ((a) * (b) + (c))
 #define pv_fnma(a, b, c) ((c) - (a) * (b))

@@ -318,7 +318,9 @@ PGLOSS_KFN void PGLOSS_K(eval_pdf_unit)(const PGLOSS_K(consts) *k, const unsigne
     const pv_f ro = 1.5f - 0.5f * (ox * ox + oy * oy + oz * oz);
     const pv_f ri = 1.5f - 0.5f * (ix * ix + iy * iy + iz * iz);
     const pv_f cos_o = oz * ro, cos_i = iz * ri;
-    const pv_m upper = pv_and(valid, pv_and(pv_gt(cos_o, pv_f1(0.0f)), pv_gt(cos_i, pv_f1(0.0f))));
+    /* ro, ri are within 2^-20 of 1: the cosines have the signs of oz, iz (an eval of the
+     * diffuse lobe alone needs no more) */
+    const pv_m upper = pv_and(valid, pv_and(pv_gt(oz, pv_f1(0.0f)), pv_gt(iz, pv_f1(0.0f))));
     pv_f fr = pv_f1(0.0f), fg = pv_f1(0.0f), fb = pv_f1(0.0f), p = pv_f1(0.0f);
     if (active & PGLOSS_LOBE_DIFFUSE) { /* 2. diffuse */
         fr = k->fd[0];
