@@ -318,9 +318,11 @@ PGLOSS_KFN void PGLOSS_K(eval_pdf_unit)(const PGLOSS_K(consts) *k, const unsigne
     const pv_f ro = 1.5f - 0.5f * (ox * ox + oy * oy + oz * oz);
     const pv_f ri = 1.5f - 0.5f * (ix * ix + iy * iy + iz * iz);
     const pv_f cos_o = oz * ro, cos_i = iz * ri;
-    /* ro, ri are within 2^-20 of 1: the cosines have the signs of oz, iz (an eval of the
-     * diffuse lobe alone needs no more) */
-    const pv_m upper = pv_and(valid, pv_and(pv_gt(oz, pv_f1(0.0f)), pv_gt(iz, pv_f1(0.0f))));
+    /* ro, ri are within 2^-20 of 1, so the cosines have the signs of oz, iz: FAST's diffuse
+     * lobe alone tests those (its f needs no cosine; the per-point call is faster as is) */
+    const int signs = fast && !(active & PGLOSS_LOBE_SPECULAR);
+    const pv_f so = signs ? oz : cos_o, si = signs ? iz : cos_i;
+    const pv_m upper = pv_and(valid, pv_and(pv_gt(so, pv_f1(0.0f)), pv_gt(si, pv_f1(0.0f))));
     pv_f fr = pv_f1(0.0f), fg = pv_f1(0.0f), fb = pv_f1(0.0f), p = pv_f1(0.0f);
     if (active & PGLOSS_LOBE_DIFFUSE) { /* 2. diffuse */
         fr = k->fd[0];
