@@ -46,11 +46,12 @@ static int direction_ok(double x, double y, double z)
     return x != 0.0 || y != 0.0 || z != 0.0;
 }
 
-/* The inputs of a call, as the statuses read them. */
+/* The inputs of a call, as the statuses read them (pointers to the arguments: copies of them
+ * would cost every call a reload that misses store forwarding). */
 typedef struct inputs {
     size_t size; /* bytes per value */
     const pgloss_physical_array *ms;
-    pgloss_strided3 wo, second; /* wi (eval) or u (sample) */
+    const pgloss_strided3 *wo, *second; /* wi (eval) or u (sample) */
     int sample;
 } inputs;
 
@@ -58,9 +59,9 @@ static double at1(pgloss_strided s, size_t j, size_t size)
 {
     return pgloss__value_at(s.ptr, s.stride, j, size);
 }
-static double at3(pgloss_strided3 s, int c, size_t j, size_t size)
+static double at3(const pgloss_strided3 *s, int c, size_t j, size_t size)
 {
-    return pgloss__value_at(s.ptr[c], s.stride, j, size);
+    return pgloss__value_at(s->ptr[c], s->stride, j, size);
 }
 
 static pgloss_status elem_status(const inputs *a, size_t j)
@@ -68,8 +69,8 @@ static pgloss_status elem_status(const inputs *a, size_t j)
     const size_t sz = a->size;
     if (a->ms) {
         const pgloss_physical_array *p = a->ms;
-        const double v[6] = {at3(p->rho_d, 0, j, sz), at3(p->rho_d, 1, j, sz),
-                             at3(p->rho_d, 2, j, sz), at1(p->rho_s, j, sz),
+        const double v[6] = {at3(&p->rho_d, 0, j, sz), at3(&p->rho_d, 1, j, sz),
+                             at3(&p->rho_d, 2, j, sz), at1(p->rho_s, j, sz),
                              at1(p->alpha_x, j, sz),
                              at1(p->alpha_y.ptr ? p->alpha_y : p->alpha_x, j, sz)};
         const pgloss_status s = material_status(v);
@@ -187,6 +188,23 @@ static void gather3(const pgloss__loops *L, const pgloss_strided3 *sp, size_t si
     }
     for (int c = 0; c < 3; ++c)
         col[c] = pgloss__gather(s.ptr[c], s.stride, size, base, m, buf[c]);
+}
+
+/* The input columns of a call whose arrays are all in place: the arrays themselves. */
+static void columns_in_place(const pgloss_strided3 *a, const pgloss_strided3 *b,
+                             const pgloss_physical_array *ms, chunk *c)
+{
+    for (int k = 0; k < 3; ++k) {
+        c->o[k] = a->ptr[k];
+        c->x[k] = b->ptr[k];
+    }
+    if (ms) {
+        for (int k = 0; k < 3; ++k)
+            c->mat[k] = ms->rho_d.ptr[k];
+        c->mat[3] = ms->rho_s.ptr;
+        c->mat[4] = ms->alpha_x.ptr;
+        c->mat[5] = ms->alpha_y.ptr ? ms->alpha_y.ptr : ms->alpha_x.ptr;
+    }
 }
 
 static void gather_materials(const pgloss__loops *L, const pgloss_physical_array *p, size_t size,
@@ -351,7 +369,7 @@ pgloss_status pgloss_eval_pdf_batch(const pgloss_batch_options *options,
     const size_t size = f64 ? 8 : 4;
     setup s;
     set_up(m, ms, lobes, f64, &s);
-    const inputs a = {size, ms, wo, wi, 0};
+    const inputs a = {size, ms, &wo, &wi, 0};
     const int whole = in_place3(wo.ptr, wo.stride, size) && in_place3(wi.ptr, wi.stride, size) &&
                       (!want_f || in_place3((const void *const *)f.ptr, f.stride, size)) &&
                       (!want_p || pgloss__in_place(pdf.ptr, pdf.stride, size)) &&
@@ -362,14 +380,18 @@ pgloss_status pgloss_eval_pdf_batch(const pgloss_batch_options *options,
     for (size_t base = 0; base < n; base += step) {
         const size_t cnt = n - base < step ? n - base : step;
         size_t bad;
-        gather3(L, &wo, size, base, cnt, &c.in[0], c.o);
-        gather3(L, &wi, size, base, cnt, &c.in[3], c.x);
-        prefetch_rows(wo.ptr, wo.stride, size, base + cnt, n, 0);
-        prefetch_rows(wi.ptr, wi.stride, size, base + cnt, n, 0);
-        if (want_f)
-            prefetch_rows((const void *const *)f.ptr, f.stride, size, base + cnt, n, 1);
-        if (ms)
-            gather_materials(L, ms, size, base, cnt, &c);
+        if (whole) {
+            columns_in_place(&wo, &wi, ms, &c);
+        } else {
+            gather3(L, &wo, size, base, cnt, &c.in[0], c.o);
+            gather3(L, &wi, size, base, cnt, &c.in[3], c.x);
+            prefetch_rows(wo.ptr, wo.stride, size, base + cnt, n, 0);
+            prefetch_rows(wi.ptr, wi.stride, size, base + cnt, n, 0);
+            if (want_f)
+                prefetch_rows((const void *const *)f.ptr, f.stride, size, base + cnt, n, 1);
+            if (ms)
+                gather_materials(L, ms, size, base, cnt, &c);
+        }
         c.y[0] = c.y[1] = c.y[2] = c.y[3] = NULL;
         if (want_f)
             out3(&f, size, base, &c.out[0], c.y);
@@ -390,7 +412,7 @@ pgloss_status pgloss_eval_pdf_batch(const pgloss_batch_options *options,
             s.c.ms = m ? NULL : &mf;
             bad = L->eval_pdf[o.precision == PGLOSS_PRECISION_FAST](&s.c, cnt, vo, vi, vf, c.y[3]);
         }
-        if (want_f)
+        if (want_f && !whole)
             scatter3(L, &f, size, base, cnt, c.y);
         if (want_p)
             pgloss__scatter(pdf.ptr, pdf.stride, size, base, cnt, c.y[3]);
@@ -454,7 +476,7 @@ pgloss_status pgloss_sample_batch(const pgloss_batch_options *options, const pgl
     const size_t size = f64 ? 8 : 4;
     setup s;
     set_up(m, ms, lobes, f64, &s);
-    const inputs a = {size, ms, wo, u, 1};
+    const inputs a = {size, ms, &wo, &u, 1};
     const int whole = in_place3(wo.ptr, wo.stride, size) && in_place3(u.ptr, u.stride, size) &&
                       in_place3((const void *const *)wi.ptr, wi.stride, size) &&
                       pgloss__in_place(pdf.ptr, pdf.stride, size) &&
@@ -467,14 +489,18 @@ pgloss_status pgloss_sample_batch(const pgloss_batch_options *options, const pgl
         const size_t cnt = n - base < step ? n - base : step;
         size_t bad;
         unsigned char *lb = lobe ? lobe + base : NULL;
-        gather3(L, &wo, size, base, cnt, &c.in[0], c.o);
-        gather3(L, &u, size, base, cnt, &c.in[3], c.x);
-        prefetch_rows(wo.ptr, wo.stride, size, base + cnt, n, 0);
-        prefetch_rows(u.ptr, u.stride, size, base + cnt, n, 0);
-        prefetch_rows((const void *const *)wi.ptr, wi.stride, size, base + cnt, n, 1);
-        prefetch_rows((const void *const *)weight.ptr, weight.stride, size, base + cnt, n, 1);
-        if (ms)
-            gather_materials(L, ms, size, base, cnt, &c);
+        if (whole) {
+            columns_in_place(&wo, &u, ms, &c);
+        } else {
+            gather3(L, &wo, size, base, cnt, &c.in[0], c.o);
+            gather3(L, &u, size, base, cnt, &c.in[3], c.x);
+            prefetch_rows(wo.ptr, wo.stride, size, base + cnt, n, 0);
+            prefetch_rows(u.ptr, u.stride, size, base + cnt, n, 0);
+            prefetch_rows((const void *const *)wi.ptr, wi.stride, size, base + cnt, n, 1);
+            prefetch_rows((const void *const *)weight.ptr, weight.stride, size, base + cnt, n, 1);
+            if (ms)
+                gather_materials(L, ms, size, base, cnt, &c);
+        }
         out3(&wi, size, base, &c.out[0], c.y);
         c.y[3] = pgloss__out(pdf.ptr, pdf.stride, size, base, c.out[3]);
         out3(&weight, size, base, &c.out[4], c.y + 4);
@@ -496,9 +522,11 @@ pgloss_status pgloss_sample_batch(const pgloss_batch_options *options, const pgl
             bad = L->sample[o.precision == PGLOSS_PRECISION_FAST](&s.c, cnt, vo, c.x[0], c.x[1],
                                                                    c.x[2], vw, c.y[3], vg, lb);
         }
-        scatter3(L, &wi, size, base, cnt, c.y);
+        if (!whole) {
+            scatter3(L, &wi, size, base, cnt, c.y);
+            scatter3(L, &weight, size, base, cnt, c.y + 4);
+        }
         pgloss__scatter(pdf.ptr, pdf.stride, size, base, cnt, c.y[3]);
-        scatter3(L, &weight, size, base, cnt, c.y + 4);
         first = chunk_done(&a, base, cnt, bad, status, first);
     }
     return first;
