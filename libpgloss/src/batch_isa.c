@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: Apache-2.0
 /* The float batch loops: the lobe of pgloss/detail/lobe.h over the SIMD helper of the ISA this
  * file is compiled for, a block of PV_LANES elements at a time. The last block of a call is
- * padded with valid inputs, so that every element runs the same code wherever it lies.
+ * padded with valid inputs, so that every element runs the same code wherever it lies; with
+ * one material, FLOAT runs it on the one-lane helper instead, which gives the same bits.
  * libpgloss/CMakeLists.txt compiles it per ISA and tier: PGLOSS_FAST=0 for FLOAT (IEEE
  * operations, never fused: the same bits on every ISA), PGLOSS_FAST=1 for FAST (the lobe's
  * fast option, and -ffp-contract=fast: multiply-adds fused where the ISA has FMA);
@@ -160,6 +161,34 @@ PGLOSS_INLINE_FN size_t eval_block(const pgloss__call_f *c, const V(consts) *k1,
     return (size_t)pv_count(pv_not(ok));
 }
 
+#if !PGLOSS_FAST && PV_LANES > 1
+/* FLOAT's last, partial block with one material: the one-lane lobe of pgloss/inline.h, whose
+ * bits are a lane's (Isa.FloatTierEqualsInline), at a fraction of a padded block's latency. */
+PGLOSS_INLINE_FN size_t eval_tail(const pgloss_material *mat, const unsigned active, const int norm,
+                                  const int clamp, const int want_f, const int want_p, size_t j,
+                                  size_t n, pgloss__vec3_f wo, pgloss__vec3_f wi,
+                                  pgloss__rgb_out_f f, float *pdf)
+{
+    const pgloss_inl_consts k = pgloss_inl_consts_of(mat, active);
+    size_t bad = 0;
+    for (; j < n; ++j) {
+        float ox = wo.x[j], oy = wo.y[j], oz = wo.z[j], ix = wi.x[j], iy = wi.y[j], iz = wi.z[j];
+        const int ok = pgloss_inl_units(&ox, &oy, &oz, &ix, &iy, &iz);
+        float fv[3], p;
+        pgloss_inl_eval_pdf_unit(&k, active, norm, 0, clamp, ox, oy, oz, ix, iy, iz, ok, fv, &p);
+        if (want_f) {
+            f.r[j] = fv[0];
+            f.g[j] = fv[1];
+            f.b[j] = fv[2];
+        }
+        if (want_p)
+            pdf[j] = p;
+        bad += !ok;
+    }
+    return bad;
+}
+#endif
+
 /* Full blocks (m = W, a constant: plain loads and stores), then the last, partial one. */
 PGLOSS_INLINE_FN size_t eval_loop(const pgloss__call_f *c, const unsigned active, const int norm,
                                   const int per_element, const int clamp, const int want_f,
@@ -171,10 +200,14 @@ PGLOSS_INLINE_FN size_t eval_loop(const pgloss__call_f *c, const unsigned active
     for (; j + W <= n; j += W)
         bad += eval_block(c, &k1, active, norm, per_element, clamp, want_f, want_p, j, W, wo, wi,
                           f, pdf);
-    if (j < n)
-        bad += eval_block(c, &k1, active, norm, per_element, clamp, want_f, want_p, j, n - j, wo,
-                          wi, f, pdf);
-    return bad;
+    if (j == n)
+        return bad;
+#if !PGLOSS_FAST && PV_LANES > 1
+    if (!per_element)
+        return bad + eval_tail(c->m, active, norm, clamp, want_f, want_p, j, n, wo, wi, f, pdf);
+#endif
+    return bad + eval_block(c, &k1, active, norm, per_element, clamp, want_f, want_p, j, n - j, wo,
+                            wi, f, pdf);
 }
 
 /* One out-of-line function per (lobes, normalisation) (PGLOSS__EACH_LOBES), choosing among
