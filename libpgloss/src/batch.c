@@ -218,6 +218,25 @@ static void gather_materials(const pgloss__loops *L, const pgloss_physical_array
                     : c->mat[4];
 }
 
+/* A chunk's inputs (directions, and u or the materials) as columns: a call whose arrays are
+ * all in place (whole) takes them as they are; any other gathers them and asks for the next
+ * chunk's rows. */
+static void chunk_inputs(const pgloss__loops *L, int whole, const pgloss_strided3 *a,
+                         const pgloss_strided3 *b, const pgloss_physical_array *ms, size_t size,
+                         size_t base, size_t m, size_t n, chunk *c)
+{
+    if (whole) {
+        columns_in_place(a, b, ms, c);
+        return;
+    }
+    gather3(L, a, size, base, m, &c->in[0], c->o);
+    gather3(L, b, size, base, m, &c->in[3], c->x);
+    prefetch_rows(a->ptr, a->stride, size, base + m, n, 0);
+    prefetch_rows(b->ptr, b->stride, size, base + m, n, 0);
+    if (ms)
+        gather_materials(L, ms, size, base, m, c);
+}
+
 static void out3(const pgloss_strided3_out *sp, size_t size, size_t base, double (*buf)[B],
                  void **col)
 {
@@ -380,18 +399,9 @@ pgloss_status pgloss_eval_pdf_batch(const pgloss_batch_options *options,
     for (size_t base = 0; base < n; base += step) {
         const size_t cnt = n - base < step ? n - base : step;
         size_t bad;
-        if (whole) {
-            columns_in_place(&wo, &wi, ms, &c);
-        } else {
-            gather3(L, &wo, size, base, cnt, &c.in[0], c.o);
-            gather3(L, &wi, size, base, cnt, &c.in[3], c.x);
-            prefetch_rows(wo.ptr, wo.stride, size, base + cnt, n, 0);
-            prefetch_rows(wi.ptr, wi.stride, size, base + cnt, n, 0);
-            if (want_f)
-                prefetch_rows((const void *const *)f.ptr, f.stride, size, base + cnt, n, 1);
-            if (ms)
-                gather_materials(L, ms, size, base, cnt, &c);
-        }
+        chunk_inputs(L, whole, &wo, &wi, ms, size, base, cnt, n, &c);
+        if (want_f && !whole)
+            prefetch_rows((const void *const *)f.ptr, f.stride, size, base + cnt, n, 1);
         c.y[0] = c.y[1] = c.y[2] = c.y[3] = NULL;
         if (want_f)
             out3(&f, size, base, &c.out[0], c.y);
@@ -489,17 +499,10 @@ pgloss_status pgloss_sample_batch(const pgloss_batch_options *options, const pgl
         const size_t cnt = n - base < step ? n - base : step;
         size_t bad;
         unsigned char *lb = lobe ? lobe + base : NULL;
-        if (whole) {
-            columns_in_place(&wo, &u, ms, &c);
-        } else {
-            gather3(L, &wo, size, base, cnt, &c.in[0], c.o);
-            gather3(L, &u, size, base, cnt, &c.in[3], c.x);
-            prefetch_rows(wo.ptr, wo.stride, size, base + cnt, n, 0);
-            prefetch_rows(u.ptr, u.stride, size, base + cnt, n, 0);
+        chunk_inputs(L, whole, &wo, &u, ms, size, base, cnt, n, &c);
+        if (!whole) {
             prefetch_rows((const void *const *)wi.ptr, wi.stride, size, base + cnt, n, 1);
             prefetch_rows((const void *const *)weight.ptr, weight.stride, size, base + cnt, n, 1);
-            if (ms)
-                gather_materials(L, ms, size, base, cnt, &c);
         }
         out3(&wi, size, base, &c.out[0], c.y);
         c.y[3] = pgloss__out(pdf.ptr, pdf.stride, size, base, c.out[3]);
