@@ -40,7 +40,7 @@ returns them. A conversion's verdict on a paint is the core's check of it (``che
 bare conversion). Values outside the range the paper trusts (α > 0.2) give an
 :class:`AlphaUntrustedWarning`. No function returns NaN or Inf for finite input.
 
-Example::
+Example:
 
     >>> import numpy as np, pgloss
     >>> paint = pgloss.Perceptual(L=50.0, a=0.0, b=0.0, c=0.06, d=0.95).to_physical()

@@ -123,6 +123,8 @@ class Physical(_PaintShape):
         Normalisation of the specular lobe (default: the paper's eq. 2, ``WARD``); one value
         for the whole array.
 
+    Notes
+    -----
     The fields broadcast against each other (``rho_d`` without its channel axis): the result
     is a scalar paint when every field is a number (and ``rho_d`` a number or 3 numbers),
     else an array of paints of the broadcast :attr:`shape`. Array fields are copied and
@@ -486,6 +488,8 @@ class Perceptual(_PaintShape):
     d : float or array_like
         Distinctness-of-image gloss (eq. 3), < 1; the paper trusts d ≥ 0.8.
 
+    Notes
+    -----
     The fields broadcast against each other: all numbers give one paint, any array an array
     of paints of the broadcast :attr:`shape` (with ``shape``, ``len()``, indexing and
     iteration as :class:`Physical`; not hashable). An immutable record, like the C struct;

@@ -24,7 +24,7 @@ element with an error raises :class:`pgloss.PglossError`, which carries the whol
 reachable parameters for an out-of-reach paint) and every element's status; with
 ``errors="status"`` nothing is raised and the statuses are in the result.
 
-Example::
+Example:
 
     >>> from pgloss import bridge
     >>> m = bridge.from_paint("openpbr", [50.0, 0.0, 0.0, 0.057, 0.96])

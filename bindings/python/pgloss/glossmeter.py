@@ -16,7 +16,7 @@ Where each aperture number comes from, and which are assumed, is in ``docs/gloss
 sharp Ward lobe reads about 100 ρs cos θ / R_F(θ) GU, so the paper's paints read low at 60° and
 almost nothing at 85°: the inverse inverts what pgloss renders, not a real paint's readings.
 
-Example::
+Example:
 
     >>> import pgloss
     >>> from pgloss import glossmeter

@@ -49,7 +49,7 @@ BUNDLE = {
 }
 #: Where scripts/jspsych.sh installs the pinned packages, in a pgloss checkout.
 NODE_MODULES = Path("web/jspsych/node_modules")
-#: JATOS's worker types (models/common/workers/*Worker.WORKER_TYPE) that a study link can use.
+#: JATOS's worker types (``models/common/workers/*Worker.WORKER_TYPE``) that a study link can use.
 WORKER_TYPES = ("Jatos", "PersonalSingle", "PersonalMultiple", "GeneralSingle", "GeneralMultiple")
 #: What JATOS forbids in a study assets folder name (IOUtils.REGEX_ILLEGAL_IN_FILENAME) and the
 #: names it reserves (StudyProperties.INVALID_DIR_NAMES).

@@ -8,7 +8,7 @@ Every fitting function of :mod:`pgloss.psychophysics` validates its input here, 
 data gets one clear error naming the reason and the offending cell:
 
 * the matrix must be square and n ≥ 3 (:data:`MIN_STIMULI`);
-* it must be symmetric (|δ_ij − δ_ji| ≤ 1e-9·max|δ|): MDS models a distance, and silently
+* it must be symmetric (``|δ_ij − δ_ji| ≤ 1e-9·max|δ|``): MDS models a distance, and silently
   averaging order effects away would hide them — symmetrise yourself with ``(D + D.T) / 2``;
 * proximities must be finite and ≥ 0;
 * the diagonal is ignored (a stimulus is not compared with itself).
