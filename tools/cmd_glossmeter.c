@@ -78,7 +78,8 @@ static void print_readings(FILE *out, const pgloss_glossmeter_readings *r)
                 r->r[k].error);
 }
 
-/* The readings of Fig. 4's 27 paints (paper §3.2.3.1), as text or as a Markdown table (README). */
+/* The readings of Fig. 4's 27 paints (paper §3.2.3.1), as text or as a Markdown table
+ * (docs/guide/gloss-bridge.md). */
 static int fig4(pgloss_cli *cli, int markdown)
 {
     static const double rd[3] = {0.03, 0.193, 0.767}, rs[3] = {0.033, 0.066, 0.099}, al[3] = {0.04, 0.07, 0.10};

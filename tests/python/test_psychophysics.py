@@ -689,14 +689,20 @@ def test_fig6_legend_lists_this_stimulus_set(tmp_path: Path) -> None:
                      "ρs = 0.099", "α = 0.04", "α = 0.07", "α = 0.1"]
 
 
-def test_readme_experiment1_stimuli_in_one_call() -> None:
-    """The README's "Experiment 1's 27 stimuli in one call" gives 27 (it gave 9: α was one value),
-    equal to the 27 stimuli of the psychophysics module, and c, d by eqs. 3–4 written out here."""
-    readme = (Path(__file__).resolve().parents[2] / "README.md").read_text(encoding="utf-8")
-    start = readme.index("# Perceptual functions broadcast: Experiment 1's 27 stimuli")
-    call = readme[start:].split("\n\n")[0]  # the comment and the call, up to the blank line
+def test_guide_experiment1_stimuli_in_one_call() -> None:
+    """docs/guide/python.md's "Experiment 1's 27 stimuli (3 ρd × 3 ρs × 3 α) in one call" gives 27
+    (it once gave 9: α was one value), equal to the 27 stimuli of the psychophysics module, and c,
+    d by eqs. 3–4 written out here."""
+    guide = (Path(__file__).resolve().parents[2] / "docs" / "guide" / "python.md").read_text(encoding="utf-8")
+    start = guide.index(">>> L, c, d = pgloss.gloss_from_physical(")
+    lines = []
+    for line in guide[start:].splitlines():  # the doctest's call: its >>> line and ... lines
+        if lines and not line.startswith("... "):
+            break
+        lines.append(line[4:])
+    call = "\n".join(lines)
     scope = {"np": np, "pgloss": pgloss}
-    exec(call, scope)  # noqa: S102 - the README's own lines
+    exec(call, scope)  # noqa: S102 - the guide's own lines
     L, c, d = (np.asarray(scope[k]) for k in ("L", "c", "d"))
     assert c.size == 27 and d.size == 27 and L.size == 27
     stim = synthetic.experiment1_stimuli()
