@@ -60,9 +60,10 @@ if [[ "$(cat .venv-py/.pgloss-bench-pins 2>/dev/null)" != "${peer_pins[*]}" ]]; 
   echo "${peer_pins[*]}" >.venv-py/.pgloss-bench-pins
 fi
 pb=bindings/python/bench
+# --quick keeps every row: bench_textures.py's in-cache rows need more than 2^16 pairs (size 2048: 2^18).
 if ((q)); then
   run peers "$py" bench/peers.py --n $((1 << 16)) --csv "$out/peers.csv"
-  run python_textures "$py" $pb/bench_textures.py --size 512 --csv "$out/python_textures.csv"
+  run python_textures "$py" $pb/bench_textures.py --size 2048 --repeat 3 --csv "$out/python_textures.csv"
   run python_calls "$py" $pb/bench_calls.py --n $((1 << 16)) --repeat 5
   run python_threads "$py" $pb/bench_threads.py --repeat 5
 else
