@@ -477,7 +477,7 @@ static void perceptual_table(size_t n)
 /* ---- the core clock --------------------------------------------------------------------- */
 
 /* GHz of the running core, from a chain of dependent integer adds (one per cycle on every
- * x86-64 core): the arithmetic bound of BENCHMARKS.md is stated in cycles. 0 elsewhere. */
+ * x86-64 core), to turn ns into cycles (bench/mca.sh counts cycles). 0 elsewhere. */
 static double core_ghz(void)
 {
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
