@@ -78,15 +78,3 @@ html_title = f"pgloss {release}"
 html_theme_options = {"description": "Pellacini, Ferwerda & Greenberg's gloss model", "fixed_sidebar": False}
 html_static_path = []
 html_show_sourcelink = False
-
-
-def _guides_glob(app, docname, source):
-    """The user guides are the toctree glob guide/* of index.md. Sphinx warns about a glob that
-    matches nothing (a warning that suppress_warnings cannot reach in Sphinx 8.2), so while
-    docs/guide/ holds no page the glob is left out and the tree is empty."""
-    if docname == "index" and not any((here / "guide").glob("*.md")):
-        source[0] = source[0].replace("\nguide/*\n", "\n")
-
-
-def setup(app):
-    app.connect("source-read", _guides_glob)
