@@ -22,6 +22,11 @@ case $mode in
   *) echo "bootstrap: unknown mode '$mode' (core | test | apt PACKAGE… | fresh-root)" >&2; exit 2 ;;
 esac
 
+# One bootstrap at a time (scripts/test.sh runs two lanes of layers): apt and the venv below
+# are not safe to set up twice at once.
+exec 9>"${TMPDIR:-/tmp}/pgloss-bootstrap.lock"
+flock 9
+
 missing=()
 for p in "${want[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")

@@ -5,7 +5,8 @@
 # (scripts/test-python.sh: .venv-py; scripts/test-bridge.sh: .venv-bridge). The venv is made
 # anew only when the pins change; `pip install .` (the README's install command, with the venv's
 # pinned build tools) runs only when the package's sources changed, and CMake's build folder
-# (build-py/, see pyproject.toml) is kept, so a reinstall recompiles only what changed.
+# (build-py/VENV/, one per venv, so that two venvs can build at once) is kept, so a reinstall
+# recompiles only what changed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/step.sh
@@ -27,6 +28,7 @@ if [[ "$(cat "$venv/.pgloss-installed" 2>/dev/null)" != "$sources" ]] || ! (cd /
   echo "== pip install . into $venv (sources changed; a first build takes a few minutes)"
   export CMAKE_BUILD_PARALLEL_LEVEL="${CMAKE_BUILD_PARALLEL_LEVEL:-2}"
   # -v: scikit-build-core's CMake and Ninja output ([n/N]), which step shows as progress
-  step "pip install ." "$py" -m pip install -v --disable-pip-version-check --no-build-isolation --force-reinstall --no-deps .
+  step "pip install ." "$py" -m pip install -v --disable-pip-version-check --no-build-isolation --force-reinstall --no-deps \
+    -C "build-dir=$root/build-py/${venv##*/}/{wheel_tag}" .
   echo "$sources" >"$venv/.pgloss-installed"
 fi
