@@ -50,6 +50,6 @@ if [[ $mode == test ]]; then
     echo "bootstrap: creating $venv (mpmath 1.3.0)"
     rm -rf "$venv"
     /usr/bin/python3 -m venv "$venv"
-    step "pip install mpmath" "$venv/bin/pip" install --disable-pip-version-check mpmath==1.3.0
+    step "pip install mpmath" pip_pins "$venv/bin/python" mpmath==1.3.0
   fi
 fi

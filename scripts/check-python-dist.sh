@@ -20,7 +20,7 @@ dist=build-py/dist
 pins=(build==1.6.1 pyproject-hooks==1.3.3 auditwheel==6.8.2 pyelftools==0.33)
 if [[ "$(cat .venv-py/.pgloss-dist-pins 2>/dev/null)" != "${pins[*]}" ]]; then
   echo "== installing ${pins[*]} into .venv-py"
-  step "pip install (pins)" "$py" -m pip install --disable-pip-version-check "${pins[@]}"
+  step "pip install (pins)" pip_pins "$py" "${pins[@]}"
   echo "${pins[*]}" >.venv-py/.pgloss-dist-pins
 fi
 export CMAKE_BUILD_PARALLEL_LEVEL="${CMAKE_BUILD_PARALLEL_LEVEL:-2}"

@@ -19,7 +19,7 @@ if [[ ! -x $py ]] || [[ "$(cat "$venv/.pgloss-pins" 2>/dev/null)" != "${pins[*]}
   echo "== creating $venv (${pins[*]})"
   rm -rf "$venv"
   /usr/bin/python3 -m venv "$venv"
-  step "pip install (pins)" "$py" -m pip install --disable-pip-version-check "${pins[@]}"
+  step "pip install (pins)" pip_pins "$py" "${pins[@]}"
   echo "${pins[*]}" >"$venv/.pgloss-pins"
 fi
 sources=$(find pyproject.toml CMakeLists.txt libpgloss tools bindings/python -type f \
