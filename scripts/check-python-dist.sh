@@ -63,10 +63,10 @@ done
 for d in web blender glsl osl .ci; do
   [[ ! -e $src/$d ]] || { echo "sdist holds $d/, which the package does not need" >&2; exit 1; }
 done
-# CMake's build folder of the sdist's wheel lives outside the unpacked tree (which is laid anew
-# each time at the same path), so that a re-check recompiles only what changed.
-(cd "$src" && "$OLDPWD/$py" -m build --wheel --no-isolation --outdir ../wheel \
-   -C "build-dir=$OLDPWD/build-py/sdist-build/{wheel_tag}" . >../wheel.log 2>&1) ||
+# CMake's build folder of the sdist's wheel is inside the unpacked tree, where pyproject puts it
+# (build-py/): the compile commands are then those of the tree's own wheel above, relative to
+# the build folder, and the compiler cache (scripts/ccache.sh) serves them.
+(cd "$src" && "$OLDPWD/$py" -m build --wheel --no-isolation --outdir ../wheel . >../wheel.log 2>&1) ||
   { cat "$dist/sdist/wheel.log"; exit 1; }
 from_sdist=$(ls "$dist"/sdist/wheel/pgloss-*.whl)
 "$py" - "$wheel" "$from_sdist" <<'EOF'
