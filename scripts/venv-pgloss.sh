@@ -31,6 +31,6 @@ if [[ "$(cat "$venv/.pgloss-installed" 2>/dev/null)" != "$sources" ]] || ! (cd /
   export CMAKE_BUILD_PARALLEL_LEVEL="${CMAKE_BUILD_PARALLEL_LEVEL:-2}"
   # -v: scikit-build-core's CMake and Ninja output ([n/N]), which step shows as progress
   step "pip install ." "$py" -m pip install -v --disable-pip-version-check --no-build-isolation --force-reinstall --no-deps \
-    -C "build-dir=$root/build-${name#.}/{wheel_tag}" .
+    --config-settings="build-dir=$root/build-${name#.}/{wheel_tag}" .
   echo "$sources" >"$venv/.pgloss-installed"
 fi
