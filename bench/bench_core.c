@@ -477,7 +477,7 @@ static void perceptual_table(size_t n)
 /* ---- the core clock --------------------------------------------------------------------- */
 
 /* GHz of the running core, from a chain of dependent integer adds (one per cycle on every
- * x86-64 core): the arithmetic bound of BENCHMARKS.md is stated in cycles. 0 elsewhere. */
+ * x86-64 core), to turn ns into cycles (bench/mca.sh counts cycles). 0 elsewhere. */
 static double core_ghz(void)
 {
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
@@ -530,8 +530,8 @@ int main(int argc, char **argv)
     inputs in;
     make_inputs(&in, 1u << 20, &glossy);
 
-    printf("pgloss %s; best ISA here: %s; batch of %zu; median of %d runs\n\n", "core",
-           pgloss_isa_name(pgloss_isa_best()), n, g_reps);
+    printf("Best ISA here: %s; batch of %zu; median of %d runs of at least %.0f ms each; ns per call\n\n",
+           pgloss_isa_name(pgloss_isa_best()), n, g_reps, g_min_time * 1e3);
     printf("Core clock: %.2f GHz (dependent integer adds; 0: not measured)\n\n", core_ghz());
     printf("| function | path | tier | ISA | material | ns/call | max rel err | mean rel err |\n");
     printf("|---|---|---|---|---|---:|---:|---:|\n");
@@ -560,7 +560,7 @@ int main(int argc, char **argv)
     }
 
     printf("\nLobe masks (batched eval_pdf, eval and sample, best ISA; materials with both lobes, or "
-           "one):\n\n");
+           "one; batch of %zu; median of %d runs):\n\n", n, g_reps);
     printf("| function | path | tier | ISA | material | ns/call | max rel err | mean rel err |\n");
     printf("|---|---|---|---|---|---:|---:|---:|\n");
     {
@@ -602,7 +602,8 @@ int main(int argc, char **argv)
         row("specular", &c, "batch", "float", "auto");
     }
 
-    printf("\nBatch size (float eval_pdf, best ISA): ns per element\n\n| n | ns/elem |\n|---:|---:|\n");
+    printf("\nBatch size (float eval_pdf, best ISA; median of %d runs): ns per element\n\n| n | ns/elem |\n|---:|---:|\n",
+           g_reps);
     const size_t sizes[] = {1, 16, 256, 4096, 65536, 1u << 20};
     for (size_t k = 0; k < sizeof sizes / sizeof sizes[0]; ++k) {
         ctx c = {&glossy, PGLOSS_LOBE_ALL, &in, sizes[k], FN_EVAL_PDF, 0, {PGLOSS_PRECISION_FLOAT, PGLOSS_ISA_AUTO, PGLOSS_FLOAT32}};
@@ -612,8 +613,10 @@ int main(int argc, char **argv)
             fprintf(g_csv, "eval_pdf,batch-n=%zu,float,auto,both,%.4f,,\n", sizes[k], t);
     }
 
-    printf("\nPerceptual conversions (scalar, double; reference: long double formulas):\n");
-    perceptual_table(quick ? 4096 : 65536);
+    const size_t np = quick ? 4096 : 65536;
+    printf("\nPerceptual conversions (scalar, double; %zu paints; median of %d runs; reference: long double "
+           "formulas):\n", np, g_reps);
+    perceptual_table(np);
     if (g_csv)
         fclose(g_csv);
     return 0;

@@ -1,10 +1,11 @@
 // SPDX-FileCopyrightText: 2026 The pgloss authors
 // SPDX-License-Identifier: Apache-2.0
-/* The BRDF batch's front end on 2^20 pairs: pgloss_eval_pdf_batch, float32, one material, on
- * (n, 3) rows (the layout numpy's channel-last arrays and the Python binding pass) and on SoA
- * columns, each with and without a status array. Prints the min over 15 alternating calls of
- * the thread's CPU time (robust to a shared host's descheduling).
- *     bench_rows */
+/* The BRDF batch's front end on 2^20 pairs (2^16 with --quick): pgloss_eval_pdf_batch, float32,
+ * one material, on (n, 3) rows (the layout numpy's channel-last arrays and the Python binding
+ * pass) and on SoA columns, each with and without a status array. Prints a Markdown table: the
+ * min over 15 alternating calls (5 with --quick) of the thread's CPU time (robust to a shared
+ * host's descheduling), and each layout's time over the columns without statuses.
+ *     bench_rows [--quick] */
 #define _POSIX_C_SOURCE 200809L
 #include <pgloss/batch.h>
 #include <pgloss/brdf.h>
@@ -12,6 +13,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <time.h>
 
 static double cpu_ms(void)
@@ -21,9 +23,11 @@ static double cpu_ms(void)
     return (double)t.tv_sec * 1e3 + (double)t.tv_nsec * 1e-6;
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
-    const size_t n = (size_t)1 << 20;
+    const int quick = argc > 1 && strcmp(argv[1], "--quick") == 0;
+    const size_t n = (size_t)1 << (quick ? 16 : 20);
+    const int reps = quick ? 5 : 15;
     float *wo = malloc(n * 12), *wi = malloc(n * 12), *f = malloc(n * 12), *pdf = malloc(n * 4);
     float *col[6], *fc[3];
     for (int k = 0; k < 6; ++k)
@@ -50,7 +54,7 @@ int main(void)
         return 1;
     const char *names[4] = {"rows, status", "rows, no status", "columns, status", "columns, no status"};
     double best[4] = {1e30, 1e30, 1e30, 1e30};
-    for (int r = 0; r < 15; ++r)
+    for (int r = 0; r < reps; ++r)
         for (int v = 0; v < 4; ++v) {
             pgloss_strided3 a, b;
             pgloss_strided3_out fo;
@@ -73,11 +77,11 @@ int main(void)
             if (t < best[v])
                 best[v] = t;
         }
-    printf("pgloss_eval_pdf_batch, float32, one material, 2^20 pairs, ISA %s; thread CPU time, "
-           "min of 15\n\n| layout | ms |\n|---|---:|\n",
-           pgloss_isa_name(pgloss_isa_best()));
+    printf("pgloss_eval_pdf_batch, float32, one material, %zu pairs, ISA %s; the thread's CPU time, "
+           "min of %d alternating calls\n\n| layout | ms | ns/pair | / columns, no status |\n|---|---:|---:|---:|\n",
+           n, pgloss_isa_name(pgloss_isa_best()), reps);
     for (int v = 0; v < 4; ++v)
-        printf("| %s | %.2f |\n", names[v], best[v]);
+        printf("| %s | %.2f | %.2f | %.2f |\n", names[v], best[v], best[v] * 1e6 / (double)n, best[v] / best[3]);
     for (int k = 0; k < 6; ++k)
         free(col[k]);
     for (int k = 0; k < 3; ++k)

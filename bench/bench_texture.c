@@ -351,8 +351,7 @@ int main(int argc, char **argv)
         }
     data D;
     make_data(&D, g_n);
-    printf("### Textures: per-element materials, float64, batched perceptual (bench_texture)\n\n");
-    printf("n = %zu texels per call, ISA %s, median of %d paired repetitions (ns per texel).\n\n", g_n,
+    printf("n = %zu texels per call (SoA columns), ISA %s, median of %d paired repetitions (ns per texel).\n\n", g_n,
            pgloss_isa_name(pgloss_isa_best()), g_reps);
     double a, b;
     printf("| eval_pdf (f and pdf), WARD | A ns | B ns | B / A |\n|---|---:|---:|---:|\n");

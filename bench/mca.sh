@@ -2,8 +2,8 @@
 # SPDX-FileCopyrightText: 2026 The pgloss authors
 # SPDX-License-Identifier: Apache-2.0
 # Static throughput of the float lobe's FAST tier on AVX-512 (a block of 16) on AMD Zen 4 (llvm-mca 19): the
-# operation count and FP-pipe bound quoted in BENCHMARKS.md. Informational; not part of
-# bench/run.sh or the tests (it installs Debian's llvm-19 for llvm-mca).
+# operation count and FP-pipe bound (docs/kernels.md). Informational: a static model of a CPU,
+# not a measurement, so not part of bench/run.sh or the tests (it installs Debian's llvm-19).
 #   bash bench/mca.sh [CPU]            (default znver4)
 #   bash bench/mca.sh --inline [CPU]   pgloss/inline.h's eval_pdf and sample (bench/inline_mca.c)
 #                                      compiled -O2 -march=x86-64-v3 and -O2: throughput of

@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 # SPDX-FileCopyrightText: 2026 The pgloss authors
 # SPDX-License-Identifier: Apache-2.0
-"""Writes BENCHMARKS.md from the outputs of bench/run.sh (core.md/.csv, peers.md/.csv in
-DIR) and draws the time-against-error plot DIR/pareto.png.
+"""Writes BENCHMARKS.md whole from the outputs of one run of bench/run.sh in DIR (NAME.md: a
+program's tables, NAME.cmd: its command; core.csv; started, load_before, command) and draws the
+time-against-error plot DIR/pareto.png. Every table in the file comes from that run.
 
     python bench/report.py DIR BENCHMARKS.md
 """
@@ -10,15 +11,84 @@ from __future__ import annotations
 
 import csv
 import datetime
+import os
 import platform
+import re
 import subprocess
 import sys
 from pathlib import Path
+from typing import Dict, List, Tuple
+
+ROOT = Path(__file__).resolve().parent.parent
+
+# (file stem, heading, what the table measures and how: one paragraph), in the file's order.
+SECTIONS: List[Tuple[str, str, str]] = [
+    ("core", "The C core: time against error on every path",
+     "Scalar and batched `eval`, `pdf`, `eval_pdf` and `sample` in each accuracy tier (double, FLOAT, "
+     "FAST) on each instruction set this CPU has, one thread. Time: the median over repeated runs of "
+     "ns per call (per element for batches). Error: max and mean relative error against an "
+     "independent long-double transcription on the same inputs (see *Errors* above)."),
+    ("inline_v3", "One shading point, compiled `-O2 -march=x86-64-v3`",
+     "Renderer-style loops over `pgloss/inline.h`, the scalar library call, the batch at n = 1 and "
+     "n = 16, and a plain float transcription of eq. 2 with libm, on the same inputs (the program's "
+     "header describes the loops). thr.: independent calls; lat.: each call's input depends on the "
+     "previous call's output. Time: the thread's CPU time, median of interleaved repetitions. Error: "
+     "max relative error against long double on the regular range."),
+    ("inline_plain", "One shading point, compiled `-O2`",
+     "The same program as the previous table, compiled without `-march`."),
+    ("texture", "Whole textures in C: per-element materials, float64, batched perceptual",
+     "The C batches on SoA columns of n texels. The two sides of each row (A, B) run alternately, "
+     "repetition by repetition; each side's median is reported, and the ratio of the two medians. "
+     "The float64 / float32 ratios here are the C batches on SoA columns at this n; the Python "
+     "tables below measure the same kind of ratio through the binding on (n, 3) rows at their own "
+     "sizes, which adds the rows' copies, so the two need not agree."),
+    ("rows", "The strided batch's front end in C: (n, 3) rows against SoA columns",
+     "`pgloss_eval_pdf_batch` on the layout numpy's channel-last arrays pass and on columns, with and "
+     "without a status array; the thread's CPU time, min of alternating calls; the last column "
+     "divides by the columns without statuses, measured in the same run."),
+    ("peers", "Peers of the core",
+     "numpy, the Python binding, Mitsuba 3 and the GLSL port (Mesa llvmpipe) evaluating eq. 2 on the "
+     "same directions, one thread where the peer allows; the ratio is to numpy float64 measured in "
+     "the same run. Error: max and mean relative error against numpy float64 on the regular range."),
+    ("python_textures", "Whole textures from Python",
+     "Arrays through the Python package against numpy's bare formulas in the same run: time, the "
+     "reference's time and their ratio (pgloss / reference). pgloss runs on one thread, as numpy, "
+     "except the rows that name a thread count. The eval and sample rows are paired: the two sides "
+     "alternate call by call. The target column is the bound a ratio is held to."),
+    ("python_calls", "The Python binding's BRDF calls on (n, 3) rows",
+     "The public API's `pgloss.eval` and `pgloss.sample` on (n, 3) float32 and float64 arrays, one "
+     "thread, timed by the calling thread's CPU time (robust to descheduling on a shared host)."),
+    ("python_threads", "Threads: where an array call gains from a second thread",
+     "Each call on one thread and on all of this process's CPUs, alternately, with the split threshold "
+     "lowered to one element per thread so that short arrays are split too; the best of the "
+     "repetitions of each (at tens of µs, load adds noise only upwards)."),
+]
+
+LONG = """## Long benchmarks: separate commands, separate generated files
+
+Not run by `bash bench/run.sh`; each writes its own file, whose header states its own date,
+machine and command.
+
+- The tracer against Mitsuba 3: [bench/results/tracer.md](bench/results/tracer.md), written by
+  `bash examples/tracer/bench/run.sh --write bench/results/tracer.md [options]` (one section per
+  command line).
+- The gloss bridge in real renderers (Mitsuba 3, Cycles, MaterialX through OSL), read back by the
+  image gloss meter: [docs/bridge-validation.md](docs/bridge-validation.md) and its instruments'
+  checks [docs/bridge-harnesses.md](docs/bridge-harnesses.md), written by
+  `nice .venv-bridge/bin/python examples/bridge/validate.py all` (after `bash scripts/test-bridge.sh`).
+"""
 
 
-def machine() -> str:
-    model = "unknown CPU"
-    flags = ""
+def first_line(cmd: List[str]) -> str:
+    try:
+        out = subprocess.run(cmd, capture_output=True, text=True, check=False).stdout.splitlines()
+    except OSError:
+        return "unknown"
+    return out[0].strip() if out else "unknown"
+
+
+def cpu() -> str:
+    model, flags = "unknown CPU", ""
     try:
         for line in Path("/proc/cpuinfo").read_text().splitlines():
             if line.startswith("model name") and model == "unknown CPU":
@@ -28,35 +98,60 @@ def machine() -> str:
                 flags = ", ".join(x for x in ("avx2", "fma", "avx512f") if x in f)
     except OSError:
         pass
-    cc = subprocess.run(["cc", "--version"], capture_output=True, text=True).stdout.splitlines()
-    import os
-    return (f"{model} ({os.cpu_count()} logical cores; {flags or 'no AVX2'}), "
-            f"{platform.system()} {platform.release()}, {cc[0] if cc else 'cc'}; one core used")
+    return f"{model}, {os.cpu_count()} logical cores ({flags or 'no AVX2'})"
 
 
-def clock_ghz(d: Path) -> float:
-    """The core clock bench_core measured with a dependent-add loop (core.md), or 3.0."""
-    for line in (d / "core.md").read_text().splitlines():
-        if line.startswith("Core clock:"):
-            return float(line.split()[2])
-    return 3.0
+def compilers() -> str:
+    """The C and C++ compilers of build-bench (its CMake cache), or cc and c++."""
+    found: Dict[str, str] = {"C": "cc", "CXX": "c++"}
+    cache = ROOT / "build-bench" / "CMakeCache.txt"
+    if cache.exists():
+        for line in cache.read_text().splitlines():
+            m = re.match(r"CMAKE_(C|CXX)_COMPILER:\w+=(.+)", line)
+            if m:
+                found[m.group(1)] = m.group(2)
+    return f"C: {first_line([found['C'], '--version'])}; C++: {first_line([found['CXX'], '--version'])}"
+
+
+def commit() -> str:
+    """HEAD's short hash, and "dirty" when tracked files (other than BENCHMARKS.md) differ."""
+    head = first_line(["git", "-C", str(ROOT), "rev-parse", "--short", "HEAD"])
+    st = subprocess.run(["git", "-C", str(ROOT), "status", "--porcelain", "--untracked-files=no", "--", ".",
+                         ":!BENCHMARKS.md"], capture_output=True, text=True, check=False).stdout.strip()
+    return f"{head} (dirty: uncommitted changes)" if st else head
+
+
+def python_versions() -> str:
+    from importlib import metadata  # noqa: PLC0415
+
+    def v(p: str) -> str:
+        try:
+            return metadata.version(p)
+        except metadata.PackageNotFoundError:
+            return "not installed"
+    return (f"Python {platform.python_version()}, pgloss {v('pgloss')}, numpy {v('numpy')}, "
+            f"Mitsuba {v('mitsuba')}, moderngl {v('moderngl')}")
+
+
+def rows_of(d: Path) -> List[Dict[str, str]]:
+    with open(d / "core.csv", encoding="utf-8") as fh:
+        return list(csv.DictReader(fh))
 
 
 def pareto(d: Path) -> str:
     import matplotlib.pyplot as plt  # noqa: PLC0415
 
-    rows = list(csv.DictReader(open(d / "core.csv")))
     fig, ax = plt.subplots(figsize=(7, 4.5))
     marks = {"double": "o", "float": "s", "fast": "^"}
-    for r in rows:
+    for r in rows_of(d):
         if r["path"] not in ("scalar", "batch") or r["function"] not in ("eval", "pdf", "eval_pdf", "sample"):
             continue
         if r["material"] != "both" or not r["max_rel_err"]:
             continue
         t, e = float(r["ns"]), max(float(r["max_rel_err"]), 1e-9)
-        label = f"{r['function']} {r['path']} {r['tier']} {r['isa']}"
         ax.scatter(t, e, marker=marks.get(r["tier"], "x"), s=30)
-        ax.annotate(label, (t, e), fontsize=5, xytext=(3, 2), textcoords="offset points")
+        ax.annotate(f"{r['function']} {r['path']} {r['tier']} {r['isa']}", (t, e), fontsize=5, xytext=(3, 2),
+                    textcoords="offset points")
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("ns per call (median)")
@@ -69,121 +164,96 @@ def pareto(d: Path) -> str:
     return str(out)
 
 
-TRACER_SECTION = "## The tracer against Mitsuba 3"
+def targets(d: Path) -> str:
+    """The core's targets against this run's figures: numbers only (measured / bound)."""
+    rows = rows_of(d)
+
+    def get(fn: str, path: str, tier: str, isa: str, material: str, col: str) -> float:
+        for r in rows:
+            if (r["function"], r["path"], r["tier"], r["isa"], r["material"]) == (fn, path, tier, isa, material):
+                return float(r[col] or "nan")
+        raise SystemExit(f"report.py: core.csv has no row {fn} {path} {tier} {isa} {material}")
+
+    floor = get("floor", "-", "-", "-", "specular", "max_rel_err")
+    items = [
+        ("batched float `eval`, FAST tier, the dispatcher's ISA: ns per evaluation", 1.0,
+         get("eval", "batch", "fast", "auto", "both", "ns"), ".2f"),
+        ("... its max relative error on the regular range (material of Experiment 1)", 2e-6,
+         get("eval", "batch", "fast", "auto", "both", "max_rel_err"), ".2e"),
+        ("... its max relative error, specular lobe alone", 2e-6,
+         get("eval", "batch", "fast", "auto", "specular", "max_rel_err"), ".2e"),
+        ("for comparison, the FLOAT tier (IEEE division and square root): ns per evaluation", 1.0,
+         get("eval", "batch", "float", "auto", "both", "ns"), ".2f"),
+        ("... the FLOAT tier's max relative error, specular lobe alone", 2e-6,
+         get("eval", "batch", "float", "auto", "specular", "max_rel_err"), ".2e"),
+        ("scalar `eval` (double inside): ns per call", 10.0, get("eval", "scalar", "double", "-", "both", "ns"), ".2f"),
+    ]
+    out = ["## The core's targets", "",
+           "From the C core's tables below (this run). A target is met where measured / bound ≤ 1. "
+           f"For scale: merely rounding the half vector and the exponent to float, every other step exact, "
+           f"costs up to {floor:.2e} on the specular lobe's inputs (the *floor* row below).", "",
+           "| target | bound | measured | measured / bound |", "|---|---:|---:|---:|"]
+    for what, bound, got, f in items:
+        out.append(f"| {what} | {bound:{'.0e' if bound < 1 else 'g'}} | {got:{f}} | {got / bound:.2f} |")
+    return "\n".join(out) + "\n"
+
+
+def isa_picked(core: str) -> str:
+    m = re.search(r"Best ISA here: (\w+)", core)
+    return m.group(1) if m else "unknown"
 
 
 def main() -> int:
     d, dst = Path(sys.argv[1]), Path(sys.argv[2])
-    core = (d / "core.md").read_text()
-    peers = (d / "peers.md").read_text() if (d / "peers.md").exists() else "(peers not run)\n"
-    texture_c = (d / "texture.md").read_text() if (d / "texture.md").exists() else "(bench_texture not run)\n"
-    textures = (d / "python_textures.md").read_text() if (d / "python_textures.md").exists() else "(bench_textures.py not run)\n"
-    inline = "".join((d / f"inline_{v}.md").read_text() + "\n" for v in ("v3", "plain", "mca")
-                     if (d / f"inline_{v}.md").exists()) or "(bench_inline not run)\n"
+    texts: Dict[str, Tuple[str, str]] = {}
+    for stem, _, _ in SECTIONS:
+        md, cmd = d / f"{stem}.md", d / f"{stem}.cmd"
+        if not md.exists() or not cmd.exists():
+            raise SystemExit(f"report.py: {md} or {cmd} missing: run bash bench/run.sh, which runs every program")
+        texts[stem] = (md.read_text(encoding="utf-8").strip(), cmd.read_text(encoding="utf-8").strip())
+    command = (d / "command").read_text().strip()
+    quick = "--quick" in command.split()
+    started = datetime.datetime.fromtimestamp(int((d / "started").read_text()), datetime.timezone.utc)
+    ended = datetime.datetime.now(datetime.timezone.utc)
+    load0 = (d / "load_before").read_text().split()
+    load1 = [f"{x:.2f}" for x in os.getloadavg()]
     plot = pareto(d)
-    rows = list(csv.DictReader(open(d / "core.csv")))
-    def ns(fn, path, tier, isa, material="both"):
-        for r in rows:
-            if (r["function"], r["path"], r["tier"], r["isa"], r["material"]) == (fn, path, tier, isa, material):
-                return float(r["ns"] or "nan"), float(r["max_rel_err"] or "nan"), float(r["mean_rel_err"] or "nan")
-        return float("nan"), float("nan"), float("nan")
-    def best_of(tier):
-        return min((ns("eval", "batch", tier, i) for i in ("baseline", "avx2", "avx512")),
-                   key=lambda v: v[0] if v[0] == v[0] else 1e9)
-    best, bestfast = best_of("float"), best_of("fast")
-    spec_float = ns("eval", "batch", "float", "auto", "specular")
-    spec_fast = ns("eval", "batch", "fast", "auto", "specular")
-    scalar = ns("eval", "scalar", "double", "-")
-    empty = ns("eval", "scalar-empty", "-", "-")[0]
-    floor = ns("floor", "-", "-", "-", "specular")[1]
-    ghz = clock_ghz(d)
-    yes = lambda ok: "**yes**" if ok else "no"
-    targets = f"""## Against the targets (issue 7)
-
-| target | measured here | met? |
-|---|---|---|
-| batched float `eval` <= 1 ns/eval | FAST tier {bestfast[0]:.2f} ns; FLOAT tier {best[0]:.2f} ns (best ISA) | {yes(bestfast[0] <= 1.0)} (FAST) |
-| ... with max rel. error <= 2e-6 on the regular range | FAST: max {bestfast[1]:.1e}, mean {bestfast[2]:.1e}; FLOAT: max {best[1]:.1e}, mean {best[2]:.1e} (material of Experiment 1). Specular lobe alone: FAST {spec_fast[1]:.1e}, FLOAT {spec_float[1]:.1e}, where the floor of any float evaluation is {floor:.1e} | {yes(bestfast[1] <= 2e-6)} (Experiment 1); {yes(spec_fast[1] <= 2e-6)} for the specular lobe alone (FAST at {spec_fast[1] / floor:.1f}x, FLOAT at {spec_float[1] / floor:.1f}x the float floor) |
-| scalar `eval` <= 10 ns | {scalar[0]:.1f} ns (double arithmetic inside) | {yes(scalar[0] <= 10.0)} |
-
-**Where the error comes from.** Every float kernel here computes eq. 2's exponent x =
-tan²δ/α² from a half vector that is free of cancellation (the lobe of
-`libpgloss/include/pgloss/detail/lobe.h`, docs/kernels.md): for unit directions as every renderer passes them, the only
-roundings left are relative to the small quantities themselves, and the error of f grows as
-about 2.5e-7 per unit of x, as it must for exp(-x) evaluated from a float x: merely rounding h
-and x to float, with every other step exact, costs up to {floor:.1e} on the same inputs (the
-"floor" row below). The
-diffuse term dominates the tails of the material with both lobes, so its max is lower; the
-specular-only rows show the lobe's own error. (Normalising the directions first would cost
-~2√x·6e-8/α: 1.85e-5 at α = 0.07.)
-
-**Operation count and the arithmetic limit.** The FAST tier is the same lobe with its fast
-option over the ISA's helper: reciprocal and rsqrt estimates refined by Newton steps, a
-degree-5 exp2 and fused multiply-adds, no division and no square root (unit directions need
-neither: 1/|v| = 1.5 - |v|²/2 for |v|² within 2^-20 of 1). `bash bench/mca.sh` counts its
-instructions per block of 16 on AVX-512 and their cycles by llvm-mca; the two multiply/FMA
-pipes are the bound there. The FLOAT tier keeps IEEE division and square root (two divisions
-and one square root per evaluation): the divider bounds it.
-
-The scalar functions are the double-precision reference (one path: both directions normalised,
-then the literal formulas); a call is a dependency chain of roots, divisions and an exp, and the loop with an empty
-call of the same signature already takes {empty:.1f} ns (the "(empty call)" row). For float speed on single evaluations, batch them:
-n = 16 already amortises the per-call overhead (see the size table).
-
-"""
-    text = f"""# pgloss benchmarks
-
-Regenerate with `bash bench/run.sh` (about 20 s once its venvs exist, a few minutes the first time; `--quick` for a smoke run). The plot of
-time against error is written to `{plot}` (generated, not committed).
-
-Machine: {machine()}. Generated {datetime.date.today().isoformat()}.
-Timings are medians of repeated runs on a shared machine: compare rows of one run, and use
-the ratios to the numpy baseline measured in the same run.
-
-**Errors** are relative errors against an independent long-double (C) or float64 (peers)
-transcription of eq. 2 and Walter's pdf, on the same inputs: wo uniform over the hemisphere
-(cosθo ≥ 0.05), wi drawn by pgloss_sample (so the specular lobe is exercised where it
-matters), on the *regular range* — specular exponent tan²δ/α² ≤ 10, where 99.995 % of the
-lobe's energy lies (beyond it every float exp loses accuracy in proportion to the exponent).
-Directions of non-unit length are normalised first, and that rounding adds up to ~6e-8/α
-near the mirror direction (the shared vectors' tolerance model, rel + kappa·conditioning,
-covers them).
-
-{targets}## The C core (`build-bench/bench/pgloss_bench_core`)
-
-{core}
-## One shading point (`bench/bench_inline.c`)
-
-Renderer-style loops over pgloss/inline.h, the scalar library call, the batch at n = 1 and 16,
-and a plain float transcription of eq. 2 (see the program's header for the loops). Regenerate
-with `bash bench/run.sh`; the critical path in cycles: `bash bench/mca.sh --inline`.
-
-{inline}
-## Whole textures in C (`bench/bench_texture.c`)
-
-Per-element materials against one material, the float64 batches against float, and the batched
-perceptual functions against bare C loops (pgloss/batch_materials.h, pgloss/perceptual_batch.h).
-
-{texture_c}
-## Peers (`bench/peers.py`)
-
-{peers}
-## Whole textures from Python (`bindings/python/bench/bench_textures.py`)
-
-Arrays of paints through the Python package against numpy's bare formulas in the same run
-(issue 18): the batched conversions with a status per texel, one material per direction pair,
-float64 against float32.
-
-{textures}"""
-    # The tracer's comparison with Mitsuba takes minutes and has its own program
-    # (examples/tracer/bench/run.sh): its section is carried over as it stands.
-    if dst.exists():
-        old = dst.read_text()
-        i = old.find(TRACER_SECTION)
-        if i >= 0:
-            j = old.find("\n## ", i + len(TRACER_SECTION))
-            text = text.rstrip("\n") + "\n\n" + (old[i:] if j < 0 else old[i : j + 1]).rstrip("\n") + "\n"
-    dst.write_text(text)
+    mode = ("quick mode (`--quick`: smaller inputs and fewer repetitions than the full run; a smoke run, "
+            "not figures to quote)") if quick else "full run"
+    head = [
+        "<!-- SPDX-FileCopyrightText: 2026 The pgloss authors -->",
+        "<!-- SPDX-License-Identifier: Apache-2.0 -->",
+        "# pgloss benchmarks", "",
+        f"Written whole by `{command}` (bench/report.py): every table below comes from that one run on one "
+        "machine; do not edit by hand. `python bench/check_stable.py OLD NEW` checks that two runs differ "
+        "only in their numbers. The plot of time against error is written to "
+        f"`{plot}` (not committed).", "",
+        "| run | |", "|---|---|",
+        f"| mode | {mode} |",
+        f"| date | {started:%Y-%m-%d %H:%M}–{ended:%H:%M} UTC ({(ended - started).total_seconds():.0f} s) |",
+        f"| CPU | {cpu()} |",
+        f"| ISA the dispatcher picked | {isa_picked(texts['core'][0])} |",
+        f"| load average (1, 5, 15 min) | {', '.join(load0)} before; {', '.join(load1)} after |",
+        f"| OS | {platform.system()} {platform.release()} |",
+        f"| compilers | {compilers()} |",
+        f"| Python | {python_versions()} |",
+        f"| commit | {commit()} |",
+        f"| command | `{command}` |", "",
+        "Timings drift with the machine's load: compare rows within one table, and read peers through "
+        "the ratios measured side by side in the same run. Each table gives its inputs, its repetitions "
+        "and its statistic above it.", "",
+        "**Errors** are relative errors against an independent long-double (C) or float64 (peers) "
+        "transcription of eq. 2 and Walter's pdf, on the same inputs: wo uniform over the hemisphere "
+        "(cosθo ≥ 0.05), wi drawn by pgloss_sample (so the specular lobe is exercised where it "
+        "matters), on the *regular range*: specular exponent tan²δ/α² ≤ 10, where 99.995 % of the "
+        "lobe's energy lies (beyond it every float exp loses accuracy in proportion to the exponent).", "",
+    ]
+    body = [targets(d)]
+    for stem, heading, how in SECTIONS:
+        text, cmd = texts[stem]
+        body.append(f"## {heading}\n\n{how}\n\nCommand: `{cmd}`\n\n{text}\n")
+    body.append(LONG)
+    dst.write_text("\n".join(head) + "\n" + "\n".join(body), encoding="utf-8")
     print(f"wrote {dst} and {plot}")
     return 0
 

@@ -63,8 +63,9 @@ def main(argv=None) -> int:
             c()
             times[k].append(time.thread_time() - t0)
     load = os.getloadavg()
-    print(f"pgloss {pgloss.__version__}, {m:,} pairs, one thread, CPU time of the calling thread; load average "
-          f"{load[0]:.2f}, {load[1]:.2f}, {load[2]:.2f}\n")
+    print(f"pgloss {pgloss.__version__}, {m:,} pairs, one thread, (n, 3) rows; CPU time of the calling thread, "
+          f"min and median of {args.repeat} calls after a warm-up; load average {load[0]:.2f}, {load[1]:.2f}, "
+          f"{load[2]:.2f}\n")
     print("| call | min ms | median ms |")
     print("|---|---:|---:|")
     for k, t in times.items():

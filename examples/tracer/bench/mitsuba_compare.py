@@ -41,11 +41,11 @@ difference's standard error, to show that both converge to the same image.
 --scale N1,N2,... then renders the scene with each mesh triangle cut into N^2
 (subdivide_mesh.py: the same surface, so the same image) and reports each size's build time,
 memory, samples/s and efficiency ratio. --write FILE puts the report in this command's own
-section of FILE (BENCHMARKS.md), written whole.
+section of FILE (bench/results/tracer.md), written whole.
 
     bash examples/tracer/bench/run.sh [--quick] [--scene stimulus|mug|FILE.scene] [--spp 16,64]
         [--ref-spp 1024] [--reps 3] [--size WxH] [--materials diffuse,stimulus] [--sobol]
-        [--scale 1,10,32] [--write BENCHMARKS.md]
+        [--scale 1,10,32] [--write bench/results/tracer.md]
 """
 from __future__ import annotations
 
@@ -616,6 +616,15 @@ def agreement_table(checks: list) -> list[str]:
     return out
 
 
+def commit() -> str:
+    """HEAD's short hash, with "dirty" when tracked files differ (other than the reports)."""
+    git = ["git", "-C", str(Path(__file__).resolve().parent)]
+    head = subprocess.run([*git, "rev-parse", "--short", "HEAD"], capture_output=True, text=True).stdout.strip()
+    dirty = subprocess.run([*git, "status", "--porcelain", "--untracked-files=no", "--", ":/",
+                            ":!/bench/results", ":!/BENCHMARKS.md"], capture_output=True, text=True).stdout.strip()
+    return f"{head or 'unknown'}{' (dirty)' if dirty else ''}"
+
+
 def machine() -> str:
     model = "unknown CPU"
     for line in Path("/proc/cpuinfo").read_text().splitlines():
@@ -625,22 +634,34 @@ def machine() -> str:
     return f"{model}, {os.cpu_count()} logical cores"
 
 
+TRACER_MD = "bench/results/tracer.md"
+TRACER_HEAD = """<!-- SPDX-FileCopyrightText: 2026 The pgloss authors -->
+<!-- SPDX-License-Identifier: Apache-2.0 -->
+# pgloss-tracer against Mitsuba 3
+
+Written by `bash examples/tracer/bench/run.sh [options] --write bench/results/tracer.md`
+(examples/tracer/bench/mitsuba_compare.py): each section below is the whole output of the command
+in its heading, which states its own date, machine and load; a run of that command replaces its
+section and leaves the others. Do not edit by hand. Not run by `bash bench/run.sh` (minutes to
+hours); BENCHMARKS.md links here.
+"""
+
+
 def write_section(path: Path, marker: str, text: str) -> None:
-    """Replaces the section between this command's markers in path (BENCHMARKS.md), or adds it
-    at the end of the tracer's section there."""
+    """Replaces the section between this command's markers in path (bench/results/tracer.md), or
+    adds it at the end; a new file starts with TRACER_HEAD."""
     begin = f"<!-- {marker}: written whole by that command; edit the script, not this section -->"
     end = f"<!-- end {marker} -->"
     block = f"{begin}\n{text.rstrip()}\n{end}\n"
-    old = path.read_text() if path.exists() else ""
+    old = path.read_text(encoding="utf-8") if path.exists() else TRACER_HEAD
     i, j = old.find(begin), old.find(end)
     if i >= 0 and j > i:
-        new = old[:i] + block + old[j + len(end):].lstrip("\n")
+        rest = old[j + len(end):].lstrip("\n")
+        new = old[:i] + block + ("\n" + rest if rest else "")
     else:
-        h = old.find("## The tracer against Mitsuba 3")
-        k = old.find("\n## ", h + 1) if h >= 0 else -1
-        at = len(old) if k < 0 else k + 1
-        new = old[:at].rstrip("\n") + "\n\n" + block + ("\n" + old[at:] if at < len(old) else "")
-    path.write_text(new)
+        new = old.rstrip("\n") + "\n\n" + block
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(new, encoding="utf-8")
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -663,7 +684,7 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--sobol", action="store_true",
                     help="add a row for pgloss-tracer with its Owen-scrambled Sobol' sampler (--sampler sobol)")
     ap.add_argument("--keep", type=Path, help="folder for the images and generated scenes (default: a temporary one)")
-    ap.add_argument("--write", type=Path, help="write the report as this command's section of FILE (BENCHMARKS.md)")
+    ap.add_argument("--write", type=Path, help=f"write the report as this command's section of FILE ({TRACER_MD})")
     a = ap.parse_args(argv)
     argv = sys.argv[1:] if argv is None else argv
     scene_path = Path(a.scene) if a.scene.endswith(".scene") else SCENES / f"{a.scene}.scene"
@@ -735,7 +756,7 @@ def main(argv: list[str] | None = None) -> int:
     command = " ".join(["bash examples/tracer/bench/run.sh", *cmd_args])
     out = [f"### `{command}`", "",
            f"pgloss-tracer against Mitsuba 3.9.1 `llvm_ad_rgb` on `{scene_path.name}` ({width}×{height}, "
-           f"{a.threads} threads each), run {t_start} UTC on {machine()}, load average "
+           f"{a.threads} threads each), run {t_start} UTC on {machine()}, commit {commit()}, load average "
            f"{load0[0]:.2f} before and {load1[0]:.2f} after (shared machine: compare the ratios, which pair "
            "the two renderers round by round). References: "
            f"{a.ref_spp} spp each. Relative RMSE = ‖x − ref‖/‖ref‖ against the renderer's own reference "

@@ -2,12 +2,13 @@
 # SPDX-FileCopyrightText: 2026 The pgloss authors
 # SPDX-License-Identifier: Apache-2.0
 # pgloss-tracer against Mitsuba 3 (llvm_ad_rgb), side by side on a tracer scene (a benchmark
-# that prints Markdown tables for BENCHMARKS.md; see mitsuba_compare.py).
+# that prints Markdown tables; with --write, its own generated section of
+# bench/results/tracer.md, which BENCHMARKS.md links; see mitsuba_compare.py).
 # Builds the tracer and the pgloss tool in Release for this CPU (build-tracer-bench/,
 # -march=native: Mitsuba's LLVM back end compiles its kernels for the host too), sets up
 # Mitsuba from PyPI in its own venv (.venv-mitsuba, pinned below) and runs the comparison.
 #   bash examples/tracer/bench/run.sh [--quick] [mitsuba_compare.py options…]
-#   bash examples/tracer/bench/run.sh --scene mug --scale 1,10,32 --write BENCHMARKS.md
+#   bash examples/tracer/bench/run.sh --scene mug --scale 1,10,32 --write bench/results/tracer.md
 set -euo pipefail
 cd "$(dirname "$0")/../../.."
 bash scripts/bootstrap.sh apt g++ pkg-config libembree-dev libopenimageio-dev openimageio-tools \
