@@ -4,7 +4,7 @@
 # The Python package's distributions, called by scripts/test-python.sh after the
 # venv .venv-py exists:
 #   1. the wheel (`python -m build --wheel`, the venv's pinned scikit-build-core and pybind11,
-#      CMake's build folder build-py/ kept: only what changed recompiles);
+#      CMake's build folder build-py-TAG/ kept: only what changed recompiles);
 #   2. `auditwheel show` on it: it must qualify for a manylinux tag (printed, and written to
 #      build-py/dist/manylinux-tag);
 #   3. the sdist, and a wheel built from the unpacked sdist alone (what a user's
@@ -64,8 +64,8 @@ for d in web blender glsl osl .ci; do
   [[ ! -e $src/$d ]] || { echo "sdist holds $d/, which the package does not need" >&2; exit 1; }
 done
 # CMake's build folder of the sdist's wheel is inside the unpacked tree, where pyproject puts it
-# (build-py/): the compile commands are then those of the tree's own wheel above, relative to
-# the build folder, and the compiler cache (scripts/ccache.sh) serves them.
+# (build-py-TAG/): the compile commands are then those of the tree's own wheel above, relative
+# to the build folder, and the compiler cache (scripts/ccache.sh) serves them.
 (cd "$src" && "$OLDPWD/$py" -m build --wheel --no-isolation --outdir ../wheel . >../wheel.log 2>&1) ||
   { cat "$dist/sdist/wheel.log"; exit 1; }
 from_sdist=$(ls "$dist"/sdist/wheel/pgloss-*.whl)

@@ -12,7 +12,7 @@
 # Nothing is skipped: with PGLOSS_REQUIRE_ALL=1 (the default here, and what CI sets) a skipped
 # test is a failure. Quick when run again: the venv is kept while the pins are unchanged, the
 # package is reinstalled only when its sources changed, and CMake's build folder
-# (build-py/, see pyproject.toml) is kept, so a reinstall recompiles only what changed.
+# (build-venv-py-TAG/, scripts/venv-pgloss.sh) is kept, so a reinstall recompiles only what changed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/step.sh

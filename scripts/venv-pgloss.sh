@@ -5,8 +5,8 @@
 # (scripts/test-python.sh: .venv-py; scripts/test-bridge.sh: .venv-bridge). The venv is made
 # anew only when the pins change; `pip install .` (the README's install command, with the venv's
 # pinned build tools) runs only when the package's sources changed, and CMake's build folder
-# (build-VENV/ for .VENV, one per venv so that two can build at once; as deep as pyproject's
-# build-py/, so that ccache's relative paths, and so its hits, are the same) is kept, so a
+# (build-VENV-TAG/ for .VENV, one per venv so that two can build at once, one level below the
+# tree as pyproject's build-py-TAG/, so that the compiler cache serves it) is kept, so a
 # reinstall recompiles only what changed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -31,6 +31,6 @@ if [[ "$(cat "$venv/.pgloss-installed" 2>/dev/null)" != "$sources" ]] || ! (cd /
   export CMAKE_BUILD_PARALLEL_LEVEL="${CMAKE_BUILD_PARALLEL_LEVEL:-2}"
   # -v: scikit-build-core's CMake and Ninja output ([n/N]), which step shows as progress
   step "pip install ." "$py" -m pip install -v --disable-pip-version-check --no-build-isolation --force-reinstall --no-deps \
-    --config-settings="build-dir=$root/build-${name#.}/{wheel_tag}" .
+    --config-settings="build-dir=$root/build-${name#.}-{wheel_tag}" .
   echo "$sources" >"$venv/.pgloss-installed"
 fi
