@@ -22,6 +22,11 @@ case $mode in
   *) echo "bootstrap: unknown mode '$mode' (core | test | apt PACKAGE… | fresh-root)" >&2; exit 2 ;;
 esac
 
+# One bootstrap at a time (scripts/test.sh runs two lanes of layers): apt and the venv below
+# are not safe to set up twice at once.
+exec 9>"${TMPDIR:-/tmp}/pgloss-bootstrap.lock"
+flock 9
+
 missing=()
 for p in "${want[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")
@@ -45,6 +50,6 @@ if [[ $mode == test ]]; then
     echo "bootstrap: creating $venv (mpmath 1.3.0)"
     rm -rf "$venv"
     /usr/bin/python3 -m venv "$venv"
-    step "pip install mpmath" "$venv/bin/pip" install --disable-pip-version-check mpmath==1.3.0
+    step "pip install mpmath" pip_pins "$venv/bin/python" mpmath==1.3.0
   fi
 fi

@@ -4,7 +4,7 @@
 # The Python package's distributions, called by scripts/test-python.sh after the
 # venv .venv-py exists:
 #   1. the wheel (`python -m build --wheel`, the venv's pinned scikit-build-core and pybind11,
-#      CMake's build folder build-py/ kept: only what changed recompiles);
+#      CMake's build folder build-py-TAG/ kept: only what changed recompiles);
 #   2. `auditwheel show` on it: it must qualify for a manylinux tag (printed, and written to
 #      build-py/dist/manylinux-tag);
 #   3. the sdist, and a wheel built from the unpacked sdist alone (what a user's
@@ -20,7 +20,7 @@ dist=build-py/dist
 pins=(build==1.6.1 pyproject-hooks==1.3.3 auditwheel==6.8.2 pyelftools==0.33)
 if [[ "$(cat .venv-py/.pgloss-dist-pins 2>/dev/null)" != "${pins[*]}" ]]; then
   echo "== installing ${pins[*]} into .venv-py"
-  step "pip install (pins)" "$py" -m pip install --disable-pip-version-check "${pins[@]}"
+  step "pip install (pins)" pip_pins "$py" "${pins[@]}"
   echo "${pins[*]}" >.venv-py/.pgloss-dist-pins
 fi
 export CMAKE_BUILD_PARALLEL_LEVEL="${CMAKE_BUILD_PARALLEL_LEVEL:-2}"
@@ -63,10 +63,10 @@ done
 for d in web blender glsl osl .ci; do
   [[ ! -e $src/$d ]] || { echo "sdist holds $d/, which the package does not need" >&2; exit 1; }
 done
-# CMake's build folder of the sdist's wheel lives outside the unpacked tree (which is laid anew
-# each time at the same path), so that a re-check recompiles only what changed.
-(cd "$src" && "$OLDPWD/$py" -m build --wheel --no-isolation --outdir ../wheel \
-   -C "build-dir=$OLDPWD/build-py/sdist-build/{wheel_tag}" . >../wheel.log 2>&1) ||
+# CMake's build folder of the sdist's wheel is inside the unpacked tree, where pyproject puts it
+# (build-py-TAG/): the compile commands are then those of the tree's own wheel above, relative
+# to the build folder, and the compiler cache (scripts/ccache.sh) serves them.
+(cd "$src" && "$OLDPWD/$py" -m build --wheel --no-isolation --outdir ../wheel . >../wheel.log 2>&1) ||
   { cat "$dist/sdist/wheel.log"; exit 1; }
 from_sdist=$(ls "$dist"/sdist/wheel/pgloss-*.whl)
 "$py" - "$wheel" "$from_sdist" <<'EOF'

@@ -4,8 +4,9 @@
 # Runs CMD… in a brand-new Debian 12 (bookworm) root file system, as a new user on a fresh
 # machine would: the root is made for this one run (mmdebstrap --variant=apt, plus
 # ca-certificates and git), the project's committed HEAD is cloned into /root/pgloss, and CMD
-# runs there as root with an empty environment (PATH, HOME=/root, LANG=C.UTF-8 and any
-# NAME=VALUE given before CMD). Uncommitted changes are NOT included: commit first.
+# runs there as root with an empty environment (PATH, HOME=/root, LANG=C.UTF-8, the cache's
+# PGLOSS_WHEELHOUSE, and any NAME=VALUE given before CMD). Uncommitted changes are NOT
+# included: commit first.
 #
 #   scripts/fresh-debian.sh bash scripts/test.sh
 #   scripts/fresh-debian.sh PGLOSS_REQUIRE_ALL=1 bash scripts/test-tracer.sh
@@ -14,10 +15,11 @@
 # /usr/local/share/ca-certificates (update-ca-certificates runs inside), /etc/pip.conf (and
 # any certificate file it names), /etc/resolv.conf (mmdebstrap copies it), and a localhost
 # /etc/hosts as Debian's installer writes. Download caches (apt's .deb files, linked in and
-# back out; pip's HTTP cache, bind-mounted) live in PGLOSS_FRESH_CACHE (default
-# /var/cache/pgloss-fresh; "none" for no cache): they save downloads but hold no installed
-# package, venv, built wheel or build tree, so they cannot hide a missing install. (pip only
-# caches responses with caching headers; an egress proxy that strips them leaves it empty.)
+# back out; pip's HTTP cache and the wheelhouse, bind-mounted, the latter named to the scripts
+# by PGLOSS_WHEELHOUSE) live in PGLOSS_FRESH_CACHE (default /var/cache/pgloss-fresh; "none" for
+# no cache): they save downloads but hold no installed package, venv, built wheel or build
+# tree, so they cannot hide a missing install. (pip only caches responses with caching
+# headers; an egress proxy that strips them leaves its HTTP cache empty, hence the wheelhouse.)
 # The mounts (/proc, /sys, a private /dev with its own /dev/pts and /dev/shm, the caches)
 # live in a private mount and PID namespace: nothing stays mounted and nothing keeps running
 # when the run ends or is killed, and the root is deleted afterwards (PGLOSS_FRESH_KEEP=1
@@ -116,8 +118,13 @@ if [[ ${1:-} == --inside ]]; then
       mkdir -p "$cache/pip-$d" "$root/root/.cache/pip/$d"
       mount --bind "$cache/pip-$d" "$root/root/.cache/pip/$d"
     done
+    # The wheelhouse: the files pip downloads for pinned venvs (scripts/step.sh's pip_pins, told
+    # by PGLOSS_WHEELHOUSE below), as the index serves them — bpy alone is ~400 MB.
+    mkdir -p "$cache/wheelhouse" "$root/var/cache/pgloss-wheelhouse"
+    mount --bind "$cache/wheelhouse" "$root/var/cache/pgloss-wheelhouse"
     log "download caches from $cache: apt $(find "$cache/apt" -maxdepth 1 -name '*.deb' | wc -l) .deb files" \
-      "($(du -sh "$cache/apt" | cut -f1)), pip $(du -shc "$cache/pip-http" "$cache/pip-http-v2" | tail -1 | cut -f1)"
+      "($(du -sh "$cache/apt" | cut -f1)), pip $(du -shc "$cache/pip-http" "$cache/pip-http-v2" | tail -1 | cut -f1)," \
+      "wheelhouse $(find "$cache/wheelhouse" -maxdepth 1 -type f ! -name .lock | wc -l) files ($(du -sh "$cache/wheelhouse" | cut -f1))"
   fi
   # dpkg without fsync (a throwaway root): faster installs, the same packages.
   echo force-unsafe-io >"$root/etc/dpkg/dpkg.cfg.d/99pgloss-unsafe-io"
@@ -126,6 +133,7 @@ if [[ ${1:-} == --inside ]]; then
 
   env_args=(PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin HOME=/root
             LANG=C.UTF-8 USER=root LOGNAME=root SHELL=/bin/bash)
+  [[ $cache != none ]] && env_args+=(PGLOSS_WHEELHOUSE=/var/cache/pgloss-wheelhouse)
   while (($#)) && [[ $1 =~ ^[A-Za-z_][A-Za-z0-9_]*= ]]; do env_args+=("$1"); shift; done
   stage "run"
   log "command: $*"

@@ -16,6 +16,7 @@ cd "$(dirname "$0")/.."
 bash scripts/bootstrap.sh apt g++ pkg-config libembree-dev libopenimageio-dev openimageio-tools \
   libopencolorio-dev libglm-dev fonts-dejavu-core
 source scripts/step.sh  # progress every 10 s; a failing step prints its output (a compile error)
+source scripts/ccache.sh  # the core compiled once for build/ and the Blender add-on's wheel
 [[ -f build/build.ninja ]] || echo "== first build of the core, the pgloss tool and pgloss-tracer (a few minutes on 2 cores)"
 step "configure (build/)" cmake --preset release -DPGLOSS_BUILD_TESTS=OFF -DPGLOSS_BUILD_EXAMPLES=ON
 step "build (build/)" cmake --build --preset release

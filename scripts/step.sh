@@ -39,3 +39,20 @@ step() {
   rm -f "$log"
   return "$rc"
 }
+
+# `pip_pins PYTHON ARG…` installs pinned packages (ARG: pins, or -r FILE) into PYTHON's venv.
+# With PGLOSS_WHEELHOUSE set (scripts/fresh-debian.sh mounts its download cache there) they are
+# first downloaded into that folder, where pip skips a file it already holds, then installed from
+# it alone (--no-index): a cache of what the index serves, never a package built or installed
+# here. One download at a time per folder (flock), as pip's writes into it are not atomic.
+pip_pins() {
+  local py=$1
+  shift
+  if [[ -z ${PGLOSS_WHEELHOUSE:-} ]]; then
+    "$py" -m pip install --disable-pip-version-check "$@"
+    return
+  fi
+  mkdir -p "$PGLOSS_WHEELHOUSE"
+  (flock 9 && "$py" -m pip download --disable-pip-version-check -d "$PGLOSS_WHEELHOUSE" "$@") 9>"$PGLOSS_WHEELHOUSE/.lock" &&
+    "$py" -m pip install --disable-pip-version-check --no-index --find-links "$PGLOSS_WHEELHOUSE" "$@"
+}

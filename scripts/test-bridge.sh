@@ -21,8 +21,8 @@ PGLOSS_OSL_SETUP_ONLY=1 bash scripts/test-osl.sh
 
 root=$PWD
 py=.venv-bridge/bin/python
-bash scripts/venv-pgloss.sh .venv-bridge mitsuba==3.9.1 drjit==1.5.0 openimageio==3.2.2.0 MaterialX==1.39.5 \
-  numpy==2.4.6 pytest==9.2.0 scikit-build-core==1.1.2 pybind11==3.1.0
+mapfile -t pins < <(grep -vE '^[[:space:]]*(#|$)' tests/bridge/requirements.txt)
+bash scripts/venv-pgloss.sh .venv-bridge "${pins[@]}"
 
 echo "== pgloss-tracer (build-tracer-test) and the pgloss tool (build-test; its bridge command maps the paints)"
 step "configure (build-tracer-test)" cmake --preset tracer-test

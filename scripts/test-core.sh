@@ -11,11 +11,12 @@ bash scripts/bootstrap.sh test
 jobs=$(nproc)
 
 # The presets (CMakePresets.json) hold the build folders and options: build-test, build-asan.
+source scripts/step.sh
 run_suite() { # preset
-  echo "== configure + build build-$1 (cmake --preset $1)"
-  cmake --preset "$1" >/dev/null
-  cmake --build --preset "$1"
-  echo "== ctest build-$1"
+  local t=$SECONDS
+  step "configure build-$1 (cmake --preset $1)" cmake --preset "$1"
+  step "build build-$1" cmake --build --preset "$1"
+  echo "== build-$1 configured and built in $((SECONDS - t)) s; ctest build-$1"
   ctest --preset "$1" -j "$jobs"
   # Which batched-kernel ISAs ran (an ISA the CPU lacks is a skip with its reason: test_isa.cpp).
   "build-$1/tests/test_isa" --gtest_filter=Isa.NamesAndSupport | grep -E '^(best ISA|ISAs tested)'

@@ -21,7 +21,7 @@ if [[ ! -x $venv/bin/python ]] || ! cmp -s "$req" "$venv/.requirements"; then
   echo "test-materialx: creating $venv from $req"
   rm -rf "$venv"
   /usr/bin/python3 -m venv "$venv"
-  step "pip install -r $req" "$venv/bin/pip" install --disable-pip-version-check -r "$req"
+  step "pip install -r $req" pip_pins "$venv/bin/python" -r "$req"
   cp "$req" "$venv/.requirements"
 fi
 

@@ -23,7 +23,7 @@ if [[ ! -x $venv/bin/python ]] || ! $venv/bin/python -c "$check_pins" 2>/dev/nul
   echo "test-osl: creating $venv (${pins[*]}, about 400 MB download)"
   rm -rf "$venv"
   /usr/bin/python3 -m venv "$venv"
-  step "pip install (pins)" "$venv/bin/pip" install --disable-pip-version-check "${pins[@]}"
+  step "pip install (pins)" pip_pins "$venv/bin/python" "${pins[@]}"
 fi
 $venv/bin/python -c 'import sys; assert sys.version_info[:2] == (3, 11), "bpy 5.0.1 needs CPython 3.11"'
 [[ ${PGLOSS_OSL_SETUP_ONLY:-0} == 1 ]] && exit 0

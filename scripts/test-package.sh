@@ -62,15 +62,17 @@ version_in_one_place() {
   echo "version $version: version.h, glsl/pgloss.glsl, osl/pgloss.h agree; pyproject reads version.h"
 }
 
-# build_install TYPE PRESET: configure with the preset in build-package/TYPE, install afresh.
+# build_install TYPE PRESET: configure with the preset in build-package-TYPE/, install afresh.
 build_install() {
-  local type=$1 preset=$2 prefix=$work/prefix-$1
-  cmake --preset "$preset" -B "$work/$type" -DCMAKE_INSTALL_PREFIX=/nonexistent
-  cmake --build "$work/$type"
+  # The build folder beside the tree's others (build-package-TYPE/, as deep as build-test/), so
+  # that the compiler cache serves the static build from the core layer's (scripts/ccache.sh).
+  local type=$1 preset=$2 prefix=$work/prefix-$1 build=$root/build-package-$1
+  cmake --preset "$preset" -B "$build" -DCMAKE_INSTALL_PREFIX=/nonexistent
+  cmake --build "$build"
   rm -rf "$prefix"
   # --prefix at install time (not the configured one): the packages must not depend on it.
-  cmake --install "$work/$type" --prefix "$prefix"
-  grep -q "CMAKE_PROJECT_VERSION:STATIC=$version\$" "$work/$type/CMakeCache.txt"
+  cmake --install "$build" --prefix "$prefix"
+  grep -q "CMAKE_PROJECT_VERSION:STATIC=$version\$" "$build/CMakeCache.txt"
   (cd "$prefix" && find . -type f -o -type l | sed 's|^\./||' | sort) | tee "$work/installed-$type.txt"
 }
 

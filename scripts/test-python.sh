@@ -5,14 +5,14 @@
 # repository root into the venv .venv-py, then pytest tests/python — the shared vectors,
 # the binding's behaviour, the figures command, a smoke run of the benchmark and pgloss.psychophysics
 # (scipy: its runtime dependency; scikit-learn: the peer of its tests only; colour-science: the peer of the working-colour-space tests only).
-# Also: the C tool `pgloss` built from tools/ (build-py/cli), which tests/python/test_cli.py
+# Also: the C tool `pgloss` built from tools/ (build-cli), which tests/python/test_cli.py
 # runs beside `python -m pgloss` (the wheel's copy of it); and the distributions (scripts/check-python-dist.sh:
 # the wheel, `auditwheel show` (manylinux), the sdist and a wheel built from it), whose metadata
 # tests/python/test_package_metadata.py reads.
 # Nothing is skipped: with PGLOSS_REQUIRE_ALL=1 (the default here, and what CI sets) a skipped
 # test is a failure. Quick when run again: the venv is kept while the pins are unchanged, the
 # package is reinstalled only when its sources changed, and CMake's build folder
-# (build-py/, see pyproject.toml) is kept, so a reinstall recompiles only what changed.
+# (build-venv-py-TAG/, scripts/venv-pgloss.sh) is kept, so a reinstall recompiles only what changed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/step.sh
@@ -29,11 +29,13 @@ bash scripts/venv-pgloss.sh "$venv" "${pins[@]}"
 # bench/run.sh needs the installed package only.
 [[ ${PGLOSS_PY_SETUP_ONLY:-0} == 1 ]] && exit 0
 
-echo "== the C tool (build-py/cli), beside python -m pgloss in tests/python/test_cli.py"
-step "configure (build-py/cli)" cmake -S . -B build-py/cli -DCMAKE_BUILD_TYPE=Release -DPGLOSS_BUILD_PYTHON=OFF \
+# (build-cli/: Ninja, as deep as build-test/, so that the compiler cache serves the core layer's
+# objects; scripts/ccache.sh)
+echo "== the C tool (build-cli), beside python -m pgloss in tests/python/test_cli.py"
+step "configure (build-cli)" cmake -S . -B build-cli -G Ninja -DCMAKE_BUILD_TYPE=Release -DPGLOSS_BUILD_PYTHON=OFF \
   -DPGLOSS_BUILD_TESTS=OFF -DPGLOSS_INSTALL=OFF
-step "build (build-py/cli)" cmake --build build-py/cli --target pgloss_cli -j2
-export PGLOSS_CLI="$PWD/build-py/cli/tools/pgloss"
+step "build (build-cli)" cmake --build build-cli --target pgloss_cli -j2
+export PGLOSS_CLI="$PWD/build-cli/tools/pgloss"
 
 bash scripts/check-python-dist.sh
 export PGLOSS_WHEEL="$(ls "$PWD"/build-py/dist/pgloss-*.whl)"

@@ -9,8 +9,8 @@
 #      in out/web/; the shared vectors again in Chromium, the gloss-bridge targets' read-outs and
 #      glossmeter readings against the binding, paint entry by gloss units and finish, and the
 #      targets' exports read by their own libraries: glTF by three.js's GLTFLoader (npm, tests/web),
-#      MaterialX by MaterialX's validation and Mitsuba 3 by mitsuba.load_string (PyPI, .venv-web-export);
-#   3. (c, d) read by the image gloss meter (pgloss.image_meter, .venv-web-export, a pgloss-tracer
+#      MaterialX by MaterialX's validation and Mitsuba 3 by mitsuba.load_string (PyPI, .venv-bridge);
+#   3. (c, d) read by the image gloss meter (pgloss.image_meter, .venv-bridge, a pgloss-tracer
 #      basis) from the page's own renders of the stimulus scene (tests/web/test_picker_meter.py).
 # Sets up its own packages and the venv .venv-web (pinned; Playwright uses the system Chromium,
 # no browser download). Quick when run again. Nothing is skipped: with PGLOSS_REQUIRE_ALL=1
@@ -51,9 +51,9 @@ if [[ "$(cat tests/web/node_modules/.pgloss-lock 2>/dev/null)" != "$stamp" ]]; t
 fi
 # MaterialX and Mitsuba 3 for the MaterialX and Mitsuba exports' tests, and pgloss with OpenImageIO
 # for the image gloss meter on the page's renders (the versions test-bridge.sh pins).
-xvenv=.venv-web-export
-bash scripts/venv-pgloss.sh "$xvenv" MaterialX==1.39.5 mitsuba==3.9.1 drjit==1.5.0 numpy==2.4.6 openimageio==3.2.2.0 \
-  scikit-build-core==1.1.2 pybind11==3.1.0
+xvenv=.venv-bridge  # the gloss bridge layer's venv, one list of pins (tests/bridge/requirements.txt)
+mapfile -t pins < <(grep -vE '^[[:space:]]*(#|$)' tests/bridge/requirements.txt)
+bash scripts/venv-pgloss.sh "$xvenv" "${pins[@]}"
 # Dr.Jit loads the first libLLVM it finds; clang's LLVM 14 aborts it ("Cannot select: fminimum").
 llvm=$(ls /usr/lib/x86_64-linux-gnu/libLLVM-19.so /usr/lib/llvm-19/lib/libLLVM-19.so 2>/dev/null | head -1 || true)
 [[ -n $llvm ]] || { echo "test-web: libLLVM-19.so not found (libllvm19)"; exit 1; }

@@ -13,6 +13,6 @@ if [[ ! -x $venv/bin/python ]] || [[ "$(cat "$venv/.pgloss-pins" 2>/dev/null)" !
   echo "== creating $venv (${pins[*]})"
   rm -rf "$venv"
   /usr/bin/python3 -m venv "$venv"
-  PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 step "pip install (pins)" "$venv/bin/pip" install --disable-pip-version-check "${pins[@]}"
+  PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 step "pip install (pins)" pip_pins "$venv/bin/python" "${pins[@]}"
   echo "${pins[*]}" >"$venv/.pgloss-pins"
 fi

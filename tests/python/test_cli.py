@@ -1,7 +1,7 @@
 # SPDX-FileCopyrightText: 2026 The pgloss authors
 # SPDX-License-Identifier: Apache-2.0
 """The pgloss tool from both ends: the C tool built from tools/ (scripts/test-python.sh builds it
-into build-py/cli; its path in PGLOSS_CLI) and ``python -m pgloss``, which runs the copy that the
+into build-cli; its path in PGLOSS_CLI) and ``python -m pgloss``, which runs the copy that the
 wheel ships. For a table of argument lists (every command; ok, warnings, each verdict; every
 kind of bad number; wrong counts) both give the same stdout, stderr and exit code; the grammar,
 messages and verdicts are those tools/cli_common.h documents; the installed wheel runs the tool

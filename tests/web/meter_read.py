@@ -1,7 +1,7 @@
 # SPDX-FileCopyrightText: 2026 The pgloss authors
 # SPDX-License-Identifier: Apache-2.0
 """The image gloss meter (pgloss.image_meter) for tests/web/test_picker_meter.py, run with the
-Python that has pgloss and OpenImageIO (.venv-web-export). JSON on stdin, JSON on stdout:
+Python that has pgloss and OpenImageIO (.venv-bridge). JSON on stdin, JSON on stdout:
 
   {"cmd": "view"}  -> the meter's sphere crop: {"width", "height", "fov"} (View.crop, crop_fov_deg)
   {"cmd": "fit", "tracer", "basis_dir", "spp", "alphas", "images": [{"npy", "exr", "rho_d"}]}

@@ -271,7 +271,7 @@ def test_paint_from_gloss_units_and_finish(browser: Browser, base_url: str) -> N
 
 
 THREE = ROOT / "tests/web/node_modules/three"  # npm ci --prefix tests/web (scripts/test-web.sh)
-EXPORT_PY = os.environ.get("PGLOSS_WEB_EXPORT_PY", str(ROOT / ".venv-web-export/bin/python"))
+EXPORT_PY = os.environ.get("PGLOSS_WEB_EXPORT_PY", str(ROOT / ".venv-bridge/bin/python"))
 EXPORTS = [("gltf", "gltf"), ("gltf", "gltf_core"), ("materialx", "openpbr"), ("materialx", "standard_surface"),
            ("blender", "principled"), ("mitsuba", "roughplastic_ggx"), ("mitsuba", "roughplastic_beckmann")]
 
@@ -365,7 +365,7 @@ def test_target_exports_load_in_their_own_libraries(browser: Browser, base_url: 
     assert broken != mtlx
     items = [{"kind": k, "text": x} for _, k, _, x in texts if k in ("materialx", "mitsuba")]
     if not Path(EXPORT_PY).is_file():
-        pytest.fail(f"no Python with MaterialX and mitsuba at {EXPORT_PY} (scripts/test-web.sh makes .venv-web-export)")
+        pytest.fail(f"no Python with MaterialX and mitsuba at {EXPORT_PY} (scripts/test-web.sh makes .venv-bridge)")
     r = subprocess.run([EXPORT_PY, str(ROOT / "tests/web/validate_exports.py")],
                        input=json.dumps([{"kind": "materialx", "text": broken}] + items),
                        capture_output=True, text=True, cwd="/", timeout=300)

@@ -44,7 +44,7 @@ TOL_C, TOL_D = 0.005, 0.01
 
 def _meter(req: Dict[str, Any]) -> Dict[str, Any]:
     if not Path(EXPORT_PY).is_file():
-        pytest.fail(f"no Python with pgloss and OpenImageIO at {EXPORT_PY} (scripts/test-web.sh makes .venv-web-export)")
+        pytest.fail(f"no Python with pgloss and OpenImageIO at {EXPORT_PY} (scripts/test-web.sh makes .venv-bridge)")
     r = subprocess.run([EXPORT_PY, str(ROOT / "tests/web/meter_read.py")], input=json.dumps(req), capture_output=True,
                        text=True, cwd="/")
     assert r.returncode == 0, r.stderr
