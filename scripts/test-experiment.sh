@@ -16,7 +16,7 @@ cd "$(dirname "$0")/.."
 source scripts/step.sh
 export PGLOSS_REQUIRE_ALL="${PGLOSS_REQUIRE_ALL:-1}"
 start=$SECONDS
-bash scripts/bootstrap.sh apt chromium python3 python3-venv g++ pkg-config libembree-dev libopenimageio-dev \
+bash scripts/bootstrap.sh apt chromium python3 python3-venv g++ pkg-config libembree-dev libopenimageio-dev openimageio-tools \
   libopencolorio-dev libglm-dev fonts-dejavu-core libgtest-dev
 
 echo "== Python binding (.venv-py), pgloss-tracer (stimuli)"
